@@ -1,0 +1,16 @@
+#pragma once
+// The synchronization2 image barrier of chapter 03, in one call: wait for
+// src_stage's src_access to finish, change the image's layout, and make the
+// result visible to dst_stage's dst_access.
+
+#include <vulkan/vulkan.h>
+
+namespace vkt {
+
+void image_barrier(VkCommandBuffer cmd, VkImage image, VkImageLayout old_layout,
+                   VkImageLayout new_layout, VkPipelineStageFlags2 src_stage,
+                   VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage,
+                   VkAccessFlags2 dst_access,
+                   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT);
+
+}  // namespace vkt

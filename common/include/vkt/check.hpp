@@ -1,0 +1,44 @@
+#pragma once
+// Errors. Taught in chapter 01: every Vulkan call returns a VkResult, and a
+// failure is only useful when it says which call failed, with what, and where.
+
+#include <vulkan/vulkan.h>
+
+#include <source_location>
+#include <stdexcept>
+#include <string>
+
+namespace vkt {
+
+// The symbolic name of a VkResult, e.g. "VK_ERROR_OUT_OF_DATE_KHR".
+const char* result_name(VkResult result);
+
+// A Vulkan call returned an error. what() reads
+// "vkCreateDevice(...) failed with VK_ERROR_FEATURE_NOT_PRESENT at device.cpp:120".
+class VulkanError : public std::runtime_error {
+public:
+    VulkanError(const char* call, VkResult result, std::source_location where);
+    VkResult result() const { return result_; }
+
+private:
+    VkResult result_;
+};
+
+// Anything else that stops a chapter: a missing file, no suitable device...
+class Error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Throws VulkanError unless result is VK_SUCCESS (or one of the extra codes the
+// caller says it handles, such as VK_SUBOPTIMAL_KHR).
+inline VkResult check(VkResult result, const char* call,
+                      std::source_location where = std::source_location::current()) {
+    if (result < 0) throw VulkanError(call, result, where);
+    return result;
+}
+
+}  // namespace vkt
+
+// VKT_CHECK(vkCreateFoo(...)) records the text of the call for the message.
+#define VKT_CHECK(call) ::vkt::check((call), #call)

@@ -1,0 +1,36 @@
+#pragma once
+// Buffers and images with their own memory. The runner needs them from chapter
+// 03 on (its colour target, the screenshot read-back); chapter 05 explains
+// memory types and chapter 09 images in full.
+
+#include "vkt/owned.hpp"
+
+namespace vkt {
+
+// The first memory type allowed by type_bits that has all of the wanted flags.
+uint32_t find_memory_type(VkPhysicalDevice physical, uint32_t type_bits,
+                          VkMemoryPropertyFlags wanted);
+
+struct Buffer {
+    BufferHandle buffer;
+    DeviceMemory memory;
+    VkDeviceSize size = 0;
+    void* mapped = nullptr;  // set for host-visible buffers, mapped for their lifetime
+};
+
+Buffer create_buffer(VkPhysicalDevice physical, VkDevice device, VkDeviceSize size,
+                     VkBufferUsageFlags usage, VkMemoryPropertyFlags properties);
+
+struct Image {
+    ImageHandle image;
+    DeviceMemory memory;
+    ImageView view;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkExtent2D extent{};
+};
+
+// A 2D image in device-local memory, one mip level, one layer, with a view.
+Image create_image_2d(VkPhysicalDevice physical, VkDevice device, VkFormat format,
+                      VkExtent2D extent, VkImageUsageFlags usage, VkImageAspectFlags aspect);
+
+}  // namespace vkt

@@ -1,0 +1,70 @@
+#pragma once
+// The chapter runner: the command line, the window or headless surface (or
+// offscreen images), the swapchain, frames in flight, screenshots and
+// benchmarks. Chapter 03 builds it; every chapter from 03 on only says what to
+// record into each frame.
+//
+// The contract with a chapter: each frame, record() gets a command buffer and
+// the frame's colour target, an image of our own in an _SRGB format, already in
+// VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL with undefined contents. record()
+// draws into it and leaves it in COLOR_ATTACHMENT_OPTIMAL; the runner then
+// copies it to the swapchain image (or keeps it, offscreen).
+
+#include "vkt/args.hpp"
+#include "vkt/device.hpp"
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace vkt {
+
+// What a chapter's renderer may use; it stays valid for the renderer's life.
+struct Context {
+    const Options& options;
+    std::string chapter;  // "04_triangle": where its shaders are
+    VkInstance instance;
+    VkPhysicalDevice physical;
+    VkDevice device;
+    VkQueue queue;
+    uint32_t queue_family;
+    VkFormat color_format;  // the colour target's format (always an _SRGB format)
+    VkExtent2D extent;      // the colour target's size at start (see Renderer::resize)
+    uint32_t frames_in_flight;
+};
+
+struct Frame {
+    VkCommandBuffer cmd;
+    VkImage target;
+    VkImageView target_view;
+    VkExtent2D extent;
+    uint64_t index;  // 0, 1, 2, ...
+    double time;     // seconds: index / 60 headless (deterministic), wall clock in a window
+    uint32_t slot;   // which frame in flight, 0 .. frames_in_flight - 1
+};
+
+class Renderer {
+public:
+    virtual ~Renderer() = default;
+    virtual void record(const Frame& frame) = 0;
+    // The colour target changed size (the window was resized); the GPU is idle.
+    virtual void resize(VkExtent2D) {}
+};
+
+struct ChapterSpec {
+    std::string name;   // "04_triangle"
+    std::string title;  // shown in the window's title bar
+    DeviceRequirements requirements;
+};
+
+using RendererFactory = std::function<std::unique_ptr<Renderer>(const Context&)>;
+
+// Runs a drawing chapter; returns the process exit status:
+// 0 done, 1 an error (or any validation message), 2 bad command line.
+int run_chapter(int argc, char** argv, const ChapterSpec& spec, const RendererFactory& factory);
+
+// For the text chapters 01 and 02: parses the command line, runs body, and
+// turns exceptions into one clear line and exit status 1 (2 for usage).
+int run_text_chapter(int argc, char** argv, const std::function<int(const Options&)>& body);
+
+}  // namespace vkt

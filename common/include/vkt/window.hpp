@@ -1,0 +1,39 @@
+#pragma once
+// A resizable GLFW window with a Vulkan surface (chapter 03's window path).
+
+#include "vkt/owned.hpp"
+
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace vkt {
+
+class Window {
+public:
+    // Throws Error when GLFW cannot open a window (no display, no Vulkan support).
+    Window(const std::string& title, VkExtent2D size);
+    ~Window();
+    Window(const Window&) = delete;
+    Window& operator=(const Window&) = delete;
+
+    // The instance extensions GLFW needs to make a surface on this platform.
+    static std::vector<const char*> required_instance_extensions();
+    VkSurfaceKHR create_surface(VkInstance instance) const;
+
+    bool should_close() const;
+    void poll() const;
+    VkExtent2D framebuffer_size() const;
+    // Sleeps while the window is minimised (its framebuffer is 0x0).
+    void wait_while_minimised() const;
+    // True once after the framebuffer changed size.
+    bool take_resized();
+    double seconds() const;
+
+private:
+    GLFWwindow* window_ = nullptr;
+    bool resized_ = false;
+};
+
+}  // namespace vkt

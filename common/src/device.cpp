@@ -1,0 +1,169 @@
+#include "vkt/device.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cstring>
+
+namespace vkt {
+
+int device_type_score(VkPhysicalDeviceType type) {
+    switch (type) {
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+        case VK_PHYSICAL_DEVICE_TYPE_CPU: return 1;
+        default: return 0;
+    }
+}
+
+static std::string why_unsuitable(VkPhysicalDevice device, VkSurfaceKHR surface,
+                                  const DeviceRequirements& requirements, uint32_t& family_out) {
+    VkPhysicalDeviceProperties properties;
+    vkGetPhysicalDeviceProperties(device, &properties);
+    if (properties.apiVersion < VK_API_VERSION_1_3) return "supports only Vulkan " +
+        std::to_string(VK_API_VERSION_MAJOR(properties.apiVersion)) + "." +
+        std::to_string(VK_API_VERSION_MINOR(properties.apiVersion)) + ", not 1.3";
+
+    VkPhysicalDeviceVulkan13Features features13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &features13};
+    vkGetPhysicalDeviceFeatures2(device, &features);
+    if (!features13.dynamicRendering) return "lacks the dynamicRendering feature";
+    if (!features13.synchronization2) return "lacks the synchronization2 feature";
+
+    uint32_t count = 0;
+    VKT_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr));
+    std::vector<VkExtensionProperties> available(count);
+    VKT_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, available.data()));
+    for (const char* wanted : requirements.extensions) {
+        bool found = std::any_of(available.begin(), available.end(), [&](const auto& e) {
+            return std::strcmp(e.extensionName, wanted) == 0;
+        });
+        if (!found) return std::string("lacks the extension ") + wanted;
+    }
+
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+    for (uint32_t i = 0; i < count; ++i) {
+        const VkQueueFlags wanted = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+        if ((families[i].queueFlags & wanted) != wanted) continue;
+        VkBool32 present = VK_TRUE;
+        if (surface) VKT_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(device, i, surface, &present));
+        if (!present) continue;
+        family_out = i;
+        return {};
+    }
+    return surface ? "has no queue family that can draw, compute and present to this surface"
+                   : "has no queue family that can draw and compute";
+}
+
+std::vector<DeviceCandidate> survey_devices(VkInstance instance, VkSurfaceKHR surface,
+                                            const DeviceRequirements& requirements) {
+    uint32_t count = 0;
+    VKT_CHECK(vkEnumeratePhysicalDevices(instance, &count, nullptr));
+    std::vector<VkPhysicalDevice> devices(count);
+    VKT_CHECK(vkEnumeratePhysicalDevices(instance, &count, devices.data()));
+
+    std::vector<DeviceCandidate> candidates;
+    for (uint32_t i = 0; i < count; ++i) {
+        VkPhysicalDeviceProperties properties;
+        vkGetPhysicalDeviceProperties(devices[i], &properties);
+        DeviceCandidate candidate{
+            .handle = devices[i],
+            .index = i,
+            .name = properties.deviceName,
+            .type = properties.deviceType,
+            .api_version = properties.apiVersion,
+        };
+        candidate.unsuitable = why_unsuitable(devices[i], surface, requirements, candidate.queue_family);
+        candidates.push_back(std::move(candidate));
+    }
+    return candidates;
+}
+
+static std::string lower(std::string_view text) {
+    std::string out(text);
+    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+const DeviceCandidate& choose_device(std::span<const DeviceCandidate> candidates,
+                                     std::string_view selector) {
+    if (candidates.empty())
+        throw Error("no Vulkan device found: is a Vulkan driver installed? "
+                    "(on Debian: apt install mesa-vulkan-drivers)");
+
+    if (!selector.empty()) {
+        const DeviceCandidate* named = nullptr;
+        uint32_t index = 0;
+        auto [end, error] = std::from_chars(selector.data(), selector.data() + selector.size(), index);
+        if (error == std::errc{} && end == selector.data() + selector.size()) {
+            if (index >= candidates.size())
+                throw Error("--device " + std::string(selector) + ": there are only " +
+                            std::to_string(candidates.size()) + " device(s), numbered from 0");
+            named = &candidates[index];
+        } else {
+            for (const auto& candidate : candidates)
+                if (lower(candidate.name).find(lower(selector)) != std::string::npos) {
+                    named = &candidate;
+                    break;
+                }
+            if (!named) throw Error("--device " + std::string(selector) + ": no device has that in its name");
+        }
+        if (!named->unsuitable.empty())
+            throw Error("device " + std::to_string(named->index) + " (" + named->name + ") " + named->unsuitable);
+        return *named;
+    }
+
+    const DeviceCandidate* best = nullptr;
+    for (const auto& candidate : candidates)
+        if (candidate.unsuitable.empty() &&
+            (!best || device_type_score(candidate.type) > device_type_score(best->type)))
+            best = &candidate;
+    if (!best) {
+        std::string reasons;
+        for (const auto& candidate : candidates)
+            reasons += "; " + candidate.name + " " + candidate.unsuitable;
+        throw Error("no Vulkan device can run this chapter" + reasons);
+    }
+    return *best;
+}
+
+Device::Device(const DeviceCandidate& chosen, const DeviceRequirements& requirements)
+    : physical_(chosen.handle), queue_family_(chosen.queue_family) {
+    vkGetPhysicalDeviceProperties(physical_, &properties_);
+
+    float priority = 1.0f;
+    VkDeviceQueueCreateInfo queue_info{
+        .sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO,
+        .queueFamilyIndex = queue_family_,
+        .queueCount = 1,
+        .pQueuePriorities = &priority,
+    };
+    VkPhysicalDeviceVulkan13Features features13{
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+        .synchronization2 = VK_TRUE,
+        .dynamicRendering = VK_TRUE,
+    };
+    VkPhysicalDeviceFeatures2 features{
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
+        .pNext = &features13,
+    };
+    VkDeviceCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
+        .pNext = &features,
+        .queueCreateInfoCount = 1,
+        .pQueueCreateInfos = &queue_info,
+        .enabledExtensionCount = static_cast<uint32_t>(requirements.extensions.size()),
+        .ppEnabledExtensionNames = requirements.extensions.data(),
+    };
+    VKT_CHECK(vkCreateDevice(physical_, &info, nullptr, &device_));
+    vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
+}
+
+Device::~Device() {
+    if (device_) vkDestroyDevice(device_, nullptr);
+}
+
+}  // namespace vkt

@@ -1,0 +1,95 @@
+#include "vkt/memory.hpp"
+
+#include "vkt/check.hpp"
+
+namespace vkt {
+
+uint32_t find_memory_type(VkPhysicalDevice physical, uint32_t type_bits,
+                          VkMemoryPropertyFlags wanted) {
+    VkPhysicalDeviceMemoryProperties memory;
+    vkGetPhysicalDeviceMemoryProperties(physical, &memory);
+    for (uint32_t i = 0; i < memory.memoryTypeCount; ++i)
+        if ((type_bits & (1u << i)) && (memory.memoryTypes[i].propertyFlags & wanted) == wanted)
+            return i;
+    throw Error("no memory type has the properties 0x" + std::to_string(wanted));
+}
+
+Buffer create_buffer(VkPhysicalDevice physical, VkDevice device, VkDeviceSize size,
+                     VkBufferUsageFlags usage, VkMemoryPropertyFlags properties) {
+    Buffer out;
+    out.size = size;
+    VkBufferCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO,
+        .size = size,
+        .usage = usage,
+        .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
+    };
+    VkBuffer buffer;
+    VKT_CHECK(vkCreateBuffer(device, &info, nullptr, &buffer));
+    out.buffer = BufferHandle(device, buffer);
+
+    VkMemoryRequirements requirements;
+    vkGetBufferMemoryRequirements(device, buffer, &requirements);
+    VkMemoryAllocateInfo allocate{
+        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
+        .allocationSize = requirements.size,
+        .memoryTypeIndex = find_memory_type(physical, requirements.memoryTypeBits, properties),
+    };
+    VkDeviceMemory memory;
+    VKT_CHECK(vkAllocateMemory(device, &allocate, nullptr, &memory));
+    out.memory = DeviceMemory(device, memory);
+    VKT_CHECK(vkBindBufferMemory(device, buffer, memory, 0));
+    if (properties & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
+        VKT_CHECK(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &out.mapped));
+    return out;
+}
+
+Image create_image_2d(VkPhysicalDevice physical, VkDevice device, VkFormat format,
+                      VkExtent2D extent, VkImageUsageFlags usage, VkImageAspectFlags aspect) {
+    Image out;
+    out.format = format;
+    out.extent = extent;
+    VkImageCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
+        .imageType = VK_IMAGE_TYPE_2D,
+        .format = format,
+        .extent = {extent.width, extent.height, 1},
+        .mipLevels = 1,
+        .arrayLayers = 1,
+        .samples = VK_SAMPLE_COUNT_1_BIT,
+        .tiling = VK_IMAGE_TILING_OPTIMAL,
+        .usage = usage,
+        .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
+        .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED,
+    };
+    VkImage image;
+    VKT_CHECK(vkCreateImage(device, &info, nullptr, &image));
+    out.image = ImageHandle(device, image);
+
+    VkMemoryRequirements requirements;
+    vkGetImageMemoryRequirements(device, image, &requirements);
+    VkMemoryAllocateInfo allocate{
+        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
+        .allocationSize = requirements.size,
+        .memoryTypeIndex = find_memory_type(physical, requirements.memoryTypeBits,
+                                            VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
+    };
+    VkDeviceMemory memory;
+    VKT_CHECK(vkAllocateMemory(device, &allocate, nullptr, &memory));
+    out.memory = DeviceMemory(device, memory);
+    VKT_CHECK(vkBindImageMemory(device, image, memory, 0));
+
+    VkImageViewCreateInfo view_info{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+        .image = image,
+        .viewType = VK_IMAGE_VIEW_TYPE_2D,
+        .format = format,
+        .subresourceRange = {aspect, 0, 1, 0, 1},
+    };
+    VkImageView view;
+    VKT_CHECK(vkCreateImageView(device, &view_info, nullptr, &view));
+    out.view = ImageView(device, view);
+    return out;
+}
+
+}  // namespace vkt

@@ -1,0 +1,542 @@
+#include "vkt/runner.hpp"
+
+#include "vkt/barrier.hpp"
+#include "vkt/image_io.hpp"
+#include "vkt/instance.hpp"
+#include "vkt/memory.hpp"
+#include "vkt/stats.hpp"
+#include "vkt/swapchain.hpp"
+#include "vkt/window.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace vkt {
+namespace {
+
+constexpr uint32_t frames_in_flight = 2;
+constexpr double headless_time_step = 1.0 / 60.0;
+constexpr uint32_t default_headless_frames = 60;
+
+enum class Presentation { window, headless_surface, offscreen };
+
+const char* presentation_name(Presentation p) {
+    switch (p) {
+        case Presentation::window: return "window";
+        case Presentation::headless_surface: return "headless surface";
+        default: return "offscreen";
+    }
+}
+
+bool has_display() { return std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY"); }
+
+std::string program_name(char** argv) {
+    return std::filesystem::path(argv[0] ? argv[0] : "chapter").filename().string();
+}
+
+std::string json_string(std::string_view text) {
+    std::string out = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out + "\"";
+}
+
+std::string json_summary(const std::vector<double>& values) {
+    if (values.empty()) return "null";
+    Summary s = summarize(values);
+    char text[160];
+    std::snprintf(text, sizeof text, R"({"min": %.4f, "median": %.4f, "p95": %.4f, "max": %.4f})",
+                  s.min, s.median, s.p95, s.max);
+    return text;
+}
+
+// Per frame in flight: what the CPU records into while the GPU works on the other.
+struct FrameSlot {
+    CommandPool pool;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    Fence done;               // signalled when the GPU finished this slot's last frame
+    Semaphore image_acquired;  // signalled when the acquired swapchain image may be written
+    bool timing_pending = false;
+};
+
+class ChapterRun {
+public:
+    ChapterRun(const Options& options, const ChapterSpec& spec);
+    ~ChapterRun() {
+        if (device_) vkDeviceWaitIdle(*device_);  // nothing may be destroyed while in use
+    }
+    void run(const RendererFactory& factory);
+    bool validation() const { return instance_->validation(); }
+    std::shared_ptr<const ValidationCounts> counts() const { return instance_->counts(); }
+
+private:
+    void create_target(VkExtent2D extent);
+    bool draw_frame(uint64_t index, double time);
+    void record(FrameSlot& slot, uint32_t image_index, const Frame& frame);
+    void recreate_swapchain();
+    void collect_gpu_time(FrameSlot& slot, uint32_t slot_index);
+    void save_screenshot(const std::string& path);
+
+    const Options& options_;
+    const ChapterSpec& spec_;
+    Presentation presentation_ = Presentation::offscreen;
+    std::unique_ptr<Window> window_;
+    std::unique_ptr<Instance> instance_;
+    SurfaceHandle surface_;
+    std::unique_ptr<Device> device_;
+    std::unique_ptr<Swapchain> swapchain_;
+    Image target_;
+    std::vector<FrameSlot> slots_;
+    QueryPool timestamps_;
+    uint64_t timestamp_mask_ = 0;
+    std::unique_ptr<Renderer> renderer_;
+    std::vector<double> cpu_ms_, gpu_ms_;
+};
+
+ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
+    : options_(options), spec_(spec) {
+    // Where the picture goes: a window if we can, else a headless surface, else
+    // our own images only.
+    if (options.offscreen) {
+        presentation_ = Presentation::offscreen;
+    } else if (!options.headless && has_display()) {
+        try {
+            window_ = std::make_unique<Window>(spec.title, VkExtent2D{options.width, options.height});
+            presentation_ = Presentation::window;
+        } catch (const Error& e) {
+            std::fprintf(stderr, "%s: %s; running headless\n", spec.name.c_str(), e.what());
+        }
+    }
+    if (!window_ && !options.offscreen)
+        presentation_ = instance_extension_available(VK_EXT_HEADLESS_SURFACE_EXTENSION_NAME)
+                            ? Presentation::headless_surface
+                            : Presentation::offscreen;
+
+    std::vector<const char*> extensions;
+    if (presentation_ == Presentation::window) extensions = Window::required_instance_extensions();
+    if (presentation_ == Presentation::headless_surface)
+        extensions = {VK_KHR_SURFACE_EXTENSION_NAME, VK_EXT_HEADLESS_SURFACE_EXTENSION_NAME};
+
+    const bool layer = instance_layer_available(validation_layer_name);
+    if (options.validation.value_or(false) && !layer)
+        throw Error("--validation: the Khronos validation layer is not installed "
+                    "(on Debian: apt install vulkan-validationlayers)");
+    instance_ = std::make_unique<Instance>(InstanceConfig{
+        .application_name = spec.name,
+        .validation = options.validation.value_or(layer),
+        .extensions = extensions,
+    });
+
+    if (presentation_ == Presentation::window) {
+        surface_ = SurfaceHandle(*instance_, window_->create_surface(*instance_));
+    } else if (presentation_ == Presentation::headless_surface) {
+        auto create = reinterpret_cast<PFN_vkCreateHeadlessSurfaceEXT>(
+            vkGetInstanceProcAddr(*instance_, "vkCreateHeadlessSurfaceEXT"));
+        VkHeadlessSurfaceCreateInfoEXT info{.sType = VK_STRUCTURE_TYPE_HEADLESS_SURFACE_CREATE_INFO_EXT};
+        VkSurfaceKHR surface;
+        VKT_CHECK(create(*instance_, &info, nullptr, &surface));
+        surface_ = SurfaceHandle(*instance_, surface);
+    }
+
+    DeviceRequirements requirements = spec.requirements;
+    if (surface_) requirements.extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    auto candidates = survey_devices(*instance_, surface_, requirements);
+    device_ = std::make_unique<Device>(choose_device(candidates, options.device), requirements);
+
+    VkExtent2D extent{options.width, options.height};
+    if (surface_) {
+        if (window_) extent = window_->framebuffer_size();
+        swapchain_ = std::make_unique<Swapchain>(device_->physical(), *device_, surface_, extent,
+                                                 options.benchmark, VK_NULL_HANDLE);
+        extent = swapchain_->extent();
+    }
+    create_target(extent);
+
+    for (uint32_t i = 0; i < frames_in_flight; ++i) {
+        FrameSlot slot{
+            .pool = create_command_pool(*device_, device_->queue_family(), VK_COMMAND_POOL_CREATE_TRANSIENT_BIT),
+            .done = create_fence(*device_, true),  // signalled: the first wait returns at once
+            .image_acquired = create_semaphore(*device_),
+        };
+        VkCommandBufferAllocateInfo allocate{
+            .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
+            .commandPool = slot.pool,
+            .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
+            .commandBufferCount = 1,
+        };
+        VKT_CHECK(vkAllocateCommandBuffers(*device_, &allocate, &slot.cmd));
+        slots_.push_back(std::move(slot));
+    }
+
+    if (options.benchmark) {
+        // GPU time from two timestamps per frame, where the queue can write them.
+        uint32_t count = 0;
+        vkGetPhysicalDeviceQueueFamilyProperties(device_->physical(), &count, nullptr);
+        std::vector<VkQueueFamilyProperties> families(count);
+        vkGetPhysicalDeviceQueueFamilyProperties(device_->physical(), &count, families.data());
+        const uint32_t bits = families[device_->queue_family()].timestampValidBits;
+        if (bits > 0 && device_->properties().limits.timestampPeriod > 0) {
+            timestamp_mask_ = bits >= 64 ? ~0ull : (1ull << bits) - 1;
+            VkQueryPoolCreateInfo info{
+                .sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO,
+                .queryType = VK_QUERY_TYPE_TIMESTAMP,
+                .queryCount = 2 * frames_in_flight,
+            };
+            VkQueryPool pool;
+            VKT_CHECK(vkCreateQueryPool(*device_, &info, nullptr, &pool));
+            timestamps_ = QueryPool(*device_, pool);
+        }
+    }
+
+    std::string where = presentation_name(presentation_);
+    if (swapchain_)
+        where += std::string(" ") + format_name(swapchain_->format()) + " " +
+                 present_mode_name(swapchain_->present_mode()) + " x" +
+                 std::to_string(swapchain_->images().size());
+    std::fprintf(stderr, "%s: %s, %s, %ux%u %s, validation %s\n", spec.name.c_str(),
+                 device_->properties().deviceName, where.c_str(), target_.extent.width,
+                 target_.extent.height, format_name(target_.format),
+                 instance_->validation() ? "on (with synchronisation)" : "off");
+}
+
+void ChapterRun::create_target(VkExtent2D extent) {
+    VkFormat format = swapchain_ ? render_format_for(swapchain_->format()) : VK_FORMAT_R8G8B8A8_SRGB;
+    target_ = create_image_2d(device_->physical(), *device_, format, extent,
+                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                  VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                              VK_IMAGE_ASPECT_COLOR_BIT);
+}
+
+void ChapterRun::run(const RendererFactory& factory) {
+    renderer_ = factory(Context{
+        .options = options_,
+        .chapter = spec_.name,
+        .instance = *instance_,
+        .physical = device_->physical(),
+        .device = *device_,
+        .queue = device_->queue(),
+        .queue_family = device_->queue_family(),
+        .color_format = target_.format,
+        .extent = target_.extent,
+        .frames_in_flight = frames_in_flight,
+    });
+
+    const uint64_t frame_count =
+        options_.frames.value_or(window_ ? UINT64_MAX : default_headless_frames);
+    const double start = window_ ? window_->seconds() : 0;
+    for (uint64_t index = 0; index < frame_count;) {
+        if (window_) {
+            window_->poll();
+            if (window_->should_close()) break;
+        }
+        // Headless time is a function of the frame index only, so the same
+        // frame always gives the same picture.
+        const double time = window_ ? window_->seconds() - start : double(index) * headless_time_step;
+        const auto begin = std::chrono::steady_clock::now();
+        if (!draw_frame(index, time)) continue;  // the swapchain was recreated: try again
+        cpu_ms_.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count());
+        ++index;
+    }
+
+    VKT_CHECK(vkDeviceWaitIdle(*device_));
+    for (uint32_t i = 0; i < frames_in_flight; ++i) collect_gpu_time(slots_[i], i);
+    if (!options_.screenshot.empty() && !cpu_ms_.empty()) save_screenshot(options_.screenshot);
+
+    if (options_.benchmark) {
+        std::printf(
+            "{\"chapter\": %s, \"device\": %s, \"presentation\": %s, \"width\": %u, \"height\": %u, "
+            "\"frames\": %zu, \"cpu_frame_ms\": %s, \"gpu_frame_ms\": %s}\n",
+            json_string(spec_.name).c_str(), json_string(device_->properties().deviceName).c_str(),
+            json_string(presentation_name(presentation_)).c_str(), target_.extent.width,
+            target_.extent.height, cpu_ms_.size(), json_summary(cpu_ms_).c_str(),
+            json_summary(gpu_ms_).c_str());
+    }
+    renderer_.reset();
+}
+
+// [draw-frame]
+bool ChapterRun::draw_frame(uint64_t index, double time) {
+    const uint32_t slot_index = uint32_t(index % frames_in_flight);
+    FrameSlot& slot = slots_[slot_index];
+
+    // Wait until the GPU is done with this slot's previous frame (two frames ago),
+    // so its command buffer and semaphore can be used again.
+    VkFence done = slot.done;
+    VKT_CHECK(vkWaitForFences(*device_, 1, &done, VK_TRUE, UINT64_MAX));
+    collect_gpu_time(slot, slot_index);
+
+    uint32_t image_index = 0;
+    if (swapchain_) {
+        VkResult result = vkAcquireNextImageKHR(*device_, swapchain_->get(), UINT64_MAX,
+                                                slot.image_acquired, VK_NULL_HANDLE, &image_index);
+        if (result == VK_ERROR_OUT_OF_DATE_KHR) {  // the window changed: nothing was acquired
+            recreate_swapchain();
+            return false;
+        }
+        check(result, "vkAcquireNextImageKHR");  // VK_SUBOPTIMAL_KHR still acquired an image
+    }
+    VKT_CHECK(vkResetFences(*device_, 1, &done));  // only now that we will submit
+
+    VKT_CHECK(vkResetCommandPool(*device_, slot.pool, 0));
+    record(slot, image_index,
+           Frame{slot.cmd, target_.image, target_.view, target_.extent, index, time, slot_index});
+
+    // Submit: wait for the acquired image before copying into it, signal the
+    // image's own ready_to_present semaphore, and the slot's fence for the CPU.
+    VkSemaphoreSubmitInfo wait{
+        .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
+        .semaphore = slot.image_acquired,
+        .stageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
+    };
+    VkSemaphoreSubmitInfo signal{
+        .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
+        .semaphore = swapchain_ ? swapchain_->ready_to_present(image_index) : VK_NULL_HANDLE,
+        .stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+    };
+    VkCommandBufferSubmitInfo command{
+        .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO,
+        .commandBuffer = slot.cmd,
+    };
+    VkSubmitInfo2 submit{
+        .sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
+        .waitSemaphoreInfoCount = swapchain_ ? 1u : 0u,
+        .pWaitSemaphoreInfos = &wait,
+        .commandBufferInfoCount = 1,
+        .pCommandBufferInfos = &command,
+        .signalSemaphoreInfoCount = swapchain_ ? 1u : 0u,
+        .pSignalSemaphoreInfos = &signal,
+    };
+    VKT_CHECK(vkQueueSubmit2(device_->queue(), 1, &submit, slot.done));
+    slot.timing_pending = bool(timestamps_);
+
+    if (swapchain_) {
+        VkSwapchainKHR swapchain = swapchain_->get();
+        VkSemaphore ready = swapchain_->ready_to_present(image_index);
+        VkPresentInfoKHR present{
+            .sType = VK_STRUCTURE_TYPE_PRESENT_INFO_KHR,
+            .waitSemaphoreCount = 1,
+            .pWaitSemaphores = &ready,
+            .swapchainCount = 1,
+            .pSwapchains = &swapchain,
+            .pImageIndices = &image_index,
+        };
+        VkResult result = vkQueuePresentKHR(device_->queue(), &present);
+        const bool resized = window_ && window_->take_resized();
+        if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR || resized)
+            recreate_swapchain();  // this frame was still drawn
+        else
+            check(result, "vkQueuePresentKHR");
+    }
+    return true;
+}
+// [/draw-frame]
+
+void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& frame) {
+    VkCommandBuffer cmd = slot.cmd;
+    VkCommandBufferBeginInfo begin{
+        .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+        .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT,
+    };
+    VKT_CHECK(vkBeginCommandBuffer(cmd, &begin));
+    const uint32_t query = 2 * frame.slot;
+    if (timestamps_) {
+        vkCmdResetQueryPool(cmd, timestamps_, query, 2);
+        vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps_, query);
+    }
+
+    // [frame-barriers]
+    // Our colour target: the previous frame's copy must have read it before we
+    // overwrite it; its old contents do not matter (UNDEFINED).
+    image_barrier(cmd, target_.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                  VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
+                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
+
+    renderer_->record(frame);  // the chapter draws
+
+    // The chapter's writes must be finished and visible before we copy.
+    image_barrier(cmd, target_.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                  VK_ACCESS_2_TRANSFER_READ_BIT);
+
+    if (swapchain_) {
+        // The swapchain image: after the acquire semaphore (waited for at the
+        // COPY stage), make it a copy destination, copy, then hand it to present.
+        VkImage image = swapchain_->images()[image_index];
+        image_barrier(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
+                      VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        VkImageCopy region{
+            .srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+            .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+            .extent = {frame.extent.width, frame.extent.height, 1},
+        };
+        vkCmdCopyImage(cmd, target_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        image_barrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                      VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE);
+    }
+    // [/frame-barriers]
+
+    if (timestamps_)
+        vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps_, query + 1);
+    VKT_CHECK(vkEndCommandBuffer(cmd));
+}
+
+// [recreate]
+void ChapterRun::recreate_swapchain() {
+    if (window_) {
+        window_->wait_while_minimised();  // a 0x0 swapchain cannot exist
+        if (window_->should_close()) return;
+    }
+    // Simple and safe: let the GPU finish everything that uses the old images.
+    VKT_CHECK(vkDeviceWaitIdle(*device_));
+    VkExtent2D wanted = window_ ? window_->framebuffer_size() : target_.extent;
+    auto next = std::make_unique<Swapchain>(device_->physical(), *device_, surface_, wanted,
+                                            options_.benchmark, swapchain_->get());
+    swapchain_ = std::move(next);  // the old swapchain is destroyed after the new one exists
+    VkExtent2D extent = swapchain_->extent();
+    if (extent.width != target_.extent.width || extent.height != target_.extent.height) {
+        create_target(extent);
+        renderer_->resize(extent);
+    }
+}
+// [/recreate]
+
+void ChapterRun::collect_gpu_time(FrameSlot& slot, uint32_t slot_index) {
+    if (!slot.timing_pending) return;
+    slot.timing_pending = false;
+    uint64_t ticks[2];
+    VKT_CHECK(vkGetQueryPoolResults(*device_, timestamps_, 2 * slot_index, 2, sizeof ticks, ticks,
+                                    sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    const uint64_t elapsed = (ticks[1] - ticks[0]) & timestamp_mask_;
+    gpu_ms_.push_back(double(elapsed) * device_->properties().limits.timestampPeriod / 1e6);
+}
+
+void ChapterRun::save_screenshot(const std::string& path) {
+    const VkExtent2D extent = target_.extent;
+    Buffer readback = create_buffer(device_->physical(), *device_, VkDeviceSize{extent.width} * extent.height * 4,
+                                    VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                    VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    CommandPool pool = create_command_pool(*device_, device_->queue_family(), VK_COMMAND_POOL_CREATE_TRANSIENT_BIT);
+    VkCommandBufferAllocateInfo allocate{
+        .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
+        .commandPool = pool,
+        .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
+        .commandBufferCount = 1,
+    };
+    VkCommandBuffer cmd;
+    VKT_CHECK(vkAllocateCommandBuffers(*device_, &allocate, &cmd));
+    VkCommandBufferBeginInfo begin{
+        .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+        .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT,
+    };
+    VKT_CHECK(vkBeginCommandBuffer(cmd, &begin));
+    // The last frame left the target in TRANSFER_SRC_OPTIMAL, ready to be read.
+    VkBufferImageCopy region{
+        .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+        .imageExtent = {extent.width, extent.height, 1},
+    };
+    vkCmdCopyImageToBuffer(cmd, target_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &region);
+    VkBufferMemoryBarrier2 to_host{
+        .sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2,
+        .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
+        .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
+        .dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT,
+        .dstAccessMask = VK_ACCESS_2_HOST_READ_BIT,
+        .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+        .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+        .buffer = readback.buffer,
+        .size = VK_WHOLE_SIZE,
+    };
+    VkDependencyInfo dependency{
+        .sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
+        .bufferMemoryBarrierCount = 1,
+        .pBufferMemoryBarriers = &to_host,
+    };
+    vkCmdPipelineBarrier2(cmd, &dependency);
+    VKT_CHECK(vkEndCommandBuffer(cmd));
+
+    Fence fence = create_fence(*device_, false);
+    VkCommandBufferSubmitInfo command{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, .commandBuffer = cmd};
+    VkSubmitInfo2 submit{
+        .sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
+        .commandBufferInfoCount = 1,
+        .pCommandBufferInfos = &command,
+    };
+    VKT_CHECK(vkQueueSubmit2(device_->queue(), 1, &submit, fence));
+    VkFence wait_for = fence;
+    VKT_CHECK(vkWaitForFences(*device_, 1, &wait_for, VK_TRUE, UINT64_MAX));
+
+    RgbaImage image{extent.width, extent.height, std::vector<uint8_t>(readback.size)};
+    const auto* bytes = static_cast<const uint8_t*>(readback.mapped);
+    const bool bgra = target_.format == VK_FORMAT_B8G8R8A8_SRGB;
+    for (size_t i = 0; i < image.pixels.size(); i += 4) {
+        image.pixels[i + 0] = bytes[i + (bgra ? 2 : 0)];
+        image.pixels[i + 1] = bytes[i + 1];
+        image.pixels[i + 2] = bytes[i + (bgra ? 0 : 2)];
+        image.pixels[i + 3] = 255;  // the screen shows no alpha, so neither does the file
+    }
+    write_png(path, image);
+    std::fprintf(stderr, "%s: wrote %s (%ux%u)\n", spec_.name.c_str(), path.c_str(), extent.width,
+                 extent.height);
+}
+
+// Turns the body's outcome into an exit status: usage errors 2, failures 1.
+int guarded(int argc, char** argv, Flags flags, const std::function<int(const Options&)>& body) {
+    const std::string program = program_name(argv);
+    Options options;
+    try {
+        options = parse_args(std::span<const char* const>(argv + 1, size_t(std::max(argc - 1, 0))), flags);
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "%s: %s\n%s\n", program.c_str(), e.what(), usage_line(program, flags).c_str());
+        return 2;
+    }
+    if (options.help) {
+        std::fputs(help_text(program, flags).c_str(), stdout);
+        return 0;
+    }
+    try {
+        return body(options);
+    } catch (const std::exception& e) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());
+        return 1;
+    }
+}
+
+int report_validation(const std::string& program, const ValidationCounts* counts) {
+    if (!counts) return 0;
+    const uint32_t warnings = counts->warnings, errors = counts->errors;
+    std::fprintf(stderr, "%s: validation: %u warnings, %u errors\n", program.c_str(), warnings, errors);
+    return warnings + errors > 0 ? 1 : 0;
+}
+
+}  // namespace
+
+int run_chapter(int argc, char** argv, const ChapterSpec& spec, const RendererFactory& factory) {
+    return guarded(argc, argv, Flags::frame_loop, [&](const Options& options) {
+        std::shared_ptr<const ValidationCounts> counts;
+        {
+            ChapterRun run(options, spec);
+            if (run.validation()) counts = run.counts();
+            run.run(factory);
+        }  // everything destroyed: the layer has said all it will say
+        return report_validation(spec.name, counts.get());
+    });
+}
+
+int run_text_chapter(int argc, char** argv, const std::function<int(const Options&)>& body) {
+    return guarded(argc, argv, Flags::text_only, body);
+}
+
+}  // namespace vkt
