@@ -132,7 +132,11 @@ int run(const vkt::Options& options) {
         .ppEnabledExtensionNames = enabled_extensions.data(),
     };
     VkInstance instance;
-    VKT_CHECK(vkCreateInstance(&info, nullptr, &instance));
+    VkResult result = vkCreateInstance(&info, nullptr, &instance);
+    // The one failure worth its own words: the loader found no driver at all.
+    if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
+        throw vkt::Error("no Vulkan driver found; install one, e.g. apt install mesa-vulkan-drivers");
+    VKT_CHECK(result);
     // [/create-instance]
 
     // [create-messenger]

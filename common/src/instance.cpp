@@ -100,7 +100,11 @@ Instance::Instance(const InstanceConfig& config) {
         .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
         .ppEnabledExtensionNames = extensions.data(),
     };
-    VKT_CHECK(vkCreateInstance(&info, nullptr, &instance_));
+    VkResult created = vkCreateInstance(&info, nullptr, &instance_);
+    if (created == VK_ERROR_INCOMPATIBLE_DRIVER)  // the loader found no driver at all
+        throw Error("no Vulkan driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER); "
+                    "install one, e.g. apt install mesa-vulkan-drivers");
+    check(created, "vkCreateInstance");
 
     if (config.validation) {
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(

@@ -19,7 +19,7 @@ namespace vkt {
 namespace {
 
 constexpr uint32_t frames_in_flight = 2;
-constexpr double headless_time_step = 1.0 / 60.0;
+constexpr double fixed_time_step = 1.0 / 60.0;
 constexpr uint32_t default_headless_frames = 60;
 
 enum class Presentation { window, headless_surface, offscreen };
@@ -229,15 +229,17 @@ void ChapterRun::run(const RendererFactory& factory) {
 
     const uint64_t frame_count =
         options_.frames.value_or(window_ ? UINT64_MAX : default_headless_frames);
+    // Headless, or with --frames in a window, time is a function of the frame
+    // index only, so the same frame always gives the same picture. An open-ended
+    // window run follows the wall clock instead.
+    const bool fixed_step = !window_ || options_.frames.has_value();
     const double start = window_ ? window_->seconds() : 0;
     for (uint64_t index = 0; index < frame_count;) {
         if (window_) {
             window_->poll();
             if (window_->should_close()) break;
         }
-        // Headless time is a function of the frame index only, so the same
-        // frame always gives the same picture.
-        const double time = window_ ? window_->seconds() - start : double(index) * headless_time_step;
+        const double time = fixed_step ? double(index) * fixed_time_step : window_->seconds() - start;
         const auto begin = std::chrono::steady_clock::now();
         if (!draw_frame(index, time)) continue;  // the swapchain was recreated: try again
         cpu_ms_.push_back(

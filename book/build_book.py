@@ -1,0 +1,695 @@
+#!/usr/bin/python3
+"""Builds the tutorial's book: book/*.md -> browsable HTML.
+
+    /usr/bin/python3 book/build_book.py --out DIR     build the HTML into DIR
+    /usr/bin/python3 book/build_book.py --check       validate only, write nothing
+
+Code in the book is never pasted. A line
+
+    {{#include ../chapters/04_triangle/main.cpp:pipeline}}
+
+inside a fenced code block is replaced by the lines between the source's marker
+comments `// [pipeline]` and `// [/pipeline]` (marker lines excluded, common
+indentation removed), and a caption after the block names the file and lines.
+
+The build fails (exit status 1, one line per problem) when an included file or
+marker does not exist, when a marker in chapters/, common/ or shaders/ is
+opened and not closed (or closed and not opened, or opened twice), when such a
+marker is quoted by no page (a stale marker), and on a broken link between
+pages, a link to a file that does not exist, or an unknown code language.
+
+Needs only the standard library, python3-markdown and python3-pygments
+(Debian 12: markdown 3.4, pygments 2.14).
+"""
+
+from __future__ import annotations
+
+import argparse
+import html
+import os
+import re
+import shutil
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path, PurePosixPath
+
+try:
+    import markdown
+    import pygments
+    from pygments.formatters import HtmlFormatter
+    from pygments.lexers import get_lexer_by_name, get_lexer_for_filename
+    from pygments.lexers.special import TextLexer
+    from pygments.util import ClassNotFound
+except ImportError as missing:  # pragma: no cover - depends on the machine
+    sys.stderr.write(
+        f"build_book.py: error: {missing.name} is missing: install python3-markdown "
+        "python3-pygments and run this with /usr/bin/python3\n")
+    sys.exit(1)
+
+# The folders whose markers must all be quoted by some page, and the files
+# there that can hold markers.
+MARKER_DIRS = ("chapters", "common", "shaders")
+MARKER_SUFFIXES = (".cpp", ".hpp", ".vert", ".frag", ".comp", ".glsl")
+
+MARKER_RE = re.compile(r"^//\s\[(/?)([A-Za-z0-9_-]+)\]$")
+# A comment line that is only a bracketed word but not exactly "// [name]":
+# almost certainly a mistyped marker, which would otherwise be ignored.
+NEAR_MARKER_RE = re.compile(r"^//\s*\[\s*/?\s*[A-Za-z0-9_-]+\s*\]\s*$")
+INCLUDE_RE = re.compile(r"^\s*\{\{#include\s+([^\s:{}]+):([A-Za-z0-9_-]+)\s*\}\}\s*$")
+DIRECTIVE_RE = re.compile(r"\{\{#")
+FENCE_RE = re.compile(r"^(\s*)(`{3,}|~{3,})\s*([^`\s]*)")
+PAGE_RE = re.compile(r"^(index|\d\d_[a-z0-9_]+|appendix_[a-z0-9_]+)\.md$")
+IMAGE_SUFFIXES = (".png", ".jpg", ".jpeg", ".gif", ".svg", ".webp")
+
+
+class BookError(Exception):
+    """A problem in the book or its sources; reported as one line."""
+
+
+# --------------------------------------------------------------------------
+# Markers in the sources
+# --------------------------------------------------------------------------
+
+@dataclass
+class Region:
+    start: int  # line number of the opening marker (1-based)
+    end: int    # line number of the closing marker
+
+
+@dataclass
+class SourceFile:
+    rel: str                  # path relative to the root, with forward slashes
+    lines: list[str]
+    regions: dict[str, Region]
+    problems: list[str]
+
+
+class Sources:
+    """Reads each source once and remembers its markers."""
+
+    def __init__(self, root: Path):
+        self.root = root
+        self.cache: dict[str, SourceFile] = {}
+
+    def get(self, rel: str) -> SourceFile:
+        if rel not in self.cache:
+            self.cache[rel] = scan_markers(self.root, rel)
+        return self.cache[rel]
+
+
+def scan_markers(root: Path, rel: str) -> SourceFile:
+    text = (root / rel).read_text(encoding="utf-8")
+    lines = text.splitlines()
+    regions: dict[str, Region] = {}
+    open_at: dict[str, int] = {}
+    problems: list[str] = []
+    for number, line in enumerate(lines, start=1):
+        stripped = line.strip()
+        match = MARKER_RE.match(stripped)
+        if not match:
+            if NEAR_MARKER_RE.match(stripped):
+                problems.append(f"{rel}:{number}: '{stripped}' looks like a marker but is not "
+                                "written exactly '// [name]' or '// [/name]'")
+            continue
+        closing, name = match.group(1) == "/", match.group(2)
+        if not closing:
+            if name in open_at:
+                problems.append(f"{rel}:{number}: marker [{name}] opened again inside itself "
+                                f"(first opened on line {open_at[name]})")
+            elif name in regions:
+                problems.append(f"{rel}:{number}: marker [{name}] used twice in one file "
+                                f"(first on lines {regions[name].start}-{regions[name].end})")
+            else:
+                open_at[name] = number
+        else:
+            if name not in open_at:
+                problems.append(f"{rel}:{number}: marker [/{name}] closes a marker that is not open")
+            else:
+                regions[name] = Region(open_at.pop(name), number)
+    for name, number in open_at.items():
+        problems.append(f"{rel}:{number}: marker [{name}] is opened but never closed")
+    return SourceFile(rel, lines, regions, problems)
+
+
+def all_marker_files(root: Path) -> list[str]:
+    found = []
+    for folder in MARKER_DIRS:
+        base = root / folder
+        if not base.is_dir():
+            continue
+        for dirpath, dirnames, filenames in os.walk(base):
+            dirnames.sort()
+            for name in sorted(filenames):
+                if name.endswith(MARKER_SUFFIXES):
+                    found.append(Path(dirpath, name).relative_to(root).as_posix())
+    return found
+
+
+def excerpt(source: SourceFile, name: str) -> tuple[list[str], int, int]:
+    """The lines inside a marker, dedented, with their first and last line numbers."""
+    region = source.regions[name]
+    numbered = [(n, source.lines[n - 1]) for n in range(region.start + 1, region.end)]
+    # Other markers nested inside are bookkeeping, not code.
+    numbered = [(n, l) for n, l in numbered if not MARKER_RE.match(l.strip())]
+    while numbered and not numbered[0][1].strip():
+        numbered.pop(0)
+    while numbered and not numbered[-1][1].strip():
+        numbered.pop()
+    if not numbered:
+        raise BookError(f"{source.rel}: marker [{name}] encloses no code")
+    texts = [l.expandtabs(4).rstrip() for _, l in numbered]
+    indent = min(len(t) - len(t.lstrip()) for t in texts if t.strip())
+    texts = [t[indent:] if t.strip() else "" for t in texts]
+    return texts, numbered[0][0], numbered[-1][0]
+
+
+# --------------------------------------------------------------------------
+# Pages
+# --------------------------------------------------------------------------
+
+@dataclass
+class Include:
+    rel: str     # the source, relative to the root
+    marker: str
+    first: int
+    last: int
+
+
+@dataclass
+class Page:
+    md_name: str      # "03_swapchain.md"
+    title: str = ""
+    markdown: str = ""  # after includes are expanded
+    body: str = ""      # HTML of the page's content
+    toc: list = field(default_factory=list)
+    ids: set = field(default_factory=set)
+    includes: list[Include] = field(default_factory=list)
+
+    @property
+    def html_name(self) -> str:
+        return self.md_name[:-3] + ".html"
+
+
+def page_order(names: list[str]) -> list[str]:
+    def key(name: str):
+        if name == "index.md":
+            return (0, 0, name)
+        if name.startswith("appendix_"):
+            return (2, 0, name)
+        return (1, int(name[:2]), name)
+    return sorted(names, key=key)
+
+
+def inside_root(root: Path, target: Path) -> bool:
+    try:
+        target.resolve().relative_to(root.resolve())
+        return True
+    except ValueError:
+        return False
+
+
+def source_page_name(rel: str) -> str:
+    return "src/" + rel + ".html"
+
+
+def expand_page(root: Path, book: Path, page: Page, sources: Sources, problems: list[str]) -> None:
+    """Expands {{#include}} lines, finds the title, checks code languages."""
+    where = f"book/{page.md_name}"
+    lines = (book / page.md_name).read_text(encoding="utf-8").splitlines()
+    out: list[str] = []
+    fence: str | None = None       # the fence that opened the current code block
+    fence_indent = ""
+    captions: list[Include] = []
+    for number, line in enumerate(lines, start=1):
+        fence_match = FENCE_RE.match(line)
+        if fence is None:
+            if fence_match:
+                fence, fence_indent, language = fence_match.group(2), fence_match.group(1), fence_match.group(3)
+                if language:
+                    try:
+                        get_lexer_by_name(language)
+                    except ClassNotFound:
+                        problems.append(f"{where}:{number}: unknown code language '{language}'")
+                captions = []
+            elif DIRECTIVE_RE.search(line):
+                problems.append(f"{where}:{number}: {{{{#include}}}} belongs on its own line inside "
+                                "a fenced code block")
+            elif not page.title and line.startswith("# "):
+                page.title = line[2:].strip()
+            out.append(line)
+            continue
+
+        # Inside a code block.
+        if fence_match and fence_match.group(2).startswith(fence) and not fence_match.group(3):
+            fence = None
+            out.append(line)
+            if captions:
+                out.append("")
+                links = []
+                for inc in captions:
+                    lines_text = (f"line {inc.first}" if inc.first == inc.last
+                                  else f"lines {inc.first}-{inc.last}")
+                    href = f"{source_page_name(inc.rel)}#L-{inc.first}"
+                    links.append(f'<a href="{html.escape(href)}">{html.escape(inc.rel)}, {lines_text}</a>')
+                out.append(f'<p class="source">{" &middot; ".join(links)}</p>')
+                out.append("")
+            continue
+        if not DIRECTIVE_RE.search(line):
+            out.append(line)
+            continue
+        match = INCLUDE_RE.match(line)
+        if not match:
+            problems.append(f"{where}:{number}: malformed directive (want "
+                            "'{{{{#include ../path/file:marker}}}}'): {line.strip()}")
+            continue
+        path_text, marker = match.groups()
+        target = (book / path_text)
+        if not inside_root(root, target):
+            problems.append(f"{where}:{number}: {path_text} lies outside the repository")
+            continue
+        if not target.is_file():
+            problems.append(f"{where}:{number}: included file {path_text} does not exist")
+            continue
+        rel = target.resolve().relative_to(root.resolve()).as_posix()
+        source = sources.get(rel)
+        if marker not in source.regions:
+            problems.append(f"{where}:{number}: marker [{marker}] not found in {rel}")
+            continue
+        try:
+            texts, first, last = excerpt(source, marker)
+        except BookError as error:
+            problems.append(f"{where}:{number}: {error}")
+            continue
+        out.extend(fence_indent + t if t else "" for t in texts)
+        inc = Include(rel, marker, first, last)
+        page.includes.append(inc)
+        captions.append(inc)
+    if fence is not None:
+        problems.append(f"{where}: a fenced code block is never closed")
+    if not page.title:
+        problems.append(f"{where}: the page has no '# ' title heading")
+    page.markdown = "\n".join(out) + "\n"
+
+
+ATTR_RE = re.compile(r'\b(href|src)="([^"]*)"')
+
+
+@dataclass
+class Assets:
+    images: dict[str, Path] = field(default_factory=dict)        # output name -> source file
+    missing_images: dict[str, str] = field(default_factory=dict)  # output name -> rel path
+    source_pages: set[str] = field(default_factory=set)           # rel paths to render
+
+
+def rewrite_links(root: Path, book: Path, page: Page, page_names: set[str], assets: Assets,
+                  problems: list[str], warnings: list[str], anchors: list) -> None:
+    where = f"book/{page.md_name}"
+
+    def fix(match: re.Match) -> str:
+        attr, value = match.group(1), html.unescape(match.group(2))
+        if re.match(r"^[a-zA-Z][a-zA-Z0-9+.-]*:", value) or value.startswith("//"):
+            return match.group(0)  # http:, https:, mailto: ... left alone
+        if value.startswith("#"):
+            anchors.append((page.md_name, page.md_name, value[1:]))
+            return match.group(0)
+        if value.startswith("src/") and value.split("#")[0].endswith(".html"):
+            return match.group(0)  # an include caption, made above
+        path_text, _, anchor = value.partition("#")
+        if path_text in page_names:
+            if anchor:
+                anchors.append((page.md_name, path_text, anchor))
+            new = path_text[:-3] + ".html" + (f"#{anchor}" if anchor else "")
+            return f'{attr}="{html.escape(new)}"'
+        if path_text.endswith(".md") and "/" not in path_text:
+            problems.append(f"{where}: link to {path_text}, which is not a page of the book")
+            return match.group(0)
+        target = book / path_text
+        if not inside_root(root, target):
+            problems.append(f"{where}: link to {path_text}, outside the repository")
+            return match.group(0)
+        rel = target.resolve().relative_to(root.resolve()).as_posix() if target.exists() else \
+            os.path.normpath((Path("book") / path_text).as_posix())
+        if path_text.lower().endswith(IMAGE_SUFFIXES):
+            name = PurePosixPath(rel).name
+            if target.is_file():
+                known = assets.images.get(name)
+                if known is not None and known.resolve() != target.resolve():
+                    problems.append(f"{where}: two different images are called {name}")
+                assets.images[name] = target
+            else:
+                # A reviewed picture may land after its page; say so and show a placeholder.
+                warnings.append(f"{where}: image {path_text} does not exist (yet)")
+                assets.missing_images[name] = rel
+            return f'{attr}="images/{html.escape(name)}"'
+        if target.is_dir():
+            problems.append(f"{where}: link to the folder {path_text}; link a file instead")
+            return match.group(0)
+        if not target.is_file():
+            problems.append(f"{where}: link to {path_text}, which does not exist")
+            return match.group(0)
+        assets.source_pages.add(rel)
+        new = source_page_name(rel) + (f"#{anchor}" if anchor else "")
+        return f'{attr}="{html.escape(new)}"'
+
+    page.body = ATTR_RE.sub(fix, page.body)
+
+
+def convert(page: Page) -> None:
+    md = markdown.Markdown(
+        extensions=["fenced_code", "codehilite", "tables", "toc"],
+        extension_configs={
+            "codehilite": {"css_class": "highlight", "guess_lang": False},
+            "toc": {"permalink": False},
+        },
+        output_format="html")
+    page.body = md.convert(page.markdown)
+    page.toc = md.toc_tokens
+    page.ids = set(re.findall(r'\bid="([^"]+)"', page.body))
+
+
+def missing_image_placeholders(body: str, missing: dict[str, str]) -> str:
+    """Replaces <img> of pictures that do not exist yet by a visible note."""
+    def fix(match: re.Match) -> str:
+        tag = match.group(0)
+        src = re.search(r'src="images/([^"]+)"', tag)
+        if not src or html.unescape(src.group(1)) not in missing:
+            return tag
+        rel = missing[html.unescape(src.group(1))]
+        alt = re.search(r'alt="([^"]*)"', tag)
+        return (f'<span class="missing-image">Picture not available yet: {html.escape(rel)}'
+                f'{" (" + alt.group(1) + ")" if alt and alt.group(1) else ""}</span>')
+    return re.sub(r"<img\b[^>]*>", fix, body)
+
+
+# --------------------------------------------------------------------------
+# HTML
+# --------------------------------------------------------------------------
+
+STYLE_CSS = """\
+/* The book's stylesheet, written by book/build_book.py. */
+:root {
+  --text: #1f2328; --muted: #59636e; --background: #ffffff; --panel: #f6f8fa;
+  --border: #d1d9e0; --link: #0b5cad; --accent: #8a3ffc; --current: #e8e0fb;
+  --code-background: #f6f8fa; --target: #fff3b0;
+}
+@media (prefers-color-scheme: dark) {
+  :root {
+    --text: #e6e6e6; --muted: #a0a7b0; --background: #16181c; --panel: #1d2026;
+    --border: #343a43; --link: #7ab7ff; --accent: #b794ff; --current: #2f2a45;
+    --code-background: #1d2026; --target: #4a4215;
+  }
+}
+* { box-sizing: border-box; }
+html { -webkit-text-size-adjust: 100%; text-size-adjust: 100%; }
+body {
+  margin: 0; color: var(--text); background: var(--background);
+  font-family: system-ui, -apple-system, "Segoe UI", Roboto, "Noto Sans", "DejaVu Sans", sans-serif;
+  font-size: 17px; line-height: 1.6;
+}
+a { color: var(--link); }
+a:hover { text-decoration-thickness: 2px; }
+code, pre, kbd {
+  font-family: ui-monospace, "SFMono-Regular", "DejaVu Sans Mono", Menlo, Consolas, monospace;
+  font-size: 0.88em;
+}
+.layout { display: flex; min-height: 100vh; }
+.sidebar {
+  flex: 0 0 17rem; background: var(--panel); border-right: 1px solid var(--border);
+  padding: 1.25rem 1rem 2rem; font-size: 0.92rem; line-height: 1.45;
+}
+.sidebar .book-title { font-weight: 700; font-size: 1.05rem; margin: 0 0 1rem; }
+.sidebar .book-title a { color: var(--text); text-decoration: none; }
+.sidebar ol { list-style: none; margin: 0; padding: 0; }
+.sidebar li { margin: 0.1rem 0; }
+.sidebar a { display: block; padding: 0.25rem 0.5rem; border-radius: 6px; text-decoration: none; }
+.sidebar a:hover { background: var(--current); }
+.sidebar a.current { background: var(--current); color: var(--text); font-weight: 600;
+  border-left: 3px solid var(--accent); }
+.sidebar ol.sections { margin: 0.15rem 0 0.4rem 0.75rem; font-size: 0.86rem; }
+.sidebar ol.sections a { padding: 0.12rem 0.5rem; color: var(--muted); }
+.content { flex: 1 1 auto; min-width: 0; padding: 1.25rem 2rem 3rem; }
+article, .pager { max-width: 50rem; margin: 0 auto; }
+.pager { display: flex; justify-content: space-between; gap: 1rem; font-size: 0.95rem; }
+.pager a { text-decoration: none; }
+.pager .next { margin-left: auto; text-align: right; }
+.pager.bottom { border-top: 1px solid var(--border); margin-top: 2.5rem; padding-top: 1rem; }
+h1, h2, h3, h4 { line-height: 1.25; margin: 1.8em 0 0.6em; }
+h1 { font-size: 2rem; margin-top: 0.8em; }
+h2 { font-size: 1.45rem; border-bottom: 1px solid var(--border); padding-bottom: 0.25em; }
+h3 { font-size: 1.15rem; }
+p, ul, ol, table, pre, blockquote { margin: 0 0 1em; }
+img { max-width: 100%; height: auto; }
+article img { display: block; margin: 0.5rem auto 1.25rem; border: 1px solid var(--border);
+  image-rendering: auto; }
+.missing-image { display: block; padding: 2rem 1rem; margin: 0.5rem 0 1.25rem; text-align: center;
+  border: 2px dashed var(--border); color: var(--muted); }
+:not(pre) > code { background: var(--code-background); padding: 0.1em 0.35em; border-radius: 4px;
+  overflow-wrap: anywhere; }
+pre { overflow-x: auto; padding: 0.85rem 1rem; background: var(--code-background);
+  border: 1px solid var(--border); border-radius: 8px; line-height: 1.45; tab-size: 4; }
+.highlight { margin: 0 0 0.3rem; }
+.highlight pre { margin: 0; }
+p.source { margin: 0 0 1.4rem; font-size: 0.82rem; text-align: right; }
+p.source a { color: var(--muted); }
+blockquote { margin-left: 0; padding: 0.4rem 1rem; border-left: 4px solid var(--accent);
+  background: var(--panel); }
+blockquote p:last-child { margin-bottom: 0; }
+table { border-collapse: collapse; display: block; overflow-x: auto; max-width: 100%; }
+th, td { border: 1px solid var(--border); padding: 0.35rem 0.7rem; text-align: left; vertical-align: top; }
+th { background: var(--panel); }
+hr { border: 0; border-top: 1px solid var(--border); margin: 2rem 0; }
+/* Source pages: the whole file with line numbers; a linked line is highlighted. */
+.source-file .highlight pre { padding-left: 0.5rem; }
+.source-file .linenos { color: var(--muted); user-select: none; padding-right: 0.8rem; }
+.source-file span[id^="L-"]:target { background: var(--target); }
+.source-file .quoted-in { color: var(--muted); font-size: 0.92rem; }
+@media (max-width: 52rem) {
+  body { font-size: 16px; }
+  .layout { flex-direction: column; }
+  .sidebar { order: 2; border-right: 0; border-top: 1px solid var(--border); flex: none; }
+  .content { order: 1; padding: 1rem 1rem 2rem; }
+  h1 { font-size: 1.6rem; }
+  pre { padding: 0.7rem; font-size: 0.8rem; }
+}
+@media print {
+  .sidebar, .pager { display: none; }
+  .content { padding: 0; }
+}
+"""
+
+
+def pygments_css() -> str:
+    light = HtmlFormatter(style="default").get_style_defs(".highlight")
+    dark = HtmlFormatter(style="monokai").get_style_defs(".highlight")
+    # The panels' colours come from style.css, so the styles only colour tokens.
+    strip = re.compile(r"^(?:pre \{ line-height: 125%; \}|\.highlight \{ background: [^}]*\}|"
+                       r"\.highlight \.hll \{[^}]*\})$", re.M)
+    light, dark = strip.sub("", light), strip.sub("", dark)
+    dark = "\n".join("  " + line for line in dark.splitlines() if line.strip())
+    return ("/* Code colours (pygments), written by book/build_book.py. */\n"
+            f"{light.strip()}\n@media (prefers-color-scheme: dark) {{\n{dark}\n}}\n")
+
+
+def sidebar(pages: list[Page], current: Page | None, prefix: str) -> str:
+    items = []
+    for page in pages:
+        mark = ' class="current" aria-current="page"' if page is current else ""
+        item = f'<li><a href="{prefix}{page.html_name}"{mark}>{html.escape(page.title)}</a>'
+        if page is current and page.toc:
+            sections = [t for t in page.toc if t["level"] == 1]
+            subs = sections[0]["children"] if len(sections) == 1 else page.toc
+            if subs:
+                item += '<ol class="sections">' + "".join(
+                    f'<li><a href="#{html.escape(t["id"])}">{t["name"]}</a></li>' for t in subs) + "</ol>"
+        items.append(item + "</li>")
+    return "<ol>" + "".join(items) + "</ol>"
+
+
+def pager(pages: list[Page], index: int, where: str) -> str:
+    parts = []
+    if index > 0:
+        prev = pages[index - 1]
+        parts.append(f'<a class="prev" href="{prev.html_name}" rel="prev">&larr; {html.escape(prev.title)}</a>')
+    if index + 1 < len(pages):
+        nxt = pages[index + 1]
+        parts.append(f'<a class="next" href="{nxt.html_name}" rel="next">{html.escape(nxt.title)} &rarr;</a>')
+    return f'<nav class="pager {where}" aria-label="Previous and next page">{"".join(parts)}</nav>'
+
+
+def document(title: str, book_title: str, prefix: str, side: str, content: str) -> str:
+    full_title = title if title == book_title else f"{title} - {book_title}"
+    return f"""<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>{html.escape(full_title)}</title>
+<link rel="stylesheet" href="{prefix}style.css">
+<link rel="stylesheet" href="{prefix}pygments.css">
+</head>
+<body>
+<div class="layout">
+<nav class="sidebar" aria-label="Pages of the book">
+<p class="book-title"><a href="{prefix}index.html">{html.escape(book_title)}</a></p>
+{side}
+</nav>
+<div class="content">
+{content}
+</div>
+</div>
+</body>
+</html>
+"""
+
+
+def render_page(pages: list[Page], index: int) -> str:
+    page = pages[index]
+    content = (pager(pages, index, "top") + '\n<main><article>\n' + page.body +
+               '\n</article></main>\n' + pager(pages, index, "bottom"))
+    return document(page.title, pages[0].title, "", sidebar(pages, page, ""), content)
+
+
+def render_source(root: Path, rel: str, pages: list[Page]) -> str:
+    text = (root / rel).read_text(encoding="utf-8")
+    try:
+        lexer = get_lexer_for_filename(rel, stripnl=False)
+    except ClassNotFound:
+        suffix = PurePosixPath(rel).suffix
+        lexer = get_lexer_by_name("glsl", stripnl=False) if suffix in (".vert", ".frag", ".comp", ".glsl") \
+            else TextLexer(stripnl=False)
+    formatter = HtmlFormatter(linenos="table", linespans="L", cssclass="highlight", wrapcode=True)
+    # linespans gives each line <span id="L-N">; "L-N" is what captions link to.
+    code = pygments.highlight(text, lexer, formatter)
+    prefix = "../" * (rel.count("/") + 1)
+    quoting = [p for p in pages if any(inc.rel == rel for inc in p.includes)]
+    quoted = ""
+    if quoting:
+        quoted = ('<p class="quoted-in">Quoted in: ' + ", ".join(
+            f'<a href="{prefix}{p.html_name}">{html.escape(p.title)}</a>' for p in quoting) + "</p>")
+    content = (f'<main class="source-file"><article>\n<h1><code>{html.escape(rel)}</code></h1>\n'
+               f'{quoted}\n{code}\n</article></main>')
+    return document(rel, pages[0].title, prefix, sidebar(pages, None, prefix), content)
+
+
+# --------------------------------------------------------------------------
+# The build
+# --------------------------------------------------------------------------
+
+def build(root: Path, out: Path | None) -> tuple[list[str], list[str], int]:
+    problems: list[str] = []
+    warnings: list[str] = []
+    book = root / "book"
+    if not book.is_dir():
+        raise BookError(f"{book} does not exist (is --root the repository root?)")
+
+    names = sorted(p.name for p in book.glob("*.md") if p.is_file())
+    for name in names:
+        if not PAGE_RE.match(name):
+            problems.append(f"book/{name}: a page must be called index.md, NN_name.md or "
+                            "appendix_name.md (lower case)")
+    names = [n for n in names if PAGE_RE.match(n)]
+    if "index.md" not in names:
+        problems.append("book/index.md does not exist")
+    pages = [Page(name) for name in page_order(names)]
+    numbers = {}
+    for page in pages:
+        if page.md_name[:2].isdigit():
+            if page.md_name[:2] in numbers:
+                problems.append(f"book/{page.md_name}: chapter number {page.md_name[:2]} is also "
+                                f"used by book/{numbers[page.md_name[:2]]}")
+            numbers[page.md_name[:2]] = page.md_name
+
+    sources = Sources(root)
+    for page in pages:
+        expand_page(root, book, page, sources, problems)
+
+    # Every marker in the chapters, the helper library and the shaders must be
+    # well formed and quoted somewhere: a marker nobody quotes is stale.
+    quoted = {(inc.rel, inc.marker) for page in pages for inc in page.includes}
+    for rel in all_marker_files(root):
+        source = sources.get(rel)
+        for name, region in source.regions.items():
+            if (rel, name) not in quoted:
+                problems.append(f"{rel}:{region.start}: marker [{name}] is quoted by no page (stale marker)")
+    for source in sources.cache.values():
+        problems.extend(source.problems)
+
+    assets = Assets()
+    anchors: list = []
+    page_names = {p.md_name for p in pages}
+    for page in pages:
+        convert(page)
+        rewrite_links(root, book, page, page_names, assets, problems, warnings, anchors)
+        page.body = missing_image_placeholders(page.body, assets.missing_images)
+    by_name = {p.md_name: p for p in pages}
+    for origin, target, anchor in anchors:
+        if anchor not in by_name[target].ids:
+            problems.append(f"book/{origin}: link to {target}#{anchor}, which has no such heading")
+
+    for rel in sorted(assets.source_pages | {inc.rel for p in pages for inc in p.includes}):
+        assets.source_pages.add(rel)
+
+    problems = list(dict.fromkeys(problems))  # keep the order, drop repeats
+    if problems or out is None:
+        return problems, warnings, 0
+
+    written = 0
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "style.css").write_text(STYLE_CSS, encoding="utf-8")
+    (out / "pygments.css").write_text(pygments_css(), encoding="utf-8")
+    written += 2
+    for i, page in enumerate(pages):
+        (out / page.html_name).write_text(render_page(pages, i), encoding="utf-8")
+        written += 1
+    if assets.images:
+        (out / "images").mkdir(exist_ok=True)
+        for name, path in sorted(assets.images.items()):
+            shutil.copyfile(path, out / "images" / name)
+            written += 1
+    for rel in sorted(assets.source_pages):
+        target = out / source_page_name(rel)
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_text(render_source(root, rel, pages), encoding="utf-8")
+        written += 1
+    return problems, warnings, written
+
+
+def main(argv: list[str]) -> int:
+    parser = argparse.ArgumentParser(
+        prog="build_book.py",
+        description="Build the tutorial's book (book/*.md) into browsable HTML.")
+    mode = parser.add_mutually_exclusive_group(required=True)
+    mode.add_argument("--out", metavar="DIR", type=Path, help="write the HTML into DIR")
+    mode.add_argument("--check", action="store_true",
+                      help="validate includes, markers and links; write nothing")
+    parser.add_argument("--root", metavar="DIR", type=Path,
+                        default=Path(__file__).resolve().parent.parent,
+                        help="the repository root (default: the folder above book/)")
+    parser.add_argument("--strict", action="store_true",
+                        help="treat warnings (a picture that does not exist yet) as errors")
+    args = parser.parse_args(argv)
+
+    try:
+        problems, warnings, written = build(args.root.resolve(), None if args.check else args.out.resolve())
+    except BookError as error:
+        problems, warnings, written = [str(error)], [], 0
+    except (OSError, UnicodeDecodeError) as error:
+        problems, warnings, written = [f"cannot read or write a file: {error}"], [], 0
+
+    for warning in warnings:
+        sys.stderr.write(f"build_book.py: {'error' if args.strict else 'warning'}: {warning}\n")
+    for problem in problems:
+        sys.stderr.write(f"build_book.py: error: {problem}\n")
+    if problems or (args.strict and warnings):
+        count = len(problems) + (len(warnings) if args.strict else 0)
+        sys.stderr.write(f"build_book.py: the book was not built ({count} problem{'s' if count != 1 else ''})\n")
+        return 1
+    if args.check:
+        print("build_book.py: the book checks out")
+    else:
+        print(f"build_book.py: wrote {written} files to {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,11 @@
+// A fixture for book/tests: [goodbye] is quoted by no page.
+#include <cstdio>
+
+int main() {
+    // [hello]
+    std::puts("hello");
+    // [/hello]
+    // [goodbye]
+    std::puts("goodbye");
+    // [/goodbye]
+}

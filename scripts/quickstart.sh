@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# From a fresh Debian 12 machine to a chapter's picture, in one command (as root,
+# or as a user with sudo):
+#   scripts/quickstart.sh [NN_name]
+# Installs the packages (Debian + bookworm-backports), configures and builds
+# the release preset, and runs a chapter (the newest by default): in a window
+# when there is a display, else headless, writing its picture to NN_name.png.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+cmake --preset release
+cmake --build --preset release
+
+chapter=${1:-$(basename "$(ls -d chapters/[0-9][0-9]_*/ | sort | tail -n 1)")}
+exe=build/release/bin/$chapter
+[ -x "$exe" ] || { echo "no chapter named '$chapter' (see chapters/)" >&2; exit 2; }
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+  echo "running $chapter in a window (Esc closes it)"
+  "$exe"
+else
+  "$exe" --headless --frames 60 --screenshot "$chapter.png"
+  echo "no display: $chapter ran headless; its picture is $PWD/$chapter.png"
+fi

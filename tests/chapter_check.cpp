@@ -1,0 +1,180 @@
+// Runs one chapter executable and judges the run. Used by CTest for every
+// chapter regression test and every bad-input test:
+//
+//   vkt_chapter_check --exe PATH --out DIR --name NAME [--golden PNG]
+//                     [--exit N] [--expect REGEX]... [--pixel X,Y,R,G,B]...
+//                     [--isolate] -- ARGS...
+//
+// It runs PATH ARGS (with --screenshot DIR/NAME.png added when --golden is
+// given), keeps its stdout and stderr in DIR/NAME.stdout / .stderr, and fails
+// unless: the exit status is N (default 0); with exit 0 and --validation in
+// ARGS, stderr says "validation: 0 warnings, 0 errors"; every REGEX matches
+// stdout or stderr; and the screenshot is within vkt::Tolerance of the golden
+// image, and every --pixel of the screenshot has that colour (within 1). A
+// failed comparison leaves NAME.png (rendered) and NAME.diff.png.
+// With VKT_BLESS=1 in the environment the screenshot replaces the golden image.
+// --isolate runs a copy of the executable in DIR, away from its shaders.
+
+#include "vkt/image_io.hpp"
+
+#include <sys/wait.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string slurp(const fs::path& path) {
+    std::ifstream file(path);
+    std::stringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+int fail(const std::string& message) {
+    std::fprintf(stderr, "FAIL: %s\n", message.c_str());
+    return 1;
+}
+
+// Runs argv with stdout and stderr sent to files; returns the exit status, or
+// 128 + signal for a crash (which never counts as a clean failure).
+int run(const std::vector<std::string>& args, const fs::path& out, const fs::path& err) {
+    pid_t pid = fork();
+    if (pid == 0) {
+        int o = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        int e = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        dup2(o, 1);
+        dup2(e, 2);
+        std::vector<char*> argv;
+        for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        execv(argv[0], argv.data());
+        std::perror("execv");
+        _exit(127);
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
+    return WEXITSTATUS(status);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    fs::path exe, out_dir, golden;
+    std::string name;
+    int expected_exit = 0;
+    bool isolate = false;
+    std::vector<std::string> expects, pixels, chapter_args;
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        auto next = [&]() -> std::string {
+            if (i + 1 >= argc) std::exit(fail(arg + " needs a value"));
+            return argv[++i];
+        };
+        if (arg == "--exe") exe = next();
+        else if (arg == "--out") out_dir = next();
+        else if (arg == "--name") name = next();
+        else if (arg == "--golden") golden = next();
+        else if (arg == "--exit") expected_exit = std::stoi(next());
+        else if (arg == "--expect") expects.push_back(next());
+        else if (arg == "--pixel") pixels.push_back(next());
+        else if (arg == "--isolate") isolate = true;
+        else if (arg == "--") {
+            chapter_args.assign(argv + i + 1, argv + argc);
+            break;
+        } else return fail("unknown checker argument " + arg);
+    }
+    if (exe.empty() || out_dir.empty() || name.empty()) return fail("--exe, --out and --name are required");
+    fs::create_directories(out_dir);
+
+    if (isolate) {  // a copy of the executable with no shaders/ beside it
+        fs::path lonely = out_dir / (name + ".isolated") / "bin";
+        fs::create_directories(lonely);
+        fs::copy_file(exe, lonely / exe.filename(), fs::copy_options::overwrite_existing);
+        exe = lonely / exe.filename();
+    }
+
+    const fs::path screenshot = out_dir / (name + ".png");
+    const fs::path diff = out_dir / (name + ".diff.png");
+    fs::remove(screenshot);
+    fs::remove(diff);
+    std::vector<std::string> args{exe.string()};
+    args.insert(args.end(), chapter_args.begin(), chapter_args.end());
+    if (!golden.empty()) {
+        args.push_back("--screenshot");
+        args.push_back(screenshot.string());
+    }
+
+    const fs::path out_file = out_dir / (name + ".stdout"), err_file = out_dir / (name + ".stderr");
+    const int status = run(args, out_file, err_file);
+    const std::string out = slurp(out_file), err = slurp(err_file);
+    std::string command;
+    for (const auto& a : args) command += a + " ";
+    std::printf("ran: %s\nexit status: %d\n--- stderr ---\n%s", command.c_str(), status, err.c_str());
+
+    if (status >= 128) return fail("the chapter crashed (signal " + std::to_string(status - 128) + ")");
+    if (status != expected_exit)
+        return fail("exit status " + std::to_string(status) + ", expected " + std::to_string(expected_exit));
+
+    const bool validation = std::find(chapter_args.begin(), chapter_args.end(), "--validation") != chapter_args.end();
+    if (expected_exit == 0 && validation && err.find("validation: 0 warnings, 0 errors") == std::string::npos)
+        return fail("no report of a clean validation run on stderr");
+
+    for (const auto& pattern : expects)
+        if (!std::regex_search(out, std::regex(pattern)) && !std::regex_search(err, std::regex(pattern)))
+            return fail("no output matches /" + pattern + "/");
+
+    if (!golden.empty()) {
+        if (!fs::exists(screenshot)) return fail("the chapter wrote no screenshot");
+        if (const char* bless = std::getenv("VKT_BLESS"); bless && std::string(bless) == "1") {
+            fs::create_directories(golden.parent_path());
+            fs::copy_file(screenshot, golden, fs::copy_options::overwrite_existing);
+            std::printf("blessed %s: look at it before you commit it\n", golden.c_str());
+            return 0;
+        }
+        if (!fs::exists(golden)) return fail("no golden image " + golden.string() + " (scripts/bless-goldens.sh)");
+        const vkt::RgbaImage actual = vkt::read_png(screenshot), expected = vkt::read_png(golden);
+        if (actual.width != expected.width || actual.height != expected.height)
+            return fail("picture is " + std::to_string(actual.width) + "x" + std::to_string(actual.height) +
+                        ", golden is " + std::to_string(expected.width) + "x" + std::to_string(expected.height));
+        for (const auto& spec : pixels) {
+            unsigned x, y, r, g, b;
+            if (std::sscanf(spec.c_str(), "%u,%u,%u,%u,%u", &x, &y, &r, &g, &b) != 5 || x >= actual.width ||
+                y >= actual.height)
+                return fail("bad --pixel " + spec);
+            const uint8_t* p = &actual.pixels[(size_t{y} * actual.width + x) * 4];
+            const unsigned want[3] = {r, g, b};
+            for (int c = 0; c < 3; ++c)
+                if (std::abs(int(p[c]) - int(want[c])) > 1)
+                    return fail("pixel " + std::to_string(x) + "," + std::to_string(y) + " is " +
+                                std::to_string(p[0]) + "," + std::to_string(p[1]) + "," + std::to_string(p[2]) +
+                                ", expected " + std::to_string(r) + "," + std::to_string(g) + "," + std::to_string(b));
+            std::printf("pixel %u,%u: %u,%u,%u as expected\n", x, y, p[0], p[1], p[2]);
+        }
+        const vkt::Tolerance tolerance;
+        const vkt::ImageDifference d = vkt::compare_images(actual, expected, tolerance.threshold);
+        std::printf("picture: RMSE %.3f (max %.1f), %.4f%% of pixels off by more than %d (max %.2f%%), "
+                    "largest channel difference %d\n",
+                    d.rmse, tolerance.max_rmse, 100 * d.fraction_over_threshold, tolerance.threshold,
+                    100 * tolerance.max_fraction, d.max_channel_difference);
+        if (!vkt::within(d, tolerance)) {
+            vkt::write_png(diff, vkt::difference_image(actual, expected));
+            return fail("picture differs from " + golden.string() + "; see " + screenshot.string() +
+                        " and " + diff.string());
+        }
+    }
+    std::printf("PASS\n");
+    return 0;
+}
