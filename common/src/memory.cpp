@@ -14,6 +14,20 @@ uint32_t find_memory_type(VkPhysicalDevice physical, uint32_t type_bits,
     throw Error("no memory type has the properties 0x" + std::to_string(wanted));
 }
 
+// One allocation for one buffer or image: fine for the handful the runner and
+// early chapters make (a real allocator suballocates; see chapter 05).
+static DeviceMemory allocate(VkPhysicalDevice physical, VkDevice device,
+                             const VkMemoryRequirements& requirements, VkMemoryPropertyFlags properties) {
+    VkMemoryAllocateInfo info{
+        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
+        .allocationSize = requirements.size,
+        .memoryTypeIndex = find_memory_type(physical, requirements.memoryTypeBits, properties),
+    };
+    VkDeviceMemory memory;
+    VKT_CHECK(vkAllocateMemory(device, &info, nullptr, &memory));
+    return DeviceMemory(device, memory);
+}
+
 Buffer create_buffer(VkPhysicalDevice physical, VkDevice device, VkDeviceSize size,
                      VkBufferUsageFlags usage, VkMemoryPropertyFlags properties) {
     Buffer out;
@@ -30,17 +44,10 @@ Buffer create_buffer(VkPhysicalDevice physical, VkDevice device, VkDeviceSize si
 
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device, buffer, &requirements);
-    VkMemoryAllocateInfo allocate{
-        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
-        .allocationSize = requirements.size,
-        .memoryTypeIndex = find_memory_type(physical, requirements.memoryTypeBits, properties),
-    };
-    VkDeviceMemory memory;
-    VKT_CHECK(vkAllocateMemory(device, &allocate, nullptr, &memory));
-    out.memory = DeviceMemory(device, memory);
-    VKT_CHECK(vkBindBufferMemory(device, buffer, memory, 0));
+    out.memory = allocate(physical, device, requirements, properties);
+    VKT_CHECK(vkBindBufferMemory(device, buffer, out.memory, 0));
     if (properties & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
-        VKT_CHECK(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &out.mapped));
+        VKT_CHECK(vkMapMemory(device, out.memory, 0, VK_WHOLE_SIZE, 0, &out.mapped));
     return out;
 }
 
@@ -68,16 +75,8 @@ Image create_image_2d(VkPhysicalDevice physical, VkDevice device, VkFormat forma
 
     VkMemoryRequirements requirements;
     vkGetImageMemoryRequirements(device, image, &requirements);
-    VkMemoryAllocateInfo allocate{
-        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
-        .allocationSize = requirements.size,
-        .memoryTypeIndex = find_memory_type(physical, requirements.memoryTypeBits,
-                                            VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
-    };
-    VkDeviceMemory memory;
-    VKT_CHECK(vkAllocateMemory(device, &allocate, nullptr, &memory));
-    out.memory = DeviceMemory(device, memory);
-    VKT_CHECK(vkBindImageMemory(device, image, memory, 0));
+    out.memory = allocate(physical, device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    VKT_CHECK(vkBindImageMemory(device, image, out.memory, 0));
 
     VkImageViewCreateInfo view_info{
         .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
