@@ -407,6 +407,7 @@ void ChapterRun::recreate_swapchain() {
                                             options_.benchmark, swapchain_->get());
     swapchain_ = std::move(next);  // the old swapchain is destroyed after the new one exists
     VkExtent2D extent = swapchain_->extent();
+    std::fprintf(stderr, "%s: swapchain recreated at %ux%u\n", spec_.name.c_str(), extent.width, extent.height);
     if (extent.width != target_.extent.width || extent.height != target_.extent.height) {
         create_target(extent);
         renderer_->resize(extent);
