@@ -17,8 +17,8 @@
 
 #include "vkt/image_io.hpp"
 
-#include <sys/wait.h>
 #include <fcntl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -83,20 +83,30 @@ int main(int argc, char** argv) {
             if (i + 1 >= argc) std::exit(fail(arg + " needs a value"));
             return argv[++i];
         };
-        if (arg == "--exe") exe = next();
-        else if (arg == "--out") out_dir = next();
-        else if (arg == "--name") name = next();
-        else if (arg == "--golden") golden = next();
-        else if (arg == "--exit") expected_exit = std::stoi(next());
-        else if (arg == "--expect") expects.push_back(next());
-        else if (arg == "--pixel") pixels.push_back(next());
-        else if (arg == "--isolate") isolate = true;
+        if (arg == "--exe")
+            exe = next();
+        else if (arg == "--out")
+            out_dir = next();
+        else if (arg == "--name")
+            name = next();
+        else if (arg == "--golden")
+            golden = next();
+        else if (arg == "--exit")
+            expected_exit = std::stoi(next());
+        else if (arg == "--expect")
+            expects.push_back(next());
+        else if (arg == "--pixel")
+            pixels.push_back(next());
+        else if (arg == "--isolate")
+            isolate = true;
         else if (arg == "--") {
             chapter_args.assign(argv + i + 1, argv + argc);
             break;
-        } else return fail("unknown checker argument " + arg);
+        } else
+            return fail("unknown checker argument " + arg);
     }
-    if (exe.empty() || out_dir.empty() || name.empty()) return fail("--exe, --out and --name are required");
+    if (exe.empty() || out_dir.empty() || name.empty())
+        return fail("--exe, --out and --name are required");
     fs::create_directories(out_dir);
 
     if (isolate) {  // a copy of the executable with no shaders/ beside it
@@ -122,18 +132,24 @@ int main(int argc, char** argv) {
     const std::string out = slurp(out_file), err = slurp(err_file);
     std::string command;
     for (const auto& a : args) command += a + " ";
-    std::printf("ran: %s\nexit status: %d\n--- stderr ---\n%s", command.c_str(), status, err.c_str());
+    std::printf("ran: %s\nexit status: %d\n--- stderr ---\n%s", command.c_str(), status,
+                err.c_str());
 
-    if (status >= 128) return fail("the chapter crashed (signal " + std::to_string(status - 128) + ")");
+    if (status >= 128)
+        return fail("the chapter crashed (signal " + std::to_string(status - 128) + ")");
     if (status != expected_exit)
-        return fail("exit status " + std::to_string(status) + ", expected " + std::to_string(expected_exit));
+        return fail("exit status " + std::to_string(status) + ", expected " +
+                    std::to_string(expected_exit));
 
-    const bool validation = std::find(chapter_args.begin(), chapter_args.end(), "--validation") != chapter_args.end();
-    if (expected_exit == 0 && validation && err.find("validation: 0 warnings, 0 errors") == std::string::npos)
+    const bool validation =
+        std::find(chapter_args.begin(), chapter_args.end(), "--validation") != chapter_args.end();
+    if (expected_exit == 0 && validation &&
+        err.find("validation: 0 warnings, 0 errors") == std::string::npos)
         return fail("no report of a clean validation run on stderr");
 
     for (const auto& pattern : expects)
-        if (!std::regex_search(out, std::regex(pattern)) && !std::regex_search(err, std::regex(pattern)))
+        if (!std::regex_search(out, std::regex(pattern)) &&
+            !std::regex_search(err, std::regex(pattern)))
             return fail("no output matches /" + pattern + "/");
 
     if (!golden.empty()) {
@@ -144,31 +160,35 @@ int main(int argc, char** argv) {
             std::printf("blessed %s: look at it before you commit it\n", golden.c_str());
             return 0;
         }
-        if (!fs::exists(golden)) return fail("no golden image " + golden.string() + " (scripts/bless-goldens.sh)");
+        if (!fs::exists(golden))
+            return fail("no golden image " + golden.string() + " (scripts/bless-goldens.sh)");
         const vkt::RgbaImage actual = vkt::read_png(screenshot), expected = vkt::read_png(golden);
         if (actual.width != expected.width || actual.height != expected.height)
-            return fail("picture is " + std::to_string(actual.width) + "x" + std::to_string(actual.height) +
-                        ", golden is " + std::to_string(expected.width) + "x" + std::to_string(expected.height));
+            return fail("picture is " + std::to_string(actual.width) + "x" +
+                        std::to_string(actual.height) + ", golden is " +
+                        std::to_string(expected.width) + "x" + std::to_string(expected.height));
         for (const auto& spec : pixels) {
             unsigned x, y, r, g, b;
-            if (std::sscanf(spec.c_str(), "%u,%u,%u,%u,%u", &x, &y, &r, &g, &b) != 5 || x >= actual.width ||
-                y >= actual.height)
+            if (std::sscanf(spec.c_str(), "%u,%u,%u,%u,%u", &x, &y, &r, &g, &b) != 5 ||
+                x >= actual.width || y >= actual.height)
                 return fail("bad --pixel " + spec);
             const uint8_t* p = &actual.pixels[(size_t{y} * actual.width + x) * 4];
             const unsigned want[3] = {r, g, b};
             for (int c = 0; c < 3; ++c)
                 if (std::abs(int(p[c]) - int(want[c])) > 1)
                     return fail("pixel " + std::to_string(x) + "," + std::to_string(y) + " is " +
-                                std::to_string(p[0]) + "," + std::to_string(p[1]) + "," + std::to_string(p[2]) +
-                                ", expected " + std::to_string(r) + "," + std::to_string(g) + "," + std::to_string(b));
+                                std::to_string(p[0]) + "," + std::to_string(p[1]) + "," +
+                                std::to_string(p[2]) + ", expected " + std::to_string(r) + "," +
+                                std::to_string(g) + "," + std::to_string(b));
             std::printf("pixel %u,%u: %u,%u,%u as expected\n", x, y, p[0], p[1], p[2]);
         }
         const vkt::Tolerance tolerance;
         const vkt::ImageDifference d = vkt::compare_images(actual, expected, tolerance.threshold);
-        std::printf("picture: RMSE %.3f (max %.1f), %.4f%% of pixels off by more than %d (max %.2f%%), "
-                    "largest channel difference %d\n",
-                    d.rmse, tolerance.max_rmse, 100 * d.fraction_over_threshold, tolerance.threshold,
-                    100 * tolerance.max_fraction, d.max_channel_difference);
+        std::printf(
+            "picture: RMSE %.3f (max %.1f), %.4f%% of pixels off by more than %d (max %.2f%%), "
+            "largest channel difference %d\n",
+            d.rmse, tolerance.max_rmse, 100 * d.fraction_over_threshold, tolerance.threshold,
+            100 * tolerance.max_fraction, d.max_channel_difference);
         if (!vkt::within(d, tolerance)) {
             vkt::write_png(diff, vkt::difference_image(actual, expected));
             return fail("picture differs from " + golden.string() + "; see " + screenshot.string() +

@@ -80,8 +80,9 @@ int run(const vkt::Options& options) {
     const char* validation_layer = "VK_LAYER_KHRONOS_validation";
     const bool installed = has_layer(layers, validation_layer);
     if (options.validation.value_or(false) && !installed)
-        throw vkt::Error("--validation: VK_LAYER_KHRONOS_validation is not installed "
-                         "(on Debian: apt install vulkan-validationlayers)");
+        throw vkt::Error(
+            "--validation: VK_LAYER_KHRONOS_validation is not installed "
+            "(on Debian: apt install vulkan-validationlayers)");
     const bool validation = options.validation.value_or(installed);
     // [/choose-validation]
 
@@ -108,7 +109,8 @@ int run(const vkt::Options& options) {
     };
     // Synchronisation validation checks barriers and semaphores; it is off
     // unless enabled, and from chapter 03 on it is what keeps us honest.
-    VkValidationFeatureEnableEXT enabled[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+    VkValidationFeatureEnableEXT enabled[] = {
+        VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
     VkValidationFeaturesEXT features{
         .sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT,
         .pNext = &messenger_info,  // also report problems inside vkCreateInstance itself
@@ -135,7 +137,8 @@ int run(const vkt::Options& options) {
     VkResult result = vkCreateInstance(&info, nullptr, &instance);
     // The one failure worth its own words: the loader found no driver at all.
     if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
-        throw vkt::Error("no Vulkan driver found; install one, e.g. apt install mesa-vulkan-drivers");
+        throw vkt::Error(
+            "no Vulkan driver found; install one, e.g. apt install mesa-vulkan-drivers");
     VKT_CHECK(result);
     // [/create-instance]
 
@@ -182,4 +185,6 @@ int run(const vkt::Options& options) {
 
 }  // namespace
 
-int main(int argc, char** argv) { return vkt::run_text_chapter(argc, argv, run); }
+int main(int argc, char** argv) {
+    return vkt::run_text_chapter(argc, argv, run);
+}

@@ -19,11 +19,16 @@ namespace {
 
 const char* type_name(VkPhysicalDeviceType type) {
     switch (type) {
-        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
-        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
-        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
-        case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU (software)";
-        default: return "other";
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+            return "discrete GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+            return "integrated GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+            return "virtual GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_CPU:
+            return "CPU (software)";
+        default:
+            return "other";
     }
 }
 
@@ -85,11 +90,20 @@ Candidate evaluate(VkPhysicalDevice device) {
     // Prefer real GPUs; among equals, the one with the larger largest image
     // as a rough measure of capability.
     switch (properties.deviceType) {
-        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: candidate.score = 4000; break;
-        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: candidate.score = 3000; break;
-        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: candidate.score = 2000; break;
-        case VK_PHYSICAL_DEVICE_TYPE_CPU: candidate.score = 1000; break;
-        default: break;
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+            candidate.score = 4000;
+            break;
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+            candidate.score = 3000;
+            break;
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+            candidate.score = 2000;
+            break;
+        case VK_PHYSICAL_DEVICE_TYPE_CPU:
+            candidate.score = 1000;
+            break;
+        default:
+            break;
     }
     candidate.score += int(properties.limits.maxImageDimension2D / 1024);
 
@@ -107,11 +121,13 @@ Candidate evaluate(VkPhysicalDevice device) {
 // [choose]
 // --device picks by index or by part of the name; otherwise the best score wins.
 const Candidate& choose(const std::vector<Candidate>& candidates, const std::string& selector) {
-    if (candidates.empty()) throw vkt::Error("no Vulkan device found: is a Vulkan driver installed?");
+    if (candidates.empty())
+        throw vkt::Error("no Vulkan device found: is a Vulkan driver installed?");
     const Candidate* chosen = nullptr;
     if (!selector.empty()) {
         size_t index = 0;
-        auto [end, error] = std::from_chars(selector.data(), selector.data() + selector.size(), index);
+        auto [end, error] =
+            std::from_chars(selector.data(), selector.data() + selector.size(), index);
         if (error == std::errc{} && end == selector.data() + selector.size()) {
             if (index >= candidates.size())
                 throw vkt::Error("--device " + selector + ": there are only " +
@@ -119,15 +135,18 @@ const Candidate& choose(const std::vector<Candidate>& candidates, const std::str
             chosen = &candidates[index];
         } else {
             for (const auto& candidate : candidates)
-                if (!chosen && candidate.name.find(selector) != std::string::npos) chosen = &candidate;
-            if (!chosen) throw vkt::Error("--device " + selector + ": no device has that in its name");
+                if (!chosen && candidate.name.find(selector) != std::string::npos)
+                    chosen = &candidate;
+            if (!chosen)
+                throw vkt::Error("--device " + selector + ": no device has that in its name");
         }
         if (!chosen->rejected.empty()) throw vkt::Error(chosen->name + " " + chosen->rejected);
         std::printf("\nchose %s: named by --device\n", chosen->name.c_str());
         return *chosen;
     }
     for (const auto& candidate : candidates)
-        if (candidate.rejected.empty() && (!chosen || candidate.score > chosen->score)) chosen = &candidate;
+        if (candidate.rejected.empty() && (!chosen || candidate.score > chosen->score))
+            chosen = &candidate;
     if (!chosen) throw vkt::Error("no Vulkan device can run this tutorial (see the list above)");
     std::printf("\nchose %s: the highest score\n", chosen->name.c_str());
     return *chosen;
@@ -141,8 +160,8 @@ int run(const vkt::Options& options) {
         throw vkt::Error("--validation: the Khronos validation layer is not installed");
     std::shared_ptr<const vkt::ValidationCounts> counts;
     {
-        vkt::Instance instance({.application_name = "02_device",
-                                .validation = options.validation.value_or(layer)});
+        vkt::Instance instance(
+            {.application_name = "02_device", .validation = options.validation.value_or(layer)});
         if (instance.validation()) counts = instance.counts();
 
         uint32_t count = 0;
@@ -201,4 +220,6 @@ int run(const vkt::Options& options) {
 
 }  // namespace
 
-int main(int argc, char** argv) { return vkt::run_text_chapter(argc, argv, run); }
+int main(int argc, char** argv) {
+    return vkt::run_text_chapter(argc, argv, run);
+}

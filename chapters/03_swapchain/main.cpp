@@ -25,8 +25,7 @@ public:
         // A slow walk around the colour wheel, in linear RGB (the _SRGB target
         // encodes it for the display). Headless, time is frame index / 60 s.
         const float t = float(frame.time);
-        VkClearColorValue colour{{0.5f + 0.5f * std::sin(t),
-                                  0.5f + 0.5f * std::sin(t + 2.094f),
+        VkClearColorValue colour{{0.5f + 0.5f * std::sin(t), 0.5f + 0.5f * std::sin(t + 2.094f),
                                   0.5f + 0.5f * std::sin(t + 4.189f), 1.0f}};
         // [/clear-colour]
 
@@ -59,8 +58,8 @@ public:
         // [/to-transfer]
 
         // [clear]
-        vkCmdClearColorImage(frame.cmd, frame.target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &colour, 1,
-                             &whole);
+        vkCmdClearColorImage(frame.cmd, frame.target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &colour,
+                             1, &whole);
         // [/clear]
 
         // [to-attachment]

@@ -19,7 +19,8 @@ vkt::ShaderModule load_shader(VkDevice device, const std::string& chapter, const
     const auto path = vkt::shader_path(chapter, name);
     std::vector<char> code = vkt::read_file(path);
     if (code.size() % 4 != 0 || code.empty())
-        throw vkt::Error(path.string() + " is not SPIR-V (size " + std::to_string(code.size()) + ")");
+        throw vkt::Error(path.string() + " is not SPIR-V (size " + std::to_string(code.size()) +
+                         ")");
     VkShaderModuleCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
         .codeSize = code.size(),
@@ -42,7 +43,8 @@ public:
         // [layout]
         // What the shaders read besides vertices: nothing yet (descriptors
         // come in chapter 07, push constants in chapter 06).
-        VkPipelineLayoutCreateInfo layout_info{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+        VkPipelineLayoutCreateInfo layout_info{.sType =
+                                                   VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
         VkPipelineLayout layout;
         VKT_CHECK(vkCreatePipelineLayout(device, &layout_info, nullptr, &layout));
         layout_ = vkt::PipelineLayout(device, layout);
@@ -161,7 +163,8 @@ public:
         // [/begin-rendering]
 
         // [draw]
-        VkViewport viewport{0.0f, 0.0f, float(frame.extent.width), float(frame.extent.height), 0.0f, 1.0f};
+        VkViewport viewport{0.0f, 0.0f, float(frame.extent.width), float(frame.extent.height),
+                            0.0f, 1.0f};
         VkRect2D scissor{{0, 0}, frame.extent};
         vkCmdBindPipeline(frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
         vkCmdSetViewport(frame.cmd, 0, 1, &viewport);
@@ -179,6 +182,7 @@ private:
 }  // namespace
 
 int main(int argc, char** argv) {
-    return vkt::run_chapter(argc, argv, {.name = "04_triangle", .title = "04 - triangle"},
-                            [](const vkt::Context& context) { return std::make_unique<Triangle>(context); });
+    return vkt::run_chapter(
+        argc, argv, {.name = "04_triangle", .title = "04 - triangle"},
+        [](const vkt::Context& context) { return std::make_unique<Triangle>(context); });
 }

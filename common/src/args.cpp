@@ -77,7 +77,8 @@ Options parse_args(std::span<const char* const> args, Flags flags) {
             std::string_view text = value();
             auto x = text.find('x');
             auto w = x == std::string_view::npos ? std::nullopt : parse_positive(text.substr(0, x));
-            auto h = x == std::string_view::npos ? std::nullopt : parse_positive(text.substr(x + 1));
+            auto h =
+                x == std::string_view::npos ? std::nullopt : parse_positive(text.substr(x + 1));
             constexpr uint32_t max_side = 16384;  // the smallest maxImageDimension2D we accept
             if (!w || !h || *w > max_side || *h > max_side)
                 throw UsageError("--size wants WIDTHxHEIGHT, each 1.." + std::to_string(max_side) +
@@ -102,8 +103,9 @@ Options parse_args(std::span<const char* const> args, Flags flags) {
 std::string usage_line(std::string_view program, Flags flags) {
     std::string line = "usage: " + std::string(program);
     if (flags == Flags::frame_loop)
-        line += " [--headless | --offscreen] [--frames N] [--size WxH] [--screenshot FILE.png]"
-                " [--benchmark]";
+        line +=
+            " [--headless | --offscreen] [--frames N] [--size WxH] [--screenshot FILE.png]"
+            " [--benchmark]";
     line += " [--device NAME|INDEX] [--validation | --no-validation] [--help]";
     return line;
 }

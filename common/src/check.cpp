@@ -50,8 +50,8 @@ static std::string describe(const char* call, VkResult result, std::source_locat
     std::string text = call;
     // Keep the message to one line: the call text up to its argument list.
     if (auto paren = text.find('('); paren != std::string::npos) text = text.substr(0, paren);
-    return text + " failed with " + result_name(result) + " (" + std::to_string(result) +
-           ") at " + std::filesystem::path(where.file_name()).filename().string() + ":" +
+    return text + " failed with " + result_name(result) + " (" + std::to_string(result) + ") at " +
+           std::filesystem::path(where.file_name()).filename().string() + ":" +
            std::to_string(where.line());
 }
 

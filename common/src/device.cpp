@@ -9,11 +9,16 @@ namespace vkt {
 
 int device_type_score(VkPhysicalDeviceType type) {
     switch (type) {
-        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
-        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
-        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-        case VK_PHYSICAL_DEVICE_TYPE_CPU: return 1;
-        default: return 0;
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+            return 4;
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+            return 3;
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+            return 2;
+        case VK_PHYSICAL_DEVICE_TYPE_CPU:
+            return 1;
+        default:
+            return 0;
     }
 }
 
@@ -21,12 +26,15 @@ static std::string why_unsuitable(VkPhysicalDevice device, VkSurfaceKHR surface,
                                   const DeviceRequirements& requirements, uint32_t& family_out) {
     VkPhysicalDeviceProperties properties;
     vkGetPhysicalDeviceProperties(device, &properties);
-    if (properties.apiVersion < VK_API_VERSION_1_3) return "supports only Vulkan " +
-        std::to_string(VK_API_VERSION_MAJOR(properties.apiVersion)) + "." +
-        std::to_string(VK_API_VERSION_MINOR(properties.apiVersion)) + ", not 1.3";
+    if (properties.apiVersion < VK_API_VERSION_1_3)
+        return "supports only Vulkan " +
+               std::to_string(VK_API_VERSION_MAJOR(properties.apiVersion)) + "." +
+               std::to_string(VK_API_VERSION_MINOR(properties.apiVersion)) + ", not 1.3";
 
-    VkPhysicalDeviceVulkan13Features features13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &features13};
+    VkPhysicalDeviceVulkan13Features features13{
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
+                                       .pNext = &features13};
     vkGetPhysicalDeviceFeatures2(device, &features);
     if (!features13.dynamicRendering) return "lacks the dynamicRendering feature";
     if (!features13.synchronization2) return "lacks the synchronization2 feature";
@@ -76,7 +84,8 @@ std::vector<DeviceCandidate> survey_devices(VkInstance instance, VkSurfaceKHR su
             .type = properties.deviceType,
             .api_version = properties.apiVersion,
         };
-        candidate.unsuitable = why_unsuitable(devices[i], surface, requirements, candidate.queue_family);
+        candidate.unsuitable =
+            why_unsuitable(devices[i], surface, requirements, candidate.queue_family);
         candidates.push_back(std::move(candidate));
     }
     return candidates;
@@ -91,13 +100,15 @@ static std::string lower(std::string_view text) {
 const DeviceCandidate& choose_device(std::span<const DeviceCandidate> candidates,
                                      std::string_view selector) {
     if (candidates.empty())
-        throw Error("no Vulkan device found: is a Vulkan driver installed? "
-                    "(on Debian: apt install mesa-vulkan-drivers)");
+        throw Error(
+            "no Vulkan device found: is a Vulkan driver installed? "
+            "(on Debian: apt install mesa-vulkan-drivers)");
 
     if (!selector.empty()) {
         const DeviceCandidate* named = nullptr;
         uint32_t index = 0;
-        auto [end, error] = std::from_chars(selector.data(), selector.data() + selector.size(), index);
+        auto [end, error] =
+            std::from_chars(selector.data(), selector.data() + selector.size(), index);
         if (error == std::errc{} && end == selector.data() + selector.size()) {
             if (index >= candidates.size())
                 throw Error("--device " + std::string(selector) + ": there are only " +
@@ -109,10 +120,13 @@ const DeviceCandidate& choose_device(std::span<const DeviceCandidate> candidates
                     named = &candidate;
                     break;
                 }
-            if (!named) throw Error("--device " + std::string(selector) + ": no device has that in its name");
+            if (!named)
+                throw Error("--device " + std::string(selector) +
+                            ": no device has that in its name");
         }
         if (!named->unsuitable.empty())
-            throw Error("device " + std::to_string(named->index) + " (" + named->name + ") " + named->unsuitable);
+            throw Error("device " + std::to_string(named->index) + " (" + named->name + ") " +
+                        named->unsuitable);
         return *named;
     }
 

@@ -64,8 +64,10 @@ bool within(const ImageDifference& difference, const Tolerance& tolerance) {
 RgbaImage difference_image(const RgbaImage& a, const RgbaImage& b) {
     RgbaImage out{a.width, a.height, std::vector<uint8_t>(a.pixels.size())};
     for (size_t i = 0; i < a.pixels.size(); ++i)
-        out.pixels[i] = (i % 4 == 3) ? 255
-                                     : uint8_t(std::min(255, 4 * std::abs(int(a.pixels[i]) - int(b.pixels[i]))));
+        out.pixels[i] =
+            (i % 4 == 3)
+                ? 255
+                : uint8_t(std::min(255, 4 * std::abs(int(a.pixels[i]) - int(b.pixels[i]))));
     return out;
 }
 

@@ -83,7 +83,8 @@ Instance::Instance(const InstanceConfig& config) {
 
     VkDebugUtilsMessengerCreateInfoEXT messenger_info = messenger_create_info(counts_.get());
     // Synchronisation validation finds missing or wrong barriers; it is off by default.
-    VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+    VkValidationFeatureEnableEXT enables[] = {
+        VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
     VkValidationFeaturesEXT features{
         .sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT,
         .pNext = &messenger_info,
@@ -102,8 +103,9 @@ Instance::Instance(const InstanceConfig& config) {
     };
     VkResult created = vkCreateInstance(&info, nullptr, &instance_);
     if (created == VK_ERROR_INCOMPATIBLE_DRIVER)  // the loader found no driver at all
-        throw Error("no Vulkan driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER); "
-                    "install one, e.g. apt install mesa-vulkan-drivers");
+        throw Error(
+            "no Vulkan driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER); "
+            "install one, e.g. apt install mesa-vulkan-drivers");
     check(created, "vkCreateInstance");
 
     if (config.validation) {

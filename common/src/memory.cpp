@@ -17,7 +17,8 @@ uint32_t find_memory_type(VkPhysicalDevice physical, uint32_t type_bits,
 // One allocation for one buffer or image: fine for the handful the runner and
 // early chapters make (a real allocator suballocates; see chapter 05).
 static DeviceMemory allocate(VkPhysicalDevice physical, VkDevice device,
-                             const VkMemoryRequirements& requirements, VkMemoryPropertyFlags properties) {
+                             const VkMemoryRequirements& requirements,
+                             VkMemoryPropertyFlags properties) {
     VkMemoryAllocateInfo info{
         .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
         .allocationSize = requirements.size,

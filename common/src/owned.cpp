@@ -21,7 +21,8 @@ Fence create_fence(VkDevice device, bool signaled) {
     return Fence(device, fence);
 }
 
-CommandPool create_command_pool(VkDevice device, uint32_t queue_family, VkCommandPoolCreateFlags flags) {
+CommandPool create_command_pool(VkDevice device, uint32_t queue_family,
+                                VkCommandPoolCreateFlags flags) {
     VkCommandPoolCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
         .flags = flags,

@@ -26,13 +26,18 @@ enum class Presentation { window, headless_surface, offscreen };
 
 const char* presentation_name(Presentation p) {
     switch (p) {
-        case Presentation::window: return "window";
-        case Presentation::headless_surface: return "headless surface";
-        default: return "offscreen";
+        case Presentation::window:
+            return "window";
+        case Presentation::headless_surface:
+            return "headless surface";
+        default:
+            return "offscreen";
     }
 }
 
-bool has_display() { return std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY"); }
+bool has_display() {
+    return std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY");
+}
 
 std::string program_name(char** argv) {
     return std::filesystem::path(argv[0] ? argv[0] : "chapter").filename().string();
@@ -60,7 +65,7 @@ std::string json_summary(const std::vector<double>& values) {
 struct FrameSlot {
     CommandPool pool;
     VkCommandBuffer cmd = VK_NULL_HANDLE;
-    Fence done;               // signalled when the GPU finished this slot's last frame
+    Fence done;                // signalled when the GPU finished this slot's last frame
     Semaphore image_acquired;  // signalled when the acquired swapchain image may be written
     bool timing_pending = false;
 };
@@ -107,7 +112,8 @@ ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
         presentation_ = Presentation::offscreen;
     } else if (!options.headless && has_display()) {
         try {
-            window_ = std::make_unique<Window>(spec.title, VkExtent2D{options.width, options.height});
+            window_ =
+                std::make_unique<Window>(spec.title, VkExtent2D{options.width, options.height});
             presentation_ = Presentation::window;
         } catch (const Error& e) {
             std::fprintf(stderr, "%s: %s; running headless\n", spec.name.c_str(), e.what());
@@ -125,8 +131,9 @@ ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
 
     const bool layer = instance_layer_available(validation_layer_name);
     if (options.validation.value_or(false) && !layer)
-        throw Error("--validation: the Khronos validation layer is not installed "
-                    "(on Debian: apt install vulkan-validationlayers)");
+        throw Error(
+            "--validation: the Khronos validation layer is not installed "
+            "(on Debian: apt install vulkan-validationlayers)");
     instance_ = std::make_unique<Instance>(InstanceConfig{
         .application_name = spec.name,
         .validation = options.validation.value_or(layer),
@@ -138,7 +145,8 @@ ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
     } else if (presentation_ == Presentation::headless_surface) {
         auto create = reinterpret_cast<PFN_vkCreateHeadlessSurfaceEXT>(
             vkGetInstanceProcAddr(*instance_, "vkCreateHeadlessSurfaceEXT"));
-        VkHeadlessSurfaceCreateInfoEXT info{.sType = VK_STRUCTURE_TYPE_HEADLESS_SURFACE_CREATE_INFO_EXT};
+        VkHeadlessSurfaceCreateInfoEXT info{.sType =
+                                                VK_STRUCTURE_TYPE_HEADLESS_SURFACE_CREATE_INFO_EXT};
         VkSurfaceKHR surface;
         VKT_CHECK(create(*instance_, &info, nullptr, &surface));
         surface_ = SurfaceHandle(*instance_, surface);
@@ -160,7 +168,8 @@ ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
 
     for (uint32_t i = 0; i < frames_in_flight; ++i) {
         FrameSlot slot{
-            .pool = create_command_pool(*device_, device_->queue_family(), VK_COMMAND_POOL_CREATE_TRANSIENT_BIT),
+            .pool = create_command_pool(*device_, device_->queue_family(),
+                                        VK_COMMAND_POOL_CREATE_TRANSIENT_BIT),
             .done = create_fence(*device_, true),  // signalled: the first wait returns at once
             .image_acquired = create_semaphore(*device_),
         };
@@ -206,10 +215,11 @@ ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
 }
 
 void ChapterRun::create_target(VkExtent2D extent) {
-    VkFormat format = swapchain_ ? render_format_for(swapchain_->format()) : VK_FORMAT_R8G8B8A8_SRGB;
+    VkFormat format =
+        swapchain_ ? render_format_for(swapchain_->format()) : VK_FORMAT_R8G8B8A8_SRGB;
     target_ = create_image_2d(device_->physical(), *device_, format, extent,
-                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                  VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                               VK_IMAGE_ASPECT_COLOR_BIT);
 }
 
@@ -239,11 +249,13 @@ void ChapterRun::run(const RendererFactory& factory) {
             window_->poll();
             if (window_->should_close()) break;
         }
-        const double time = fixed_step ? double(index) * fixed_time_step : window_->seconds() - start;
+        const double time =
+            fixed_step ? double(index) * fixed_time_step : window_->seconds() - start;
         const auto begin = std::chrono::steady_clock::now();
         if (!draw_frame(index, time)) continue;  // the swapchain was recreated: try again
         cpu_ms_.push_back(
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count());
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
+                .count());
         ++index;
     }
 
@@ -253,7 +265,8 @@ void ChapterRun::run(const RendererFactory& factory) {
 
     if (options_.benchmark) {
         std::printf(
-            "{\"chapter\": %s, \"device\": %s, \"presentation\": %s, \"width\": %u, \"height\": %u, "
+            "{\"chapter\": %s, \"device\": %s, \"presentation\": %s, \"width\": %u, \"height\": "
+            "%u, "
             "\"frames\": %zu, \"cpu_frame_ms\": %s, \"gpu_frame_ms\": %s}\n",
             json_string(spec_.name).c_str(), json_string(device_->properties().deviceName).c_str(),
             json_string(presentation_name(presentation_)).c_str(), target_.extent.width,
@@ -356,16 +369,17 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
     // [frame-barriers]
     // Our colour target: the previous frame's copy must have read it before we
     // overwrite it; its old contents do not matter (UNDEFINED).
-    image_barrier(cmd, target_.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                  VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+    image_barrier(cmd, target_.image, VK_IMAGE_LAYOUT_UNDEFINED,
+                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                  VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
 
     renderer_->record(frame);  // the chapter draws
 
     // The chapter's writes must be finished and visible before we copy.
     image_barrier(cmd, target_.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                   VK_ACCESS_2_TRANSFER_READ_BIT);
 
@@ -383,9 +397,9 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
         };
         vkCmdCopyImage(cmd, target_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        image_barrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
-                      VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE);
+        image_barrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_2_COPY_BIT,
+                      VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE);
     }
     // [/frame-barriers]
 
@@ -407,7 +421,8 @@ void ChapterRun::recreate_swapchain() {
                                             options_.benchmark, swapchain_->get());
     swapchain_ = std::move(next);  // the old swapchain is destroyed after the new one exists
     VkExtent2D extent = swapchain_->extent();
-    std::fprintf(stderr, "%s: swapchain recreated at %ux%u\n", spec_.name.c_str(), extent.width, extent.height);
+    std::fprintf(stderr, "%s: swapchain recreated at %ux%u\n", spec_.name.c_str(), extent.width,
+                 extent.height);
     if (extent.width != target_.extent.width || extent.height != target_.extent.height) {
         create_target(extent);
         renderer_->resize(extent);
@@ -420,17 +435,20 @@ void ChapterRun::collect_gpu_time(FrameSlot& slot, uint32_t slot_index) {
     slot.timing_pending = false;
     uint64_t ticks[2];
     VKT_CHECK(vkGetQueryPoolResults(*device_, timestamps_, 2 * slot_index, 2, sizeof ticks, ticks,
-                                    sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+                                    sizeof(uint64_t),
+                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
     const uint64_t elapsed = (ticks[1] - ticks[0]) & timestamp_mask_;
     gpu_ms_.push_back(double(elapsed) * device_->properties().limits.timestampPeriod / 1e6);
 }
 
 void ChapterRun::save_screenshot(const std::string& path) {
     const VkExtent2D extent = target_.extent;
-    Buffer readback = create_buffer(device_->physical(), *device_, VkDeviceSize{extent.width} * extent.height * 4,
-                                    VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                    VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-    CommandPool pool = create_command_pool(*device_, device_->queue_family(), VK_COMMAND_POOL_CREATE_TRANSIENT_BIT);
+    Buffer readback =
+        create_buffer(device_->physical(), *device_, VkDeviceSize{extent.width} * extent.height * 4,
+                      VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    CommandPool pool = create_command_pool(*device_, device_->queue_family(),
+                                           VK_COMMAND_POOL_CREATE_TRANSIENT_BIT);
     VkCommandBufferAllocateInfo allocate{
         .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
         .commandPool = pool,
@@ -449,7 +467,8 @@ void ChapterRun::save_screenshot(const std::string& path) {
         .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
         .imageExtent = {extent.width, extent.height, 1},
     };
-    vkCmdCopyImageToBuffer(cmd, target_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &region);
+    vkCmdCopyImageToBuffer(cmd, target_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           readback.buffer, 1, &region);
     VkBufferMemoryBarrier2 to_host{
         .sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2,
         .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
@@ -470,7 +489,8 @@ void ChapterRun::save_screenshot(const std::string& path) {
     VKT_CHECK(vkEndCommandBuffer(cmd));
 
     Fence fence = create_fence(*device_, false);
-    VkCommandBufferSubmitInfo command{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO, .commandBuffer = cmd};
+    VkCommandBufferSubmitInfo command{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO,
+                                      .commandBuffer = cmd};
     VkSubmitInfo2 submit{
         .sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
         .commandBufferInfoCount = 1,
@@ -499,9 +519,11 @@ int guarded(int argc, char** argv, Flags flags, const std::function<int(const Op
     const std::string program = program_name(argv);
     Options options;
     try {
-        options = parse_args(std::span<const char* const>(argv + 1, size_t(std::max(argc - 1, 0))), flags);
+        options = parse_args(std::span<const char* const>(argv + 1, size_t(std::max(argc - 1, 0))),
+                             flags);
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "%s: %s\n%s\n", program.c_str(), e.what(), usage_line(program, flags).c_str());
+        std::fprintf(stderr, "%s: %s\n%s\n", program.c_str(), e.what(),
+                     usage_line(program, flags).c_str());
         return 2;
     }
     if (options.help) {
@@ -520,7 +542,8 @@ int guarded(int argc, char** argv, Flags flags, const std::function<int(const Op
 int report_validation(const std::string& program, const ValidationCounts* counts) {
     if (!counts) return 0;
     const uint32_t warnings = counts->warnings, errors = counts->errors;
-    std::fprintf(stderr, "%s: validation: %u warnings, %u errors\n", program.c_str(), warnings, errors);
+    std::fprintf(stderr, "%s: validation: %u warnings, %u errors\n", program.c_str(), warnings,
+                 errors);
     return warnings + errors > 0 ? 1 : 0;
 }
 

@@ -15,7 +15,8 @@ VkSurfaceFormatKHR choose_surface_format(std::span<const VkSurfaceFormatKHR> ava
                                   VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM};
     for (VkFormat format : preferred)
         for (const auto& candidate : available)
-            if (candidate.format == format && candidate.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR)
+            if (candidate.format == format &&
+                candidate.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR)
                 return candidate;
     throw Error("the surface offers no 8-bit RGBA or BGRA format in the sRGB colour space");
 }
@@ -23,10 +24,14 @@ VkSurfaceFormatKHR choose_surface_format(std::span<const VkSurfaceFormatKHR> ava
 VkFormat render_format_for(VkFormat swapchain_format) {
     switch (swapchain_format) {
         case VK_FORMAT_B8G8R8A8_SRGB:
-        case VK_FORMAT_B8G8R8A8_UNORM: return VK_FORMAT_B8G8R8A8_SRGB;
+        case VK_FORMAT_B8G8R8A8_UNORM:
+            return VK_FORMAT_B8G8R8A8_SRGB;
         case VK_FORMAT_R8G8B8A8_SRGB:
-        case VK_FORMAT_R8G8B8A8_UNORM: return VK_FORMAT_R8G8B8A8_SRGB;
-        default: throw Error(std::string("no render format for swapchain format ") + format_name(swapchain_format));
+        case VK_FORMAT_R8G8B8A8_UNORM:
+            return VK_FORMAT_R8G8B8A8_SRGB;
+        default:
+            throw Error(std::string("no render format for swapchain format ") +
+                        format_name(swapchain_format));
     }
 }
 // [/choose-format]
@@ -40,8 +45,10 @@ VkPresentModeKHR choose_present_mode(std::span<const VkPresentModeKHR> available
 
 VkExtent2D choose_extent(const VkSurfaceCapabilitiesKHR& capabilities, VkExtent2D wanted) {
     if (capabilities.currentExtent.width != UINT32_MAX) return capabilities.currentExtent;
-    return {std::clamp(wanted.width, capabilities.minImageExtent.width, capabilities.maxImageExtent.width),
-            std::clamp(wanted.height, capabilities.minImageExtent.height, capabilities.maxImageExtent.height)};
+    return {std::clamp(wanted.width, capabilities.minImageExtent.width,
+                       capabilities.maxImageExtent.width),
+            std::clamp(wanted.height, capabilities.minImageExtent.height,
+                       capabilities.maxImageExtent.height)};
 }
 
 uint32_t choose_image_count(const VkSurfaceCapabilitiesKHR& capabilities) {
@@ -104,21 +111,31 @@ Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR su
 
 const char* format_name(VkFormat format) {
     switch (format) {
-        case VK_FORMAT_B8G8R8A8_SRGB: return "B8G8R8A8_SRGB";
-        case VK_FORMAT_B8G8R8A8_UNORM: return "B8G8R8A8_UNORM";
-        case VK_FORMAT_R8G8B8A8_SRGB: return "R8G8B8A8_SRGB";
-        case VK_FORMAT_R8G8B8A8_UNORM: return "R8G8B8A8_UNORM";
-        default: return "another format";
+        case VK_FORMAT_B8G8R8A8_SRGB:
+            return "B8G8R8A8_SRGB";
+        case VK_FORMAT_B8G8R8A8_UNORM:
+            return "B8G8R8A8_UNORM";
+        case VK_FORMAT_R8G8B8A8_SRGB:
+            return "R8G8B8A8_SRGB";
+        case VK_FORMAT_R8G8B8A8_UNORM:
+            return "R8G8B8A8_UNORM";
+        default:
+            return "another format";
     }
 }
 
 const char* present_mode_name(VkPresentModeKHR mode) {
     switch (mode) {
-        case VK_PRESENT_MODE_IMMEDIATE_KHR: return "IMMEDIATE";
-        case VK_PRESENT_MODE_MAILBOX_KHR: return "MAILBOX";
-        case VK_PRESENT_MODE_FIFO_KHR: return "FIFO";
-        case VK_PRESENT_MODE_FIFO_RELAXED_KHR: return "FIFO_RELAXED";
-        default: return "another mode";
+        case VK_PRESENT_MODE_IMMEDIATE_KHR:
+            return "IMMEDIATE";
+        case VK_PRESENT_MODE_MAILBOX_KHR:
+            return "MAILBOX";
+        case VK_PRESENT_MODE_FIFO_KHR:
+            return "FIFO";
+        case VK_PRESENT_MODE_FIFO_RELAXED_KHR:
+            return "FIFO_RELAXED";
+        default:
+            return "another mode";
     }
 }
 

@@ -47,8 +47,12 @@ VkSurfaceKHR Window::create_surface(VkInstance instance) const {
     return surface;
 }
 
-bool Window::should_close() const { return glfwWindowShouldClose(window_); }
-void Window::poll() const { glfwPollEvents(); }
+bool Window::should_close() const {
+    return glfwWindowShouldClose(window_);
+}
+void Window::poll() const {
+    glfwPollEvents();
+}
 
 VkExtent2D Window::framebuffer_size() const {
     int width = 0, height = 0;
@@ -57,12 +61,16 @@ VkExtent2D Window::framebuffer_size() const {
 }
 
 void Window::wait_while_minimised() const {
-    for (VkExtent2D size = framebuffer_size(); (size.width == 0 || size.height == 0) && !should_close();
-         size = framebuffer_size())
+    for (VkExtent2D size = framebuffer_size();
+         (size.width == 0 || size.height == 0) && !should_close(); size = framebuffer_size())
         glfwWaitEvents();
 }
 
-bool Window::take_resized() { return std::exchange(resized_, false); }
-double Window::seconds() const { return glfwGetTime(); }
+bool Window::take_resized() {
+    return std::exchange(resized_, false);
+}
+double Window::seconds() const {
+    return glfwGetTime();
+}
 
 }  // namespace vkt

@@ -94,8 +94,9 @@ TEST_CASE("text chapters refuse frame-loop flags but take the rest", "[args]") {
 
 TEST_CASE("usage and help name every flag the chapter takes", "[args]") {
     std::string help = vkt::help_text("04_triangle");
-    for (const char* flag : {"--headless", "--offscreen", "--frames", "--size", "--screenshot",
-                             "--benchmark", "--device", "--validation", "--no-validation", "--help"})
+    for (const char* flag :
+         {"--headless", "--offscreen", "--frames", "--size", "--screenshot", "--benchmark",
+          "--device", "--validation", "--no-validation", "--help"})
         CHECK(help.find(flag) != std::string::npos);
     std::string text = vkt::usage_line("01_instance", Flags::text_only);
     CHECK(text.find("--frames") == std::string::npos);

@@ -17,7 +17,9 @@ TEST_CASE("success and positive codes pass through", "[check]") {
     CHECK(VKT_CHECK(VK_INCOMPLETE) == VK_INCOMPLETE);
 }
 
-static VkResult vkFakeCreateThing(int) { return VK_ERROR_FEATURE_NOT_PRESENT; }
+static VkResult vkFakeCreateThing(int) {
+    return VK_ERROR_FEATURE_NOT_PRESENT;
+}
 
 TEST_CASE("an error names the call, the result and the place", "[check]") {
     try {
@@ -26,6 +28,7 @@ TEST_CASE("an error names the call, the result and the place", "[check]") {
     } catch (const vkt::VulkanError& e) {
         std::string what = e.what();
         CHECK(e.result() == VK_ERROR_FEATURE_NOT_PRESENT);
-        CHECK(what.starts_with("vkFakeCreateThing failed with VK_ERROR_FEATURE_NOT_PRESENT (-8) at test_check.cpp:"));
+        CHECK(what.starts_with(
+            "vkFakeCreateThing failed with VK_ERROR_FEATURE_NOT_PRESENT (-8) at test_check.cpp:"));
     }
 }

@@ -8,7 +8,10 @@ using vkt::DeviceCandidate;
 
 static DeviceCandidate candidate(uint32_t index, const char* name, VkPhysicalDeviceType type,
                                  const char* unsuitable = "") {
-    return {.index = index, .name = name, .type = type, .api_version = VK_API_VERSION_1_3,
+    return {.index = index,
+            .name = name,
+            .type = type,
+            .api_version = VK_API_VERSION_1_3,
             .unsuitable = unsuitable};
 }
 
@@ -26,7 +29,8 @@ TEST_CASE("device types rank discrete > integrated > virtual > CPU > other", "[d
 TEST_CASE("without --device the best suitable device wins", "[device]") {
     std::vector<DeviceCandidate> devices{
         candidate(0, "llvmpipe", VK_PHYSICAL_DEVICE_TYPE_CPU),
-        candidate(1, "Big GPU", VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU, "lacks the dynamicRendering feature"),
+        candidate(1, "Big GPU", VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU,
+                  "lacks the dynamicRendering feature"),
         candidate(2, "Laptop GPU", VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU),
     };
     CHECK(vkt::choose_device(devices, "").name == "Laptop GPU");
@@ -45,7 +49,8 @@ TEST_CASE("the device flag picks by index or by part of the name, any case", "[d
 
 TEST_CASE("impossible choices explain themselves", "[device]") {
     std::vector<DeviceCandidate> devices{
-        candidate(0, "Old GPU", VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU, "supports only Vulkan 1.1, not 1.3"),
+        candidate(0, "Old GPU", VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU,
+                  "supports only Vulkan 1.1, not 1.3"),
     };
     auto message = [&](std::string_view selector) {
         try {
@@ -55,7 +60,8 @@ TEST_CASE("impossible choices explain themselves", "[device]") {
         }
         return std::string("no exception");
     };
-    CHECK(message("") == "no Vulkan device can run this chapter; Old GPU supports only Vulkan 1.1, not 1.3");
+    CHECK(message("") ==
+          "no Vulkan device can run this chapter; Old GPU supports only Vulkan 1.1, not 1.3");
     CHECK(message("0") == "device 0 (Old GPU) supports only Vulkan 1.1, not 1.3");
     CHECK(message("3") == "--device 3: there are only 1 device(s), numbered from 0");
     CHECK(message("radeon") == "--device radeon: no device has that in its name");

@@ -36,7 +36,11 @@ TEST_CASE("reading a missing or corrupt PNG is an error", "[image]") {
     auto dir = std::filesystem::temp_directory_path();
     CHECK_THROWS_AS(vkt::read_png(dir / "vkt_no_such_file.png"), vkt::Error);
     auto bad = dir / "vkt_corrupt.png";
-    { std::FILE* f = std::fopen(bad.c_str(), "wb"); std::fputs("not a png", f); std::fclose(f); }
+    {
+        std::FILE* f = std::fopen(bad.c_str(), "wb");
+        std::fputs("not a png", f);
+        std::fclose(f);
+    }
     CHECK_THROWS_AS(vkt::read_png(bad), vkt::Error);
     std::filesystem::remove(bad);
     CHECK_THROWS_AS(vkt::write_png(dir / "x.png", RgbaImage{2, 2, {1, 2, 3}}), vkt::Error);
@@ -52,7 +56,8 @@ TEST_CASE("identical pictures do not differ", "[image]") {
 
 TEST_CASE("differences are measured over RGB, not alpha", "[image]") {
     // One channel off by 30 in every pixel: RMSE = sqrt(30^2 / 3) = 17.32.
-    auto d = vkt::compare_images(solid(2, 2, 100, 100, 100, 0), solid(2, 2, 130, 100, 100, 255), 24);
+    auto d =
+        vkt::compare_images(solid(2, 2, 100, 100, 100, 0), solid(2, 2, 130, 100, 100, 255), 24);
     CHECK(d.rmse == Catch::Approx(17.3205).epsilon(1e-4));
     CHECK(d.max_channel_difference == 30);
     CHECK(d.pixels_over_threshold == 4);
@@ -73,7 +78,8 @@ TEST_CASE("the tolerance lets rounding through and catches a wrong pixel block",
 }
 
 TEST_CASE("pictures of different sizes cannot be compared", "[image]") {
-    CHECK_THROWS_AS(vkt::compare_images(solid(2, 2, 0, 0, 0), solid(2, 3, 0, 0, 0), 24), vkt::Error);
+    CHECK_THROWS_AS(vkt::compare_images(solid(2, 2, 0, 0, 0), solid(2, 3, 0, 0, 0), 24),
+                    vkt::Error);
 }
 
 TEST_CASE("the difference image shows |a - b| four times brighter, opaque", "[image]") {

@@ -13,7 +13,9 @@ void destroy_fake(VkDevice, VkFence fence, const VkAllocationCallbacks*) {
     last = reinterpret_cast<uint64_t>(fence);
 }
 using FakeFence = vkt::Owned<VkFence, VkDevice, destroy_fake>;
-VkFence handle(uint64_t value) { return reinterpret_cast<VkFence>(value); }
+VkFence handle(uint64_t value) {
+    return reinterpret_cast<VkFence>(value);
+}
 }  // namespace
 
 TEST_CASE("an owner destroys its handle once, when it goes", "[owned]") {

@@ -6,21 +6,26 @@
 
 #include <vector>
 
-static VkSurfaceFormatKHR srgb(VkFormat format) { return {format, VK_COLOR_SPACE_SRGB_NONLINEAR_KHR}; }
+static VkSurfaceFormatKHR srgb(VkFormat format) {
+    return {format, VK_COLOR_SPACE_SRGB_NONLINEAR_KHR};
+}
 
 TEST_CASE("an _SRGB surface format is preferred", "[swapchain]") {
-    std::vector<VkSurfaceFormatKHR> window{srgb(VK_FORMAT_B8G8R8A8_UNORM), srgb(VK_FORMAT_B8G8R8A8_SRGB)};
+    std::vector<VkSurfaceFormatKHR> window{srgb(VK_FORMAT_B8G8R8A8_UNORM),
+                                           srgb(VK_FORMAT_B8G8R8A8_SRGB)};
     CHECK(vkt::choose_surface_format(window).format == VK_FORMAT_B8G8R8A8_SRGB);
 }
 
 TEST_CASE("lavapipe's headless formats are accepted", "[swapchain]") {
-    std::vector<VkSurfaceFormatKHR> headless{srgb(VK_FORMAT_R8G8B8A8_UNORM), srgb(VK_FORMAT_B8G8R8A8_UNORM)};
+    std::vector<VkSurfaceFormatKHR> headless{srgb(VK_FORMAT_R8G8B8A8_UNORM),
+                                             srgb(VK_FORMAT_B8G8R8A8_UNORM)};
     CHECK(vkt::choose_surface_format(headless).format == VK_FORMAT_B8G8R8A8_UNORM);
 }
 
 TEST_CASE("a surface without an 8-bit sRGB-space format is refused", "[swapchain]") {
-    std::vector<VkSurfaceFormatKHR> odd{srgb(VK_FORMAT_A2B10G10R10_UNORM_PACK32),
-                                        {VK_FORMAT_B8G8R8A8_UNORM, VK_COLOR_SPACE_EXTENDED_SRGB_LINEAR_EXT}};
+    std::vector<VkSurfaceFormatKHR> odd{
+        srgb(VK_FORMAT_A2B10G10R10_UNORM_PACK32),
+        {VK_FORMAT_B8G8R8A8_UNORM, VK_COLOR_SPACE_EXTENDED_SRGB_LINEAR_EXT}};
     CHECK_THROWS_AS(vkt::choose_surface_format(odd), vkt::Error);
 }
 

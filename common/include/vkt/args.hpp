@@ -12,15 +12,15 @@
 namespace vkt {
 
 struct Options {
-    bool headless = false;              // --headless: no window, even if a display exists
-    bool offscreen = false;             // --offscreen: no surface at all, our own images only
-    std::optional<uint32_t> frames;     // --frames N: stop after N frames
-    uint32_t width = 800, height = 600; // --size WxH
-    std::string screenshot;             // --screenshot FILE.png: the last frame as a PNG
-    bool benchmark = false;             // --benchmark: JSON timings on stdout
-    std::string device;                 // --device NAME|INDEX
-    std::optional<bool> validation;     // --validation / --no-validation (unset: on if installed)
-    bool help = false;                  // --help
+    bool headless = false;               // --headless: no window, even if a display exists
+    bool offscreen = false;              // --offscreen: no surface at all, our own images only
+    std::optional<uint32_t> frames;      // --frames N: stop after N frames
+    uint32_t width = 800, height = 600;  // --size WxH
+    std::string screenshot;              // --screenshot FILE.png: the last frame as a PNG
+    bool benchmark = false;              // --benchmark: JSON timings on stdout
+    std::string device;                  // --device NAME|INDEX
+    std::optional<bool> validation;      // --validation / --no-validation (unset: on if installed)
+    bool help = false;                   // --help
 };
 
 // Which flags a chapter accepts: the text-only chapters 01 and 02 draw nothing,

@@ -19,8 +19,8 @@ RgbaImage read_png(const std::filesystem::path& path);
 // How far two pictures of the same size are apart, over the R, G and B channels
 // (alpha is not shown on screen, so it is not compared).
 struct ImageDifference {
-    double rmse = 0;                   // root mean square of the channel differences, 0..255
-    int max_channel_difference = 0;    // the largest single channel difference, 0..255
+    double rmse = 0;                 // root mean square of the channel differences, 0..255
+    int max_channel_difference = 0;  // the largest single channel difference, 0..255
     uint64_t pixels_over_threshold = 0;
     double fraction_over_threshold = 0;  // of all pixels
 };

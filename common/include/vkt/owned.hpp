@@ -12,7 +12,8 @@ namespace vkt {
 
 // Owns a handle created from a parent (usually the VkDevice) and destroyed with
 // Destroy(parent, handle, nullptr).
-template <typename Handle, typename Parent, void (*Destroy)(Parent, Handle, const VkAllocationCallbacks*)>
+template <typename Handle, typename Parent,
+          void (*Destroy)(Parent, Handle, const VkAllocationCallbacks*)>
 class Owned {
 public:
     Owned() = default;
@@ -33,7 +34,8 @@ public:
     }
 
     void reset() {
-        if (handle_ != VK_NULL_HANDLE) Destroy(parent_, std::exchange(handle_, VK_NULL_HANDLE), nullptr);
+        if (handle_ != VK_NULL_HANDLE)
+            Destroy(parent_, std::exchange(handle_, VK_NULL_HANDLE), nullptr);
     }
     Handle get() const { return handle_; }
     operator Handle() const { return handle_; }  // NOLINT: pass straight to vk* calls
@@ -61,6 +63,7 @@ using ImageHandle = Owned<VkImage, VkDevice, vkDestroyImage>;
 // Small constructors for the objects every frame loop needs.
 Semaphore create_semaphore(VkDevice device);
 Fence create_fence(VkDevice device, bool signaled);
-CommandPool create_command_pool(VkDevice device, uint32_t queue_family, VkCommandPoolCreateFlags flags);
+CommandPool create_command_pool(VkDevice device, uint32_t queue_family,
+                                VkCommandPoolCreateFlags flags);
 
 }  // namespace vkt

@@ -39,8 +39,8 @@ struct Frame {
     VkImageView target_view;
     VkExtent2D extent;
     uint64_t index;  // 0, 1, 2, ...
-    double time;     // seconds: index / 60 headless or with --frames (reproducible), else wall clock
-    uint32_t slot;   // which frame in flight, 0 .. frames_in_flight - 1
+    double time;    // seconds: index / 60 headless or with --frames (reproducible), else wall clock
+    uint32_t slot;  // which frame in flight, 0 .. frames_in_flight - 1
 };
 
 class Renderer {
