@@ -16,7 +16,13 @@ The build fails (exit status 1, one line per problem) when an included file or
 marker does not exist, when a marker in chapters/, common/ or shaders/ is
 opened and not closed (or closed and not opened, or opened twice), when such a
 marker is quoted by no page (a stale marker), and on a broken link between
-pages, a link to a file that does not exist, or an unknown code language.
+pages or to a heading, a link to a file that does not exist, or an unknown
+code language. A picture that does not exist (yet) is only a warning, shown
+as a placeholder, unless --strict is given.
+
+Links to repository files (`../chapters/04_triangle/main.cpp`) become pages of
+their own under DIR/src/, with line numbers; each include's caption links to
+the quoted lines there. Pictures are copied into DIR/images/.
 
 Needs only the standard library, python3-markdown and python3-pygments
 (Debian 12: markdown 3.4, pygments 2.14).
@@ -51,7 +57,7 @@ except ImportError as missing:  # pragma: no cover - depends on the machine
 MARKER_DIRS = ("chapters", "common", "shaders")
 MARKER_SUFFIXES = (".cpp", ".hpp", ".vert", ".frag", ".comp", ".glsl")
 
-MARKER_RE = re.compile(r"^//\s\[(/?)([A-Za-z0-9_-]+)\]$")
+MARKER_RE = re.compile(r"^// \[(/?)([A-Za-z0-9_-]+)\]$")
 # A comment line that is only a bracketed word but not exactly "// [name]":
 # almost certainly a mistyped marker, which would otherwise be ignored.
 NEAR_MARKER_RE = re.compile(r"^//\s*\[\s*/?\s*[A-Za-z0-9_-]+\s*\]\s*$")
@@ -259,8 +265,8 @@ def expand_page(root: Path, book: Path, page: Page, sources: Sources, problems: 
             continue
         match = INCLUDE_RE.match(line)
         if not match:
-            problems.append(f"{where}:{number}: malformed directive (want "
-                            "'{{{{#include ../path/file:marker}}}}'): {line.strip()}")
+            problems.append(f"{where}:{number}: malformed directive {line.strip()!r} "
+                            "(want '{{#include ../path/file:marker}}')")
             continue
         path_text, marker = match.groups()
         target = (book / path_text)
@@ -303,29 +309,36 @@ class Assets:
 
 def rewrite_links(root: Path, book: Path, page: Page, page_names: set[str], assets: Assets,
                   problems: list[str], warnings: list[str], anchors: list) -> None:
-    where = f"book/{page.md_name}"
+    source_lines = (book / page.md_name).read_text(encoding="utf-8").splitlines()
+
+    def at(target: str) -> str:
+        """book/page.md:N, N being the first line that mentions the target."""
+        for number, line in enumerate(source_lines, start=1):
+            if f"({target}" in line or f"<{target}>" in line or f'"{target}"' in line:
+                return f"book/{page.md_name}:{number}"
+        return f"book/{page.md_name}"
 
     def fix(match: re.Match) -> str:
         attr, value = match.group(1), html.unescape(match.group(2))
         if re.match(r"^[a-zA-Z][a-zA-Z0-9+.-]*:", value) or value.startswith("//"):
             return match.group(0)  # http:, https:, mailto: ... left alone
         if value.startswith("#"):
-            anchors.append((page.md_name, page.md_name, value[1:]))
+            anchors.append((at(value), page.md_name, value[1:]))
             return match.group(0)
         if value.startswith("src/") and value.split("#")[0].endswith(".html"):
             return match.group(0)  # an include caption, made above
         path_text, _, anchor = value.partition("#")
         if path_text in page_names:
             if anchor:
-                anchors.append((page.md_name, path_text, anchor))
+                anchors.append((at(value), path_text, anchor))
             new = path_text[:-3] + ".html" + (f"#{anchor}" if anchor else "")
             return f'{attr}="{html.escape(new)}"'
         if path_text.endswith(".md") and "/" not in path_text:
-            problems.append(f"{where}: link to {path_text}, which is not a page of the book")
+            problems.append(f"{at(path_text)}: link to {path_text}, which is not a page of the book")
             return match.group(0)
         target = book / path_text
         if not inside_root(root, target):
-            problems.append(f"{where}: link to {path_text}, outside the repository")
+            problems.append(f"{at(path_text)}: link to {path_text}, outside the repository")
             return match.group(0)
         rel = target.resolve().relative_to(root.resolve()).as_posix() if target.exists() else \
             os.path.normpath((Path("book") / path_text).as_posix())
@@ -334,18 +347,18 @@ def rewrite_links(root: Path, book: Path, page: Page, page_names: set[str], asse
             if target.is_file():
                 known = assets.images.get(name)
                 if known is not None and known.resolve() != target.resolve():
-                    problems.append(f"{where}: two different images are called {name}")
+                    problems.append(f"{at(path_text)}: two different images are called {name}")
                 assets.images[name] = target
             else:
                 # A reviewed picture may land after its page; say so and show a placeholder.
-                warnings.append(f"{where}: image {path_text} does not exist (yet)")
+                warnings.append(f"{at(path_text)}: image {path_text} does not exist (yet)")
                 assets.missing_images[name] = rel
             return f'{attr}="images/{html.escape(name)}"'
         if target.is_dir():
-            problems.append(f"{where}: link to the folder {path_text}; link a file instead")
+            problems.append(f"{at(path_text)}: link to the folder {path_text}; link a file instead")
             return match.group(0)
         if not target.is_file():
-            problems.append(f"{where}: link to {path_text}, which does not exist")
+            problems.append(f"{at(path_text)}: link to {path_text}, which does not exist")
             return match.group(0)
         assets.source_pages.add(rel)
         new = source_page_name(rel) + (f"#{anchor}" if anchor else "")
@@ -443,7 +456,7 @@ article img { display: block; margin: 0.5rem auto 1.25rem; border: 1px solid var
   image-rendering: auto; }
 .missing-image { display: block; padding: 2rem 1rem; margin: 0.5rem 0 1.25rem; text-align: center;
   border: 2px dashed var(--border); color: var(--muted); }
-:not(pre) > code { background: var(--code-background); padding: 0.1em 0.35em; border-radius: 4px;
+:not(pre) > code { background: var(--code-background); padding: 0.05em 0.25em; border-radius: 4px;
   overflow-wrap: anywhere; }
 pre { overflow-x: auto; padding: 0.85rem 1rem; background: var(--code-background);
   border: 1px solid var(--border); border-radius: 8px; line-height: 1.45; tab-size: 4; }
@@ -557,7 +570,7 @@ def render_source(root: Path, rel: str, pages: list[Page]) -> str:
         suffix = PurePosixPath(rel).suffix
         lexer = get_lexer_by_name("glsl", stripnl=False) if suffix in (".vert", ".frag", ".comp", ".glsl") \
             else TextLexer(stripnl=False)
-    formatter = HtmlFormatter(linenos="table", linespans="L", cssclass="highlight", wrapcode=True)
+    formatter = HtmlFormatter(linenos="inline", linespans="L", cssclass="highlight", wrapcode=True)
     # linespans gives each line <span id="L-N">; "L-N" is what captions link to.
     code = pygments.highlight(text, lexer, formatter)
     prefix = "../" * (rel.count("/") + 1)
@@ -575,7 +588,7 @@ def render_source(root: Path, rel: str, pages: list[Page]) -> str:
 # The build
 # --------------------------------------------------------------------------
 
-def build(root: Path, out: Path | None) -> tuple[list[str], list[str], int]:
+def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str], list[str], int]:
     problems: list[str] = []
     warnings: list[str] = []
     book = root / "book"
@@ -622,13 +635,15 @@ def build(root: Path, out: Path | None) -> tuple[list[str], list[str], int]:
         rewrite_links(root, book, page, page_names, assets, problems, warnings, anchors)
         page.body = missing_image_placeholders(page.body, assets.missing_images)
     by_name = {p.md_name: p for p in pages}
-    for origin, target, anchor in anchors:
+    for where, target, anchor in anchors:
         if anchor not in by_name[target].ids:
-            problems.append(f"book/{origin}: link to {target}#{anchor}, which has no such heading")
+            problems.append(f"{where}: link to {target}#{anchor}, which has no such heading")
 
-    for rel in sorted(assets.source_pages | {inc.rel for p in pages for inc in p.includes}):
-        assets.source_pages.add(rel)
+    assets.source_pages |= {inc.rel for p in pages for inc in p.includes}
 
+    if strict:
+        problems += warnings
+        warnings = []
     problems = list(dict.fromkeys(problems))  # keep the order, drop repeats
     if problems or out is None:
         return problems, warnings, 0
@@ -670,18 +685,19 @@ def main(argv: list[str]) -> int:
     args = parser.parse_args(argv)
 
     try:
-        problems, warnings, written = build(args.root.resolve(), None if args.check else args.out.resolve())
+        problems, warnings, written = build(args.root.resolve(),
+                                            None if args.check else args.out.resolve(), args.strict)
     except BookError as error:
         problems, warnings, written = [str(error)], [], 0
     except (OSError, UnicodeDecodeError) as error:
         problems, warnings, written = [f"cannot read or write a file: {error}"], [], 0
 
     for warning in warnings:
-        sys.stderr.write(f"build_book.py: {'error' if args.strict else 'warning'}: {warning}\n")
+        sys.stderr.write(f"build_book.py: warning: {warning}\n")
     for problem in problems:
         sys.stderr.write(f"build_book.py: error: {problem}\n")
-    if problems or (args.strict and warnings):
-        count = len(problems) + (len(warnings) if args.strict else 0)
+    if problems:
+        count = len(problems)
         sys.stderr.write(f"build_book.py: the book was not built ({count} problem{'s' if count != 1 else ''})\n")
         return 1
     if args.check:

@@ -61,6 +61,7 @@ std::string json_summary(const std::vector<double>& values) {
     return text;
 }
 
+// [frame-slot]
 // Per frame in flight: what the CPU records into while the GPU works on the other.
 struct FrameSlot {
     CommandPool pool;
@@ -69,6 +70,7 @@ struct FrameSlot {
     Semaphore image_acquired;  // signalled when the acquired swapchain image may be written
     bool timing_pending = false;
 };
+// [/frame-slot]
 
 class ChapterRun {
 public:
@@ -106,6 +108,7 @@ private:
 
 ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
     : options_(options), spec_(spec) {
+    // [choose-presentation]
     // Where the picture goes: a window if we can, else a headless surface, else
     // our own images only.
     if (options.offscreen) {
@@ -123,6 +126,7 @@ ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
         presentation_ = instance_extension_available(VK_EXT_HEADLESS_SURFACE_EXTENSION_NAME)
                             ? Presentation::headless_surface
                             : Presentation::offscreen;
+    // [/choose-presentation]
 
     std::vector<const char*> extensions;
     if (presentation_ == Presentation::window) extensions = Window::required_instance_extensions();
@@ -214,6 +218,7 @@ ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
                  instance_->validation() ? "on (with synchronisation)" : "off");
 }
 
+// [create-target]
 void ChapterRun::create_target(VkExtent2D extent) {
     VkFormat format =
         swapchain_ ? render_format_for(swapchain_->format()) : VK_FORMAT_R8G8B8A8_SRGB;
@@ -222,6 +227,7 @@ void ChapterRun::create_target(VkExtent2D extent) {
                                   VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                               VK_IMAGE_ASPECT_COLOR_BIT);
 }
+// [/create-target]
 
 void ChapterRun::run(const RendererFactory& factory) {
     renderer_ = factory(Context{
@@ -276,7 +282,7 @@ void ChapterRun::run(const RendererFactory& factory) {
     renderer_.reset();
 }
 
-// [draw-frame]
+// [wait-acquire]
 bool ChapterRun::draw_frame(uint64_t index, double time) {
     const uint32_t slot_index = uint32_t(index % frames_in_flight);
     FrameSlot& slot = slots_[slot_index];
@@ -298,11 +304,13 @@ bool ChapterRun::draw_frame(uint64_t index, double time) {
         check(result, "vkAcquireNextImageKHR");  // VK_SUBOPTIMAL_KHR still acquired an image
     }
     VKT_CHECK(vkResetFences(*device_, 1, &done));  // only now that we will submit
+    // [/wait-acquire]
 
     VKT_CHECK(vkResetCommandPool(*device_, slot.pool, 0));
     record(slot, image_index,
            Frame{slot.cmd, target_.image, target_.view, target_.extent, index, time, slot_index});
 
+    // [submit]
     // Submit: wait for the acquired image before copying into it, signal the
     // image's own ready_to_present semaphore, and the slot's fence for the CPU.
     VkSemaphoreSubmitInfo wait{
@@ -329,8 +337,10 @@ bool ChapterRun::draw_frame(uint64_t index, double time) {
         .pSignalSemaphoreInfos = &signal,
     };
     VKT_CHECK(vkQueueSubmit2(device_->queue(), 1, &submit, slot.done));
+    // [/submit]
     slot.timing_pending = bool(timestamps_);
 
+    // [present]
     if (swapchain_) {
         VkSwapchainKHR swapchain = swapchain_->get();
         VkSemaphore ready = swapchain_->ready_to_present(image_index);
@@ -349,9 +359,9 @@ bool ChapterRun::draw_frame(uint64_t index, double time) {
         else
             check(result, "vkQueuePresentKHR");
     }
+    // [/present]
     return true;
 }
-// [/draw-frame]
 
 void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& frame) {
     VkCommandBuffer cmd = slot.cmd;

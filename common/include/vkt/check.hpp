@@ -13,6 +13,7 @@ namespace vkt {
 // The symbolic name of a VkResult, e.g. "VK_ERROR_OUT_OF_DATE_KHR".
 const char* result_name(VkResult result);
 
+// [vulkan-error]
 // A Vulkan call returned an error. what() reads
 // "vkCreateDevice(...) failed with VK_ERROR_FEATURE_NOT_PRESENT at device.cpp:120".
 class VulkanError : public std::runtime_error {
@@ -30,8 +31,8 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Throws VulkanError unless result is VK_SUCCESS (or one of the extra codes the
-// caller says it handles, such as VK_SUBOPTIMAL_KHR).
+// Throws VulkanError for an error code (all are negative). Success codes,
+// including VK_SUBOPTIMAL_KHR and VK_INCOMPLETE, are returned to the caller.
 inline VkResult check(VkResult result, const char* call,
                       std::source_location where = std::source_location::current()) {
     if (result < 0) throw VulkanError(call, result, where);
@@ -42,3 +43,4 @@ inline VkResult check(VkResult result, const char* call,
 
 // VKT_CHECK(vkCreateFoo(...)) records the text of the call for the message.
 #define VKT_CHECK(call) ::vkt::check((call), #call)
+// [/vulkan-error]

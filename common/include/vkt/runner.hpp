@@ -33,6 +33,7 @@ struct Context {
     uint32_t frames_in_flight;
 };
 
+// [renderer-contract]
 struct Frame {
     VkCommandBuffer cmd;
     VkImage target;
@@ -50,6 +51,7 @@ public:
     // The colour target changed size (the window was resized); the GPU is idle.
     virtual void resize(VkExtent2D) {}
 };
+// [/renderer-contract]
 
 struct ChapterSpec {
     std::string name;   // "04_triangle"
