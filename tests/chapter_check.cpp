@@ -3,7 +3,7 @@
 //
 //   vkt_chapter_check --exe PATH --out DIR --name NAME [--golden PNG]
 //                     [--exit N] [--expect REGEX]... [--pixel X,Y,R,G,B]...
-//                     [--isolate] -- ARGS...
+//                     [--isolate DIR] -- ARGS...
 //
 // It runs PATH ARGS (with --screenshot DIR/NAME.png added when --golden is
 // given), keeps its stdout and stderr in DIR/NAME.stdout / .stderr, and fails
@@ -13,7 +13,9 @@
 // image, and every --pixel of the screenshot has that colour (within 1). A
 // failed comparison leaves NAME.png (rendered) and NAME.diff.png.
 // With VKT_BLESS=1 in the environment the screenshot replaces the golden image.
-// --isolate runs a copy of the executable in DIR, away from its shaders.
+// --isolate DIR runs a copy of the executable from DIR/bin, so that it finds
+// DIR/shaders (prepared by the test: empty, or holding corrupt SPIR-V) instead
+// of the build's.
 
 #include "vkt/image_io.hpp"
 
@@ -75,7 +77,7 @@ int main(int argc, char** argv) {
     fs::path exe, out_dir, golden;
     std::string name;
     int expected_exit = 0;
-    bool isolate = false;
+    fs::path isolate;
     std::vector<std::string> expects, pixels, chapter_args;
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
@@ -98,7 +100,7 @@ int main(int argc, char** argv) {
         else if (arg == "--pixel")
             pixels.push_back(next());
         else if (arg == "--isolate")
-            isolate = true;
+            isolate = next();
         else if (arg == "--") {
             chapter_args.assign(argv + i + 1, argv + argc);
             break;
@@ -109,11 +111,11 @@ int main(int argc, char** argv) {
         return fail("--exe, --out and --name are required");
     fs::create_directories(out_dir);
 
-    if (isolate) {  // a copy of the executable with no shaders/ beside it
-        fs::path lonely = out_dir / (name + ".isolated") / "bin";
-        fs::create_directories(lonely);
-        fs::copy_file(exe, lonely / exe.filename(), fs::copy_options::overwrite_existing);
-        exe = lonely / exe.filename();
+    if (!isolate.empty()) {
+        const fs::path bin = isolate / "bin";
+        fs::create_directories(bin);
+        fs::copy_file(exe, bin / exe.filename(), fs::copy_options::overwrite_existing);
+        exe = bin / exe.filename();
     }
 
     const fs::path screenshot = out_dir / (name + ".png");

@@ -10,6 +10,7 @@
 #include "vkt/runner.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdio>
 #include <string>
@@ -134,8 +135,13 @@ const Candidate& choose(const std::vector<Candidate>& candidates, const std::str
                                  std::to_string(candidates.size()) + " device(s), numbered from 0");
             chosen = &candidates[index];
         } else {
+            // Names are matched without regard to case: "h100" finds "NVIDIA H100".
+            auto lower = [](std::string text) {
+                for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
+                return text;
+            };
             for (const auto& candidate : candidates)
-                if (!chosen && candidate.name.find(selector) != std::string::npos)
+                if (!chosen && lower(candidate.name).find(lower(selector)) != std::string::npos)
                     chosen = &candidate;
             if (!chosen)
                 throw vkt::Error("--device " + selector + ": no device has that in its name");

@@ -10,17 +10,21 @@
 #include "vkt/owned.hpp"
 #include "vkt/runner.hpp"
 
+#include <cstring>
+
 namespace {
 
 // [shader-module]
 // A shader module wraps SPIR-V words. The file is read whole; SPIR-V is a
-// stream of 32-bit words, so its size must be a multiple of four.
+// stream of 32-bit words that starts with the magic number 0x07230203. We
+// check both: a driver handed anything else may crash rather than fail.
 vkt::ShaderModule load_shader(VkDevice device, const std::string& chapter, const char* name) {
     const auto path = vkt::shader_path(chapter, name);
     std::vector<char> code = vkt::read_file(path);
-    if (code.size() % 4 != 0 || code.empty())
-        throw vkt::Error(path.string() + " is not SPIR-V (size " + std::to_string(code.size()) +
-                         ")");
+    uint32_t magic = 0;
+    if (code.size() >= 4) std::memcpy(&magic, code.data(), 4);
+    if (code.size() % 4 != 0 || magic != 0x07230203)
+        throw vkt::Error(path.string() + " is not SPIR-V (rebuild the chapter's shaders)");
     VkShaderModuleCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
         .codeSize = code.size(),

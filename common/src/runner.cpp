@@ -36,7 +36,9 @@ const char* presentation_name(Presentation p) {
 }
 
 bool has_display() {
-    return std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY");
+    for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY"})
+        if (const char* value = std::getenv(name); value && *value) return true;
+    return false;
 }
 
 std::string program_name(char** argv) {
