@@ -126,10 +126,10 @@ const Candidate& choose(const std::vector<Candidate>& candidates, const std::str
         throw vkt::Error("no Vulkan device found: is a Vulkan driver installed?");
     const Candidate* chosen = nullptr;
     if (!selector.empty()) {
-        size_t index = 0;
-        auto [end, error] =
+        // All digits: an index (too large to parse is still an index); else a name.
+        if (std::all_of(selector.begin(), selector.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+            size_t index = SIZE_MAX;
             std::from_chars(selector.data(), selector.data() + selector.size(), index);
-        if (error == std::errc{} && end == selector.data() + selector.size()) {
             if (index >= candidates.size())
                 throw vkt::Error("--device " + selector + ": there are only " +
                                  std::to_string(candidates.size()) + " device(s), numbered from 0");

@@ -79,7 +79,9 @@ Options parse_args(std::span<const char* const> args, Flags flags) {
             auto w = x == std::string_view::npos ? std::nullopt : parse_positive(text.substr(0, x));
             auto h =
                 x == std::string_view::npos ? std::nullopt : parse_positive(text.substr(x + 1));
-            constexpr uint32_t max_side = 16384;  // the smallest maxImageDimension2D we accept
+            // An upper bound for any device; the runner also checks the chosen device's
+            // maxImageDimension2D, which may be as small as 4096.
+            constexpr uint32_t max_side = 16384;
             if (!w || !h || *w > max_side || *h > max_side)
                 throw UsageError("--size wants WIDTHxHEIGHT, each 1.." + std::to_string(max_side) +
                                  ", not '" + std::string(text) + "'");
@@ -87,7 +89,9 @@ Options parse_args(std::span<const char* const> args, Flags flags) {
             options.height = *h;
         } else if (flag == "--screenshot") {
             std::string_view text = value();
-            if (text.empty()) throw UsageError("--screenshot wants a file name");
+            if (!text.ends_with(".png") || text.size() == 4)
+                throw UsageError("--screenshot writes a PNG: give a file name ending in .png, not '" +
+                                 std::string(text) + "'");
             options.screenshot = text;
         } else if (flag == "--device") {
             std::string_view text = value();

@@ -7,6 +7,27 @@
 
 namespace vkt {
 
+int device_score(const DeviceCandidate& candidate) {
+    return 1000 * device_type_score(candidate.type) + int(candidate.max_image_dimension / 1024);
+}
+
+static bool has_device_extension(VkPhysicalDevice device, const char* name) {
+    uint32_t count = 0;
+    VKT_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr));
+    std::vector<VkExtensionProperties> available(count);
+    VKT_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, available.data()));
+    return std::any_of(available.begin(), available.end(),
+                       [&](const auto& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
+bool can_present(VkPhysicalDevice device, uint32_t queue_family, VkSurfaceKHR surface) {
+    if (!has_device_extension(device, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) return false;
+    VkBool32 supported = VK_FALSE;
+    return vkGetPhysicalDeviceSurfaceSupportKHR(device, queue_family, surface, &supported) ==
+               VK_SUCCESS &&
+           supported;
+}
+
 int device_type_score(VkPhysicalDeviceType type) {
     switch (type) {
         case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
@@ -39,26 +60,17 @@ static std::string why_unsuitable(VkPhysicalDevice device, VkSurfaceKHR surface,
     if (!features13.dynamicRendering) return "lacks the dynamicRendering feature";
     if (!features13.synchronization2) return "lacks the synchronization2 feature";
 
-    uint32_t count = 0;
-    VKT_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr));
-    std::vector<VkExtensionProperties> available(count);
-    VKT_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, available.data()));
-    for (const char* wanted : requirements.extensions) {
-        bool found = std::any_of(available.begin(), available.end(), [&](const auto& e) {
-            return std::strcmp(e.extensionName, wanted) == 0;
-        });
-        if (!found) return std::string("lacks the extension ") + wanted;
-    }
+    for (const char* wanted : requirements.extensions)
+        if (!has_device_extension(device, wanted)) return std::string("lacks the extension ") + wanted;
 
+    uint32_t count = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
     std::vector<VkQueueFamilyProperties> families(count);
     vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
     for (uint32_t i = 0; i < count; ++i) {
         const VkQueueFlags wanted = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
         if ((families[i].queueFlags & wanted) != wanted) continue;
-        VkBool32 present = VK_TRUE;
-        if (surface) VKT_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(device, i, surface, &present));
-        if (!present) continue;
+        if (surface && !can_present(device, i, surface)) continue;
         family_out = i;
         return {};
     }
@@ -83,6 +95,7 @@ std::vector<DeviceCandidate> survey_devices(VkInstance instance, VkSurfaceKHR su
             .name = properties.deviceName,
             .type = properties.deviceType,
             .api_version = properties.apiVersion,
+            .max_image_dimension = properties.limits.maxImageDimension2D,
         };
         candidate.unsuitable =
             why_unsuitable(devices[i], surface, requirements, candidate.queue_family);
@@ -106,10 +119,11 @@ const DeviceCandidate& choose_device(std::span<const DeviceCandidate> candidates
 
     if (!selector.empty()) {
         const DeviceCandidate* named = nullptr;
-        uint32_t index = 0;
-        auto [end, error] =
+        // All digits: an index (however large); anything else: part of a name.
+        if (std::all_of(selector.begin(), selector.end(),
+                        [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+            uint64_t index = UINT64_MAX;
             std::from_chars(selector.data(), selector.data() + selector.size(), index);
-        if (error == std::errc{} && end == selector.data() + selector.size()) {
             if (index >= candidates.size())
                 throw Error("--device " + std::string(selector) + ": there are only " +
                             std::to_string(candidates.size()) + " device(s), numbered from 0");
@@ -133,7 +147,7 @@ const DeviceCandidate& choose_device(std::span<const DeviceCandidate> candidates
     const DeviceCandidate* best = nullptr;
     for (const auto& candidate : candidates)
         if (candidate.unsuitable.empty() &&
-            (!best || device_type_score(candidate.type) > device_type_score(best->type)))
+            (!best || device_score(candidate) > device_score(*best)))
             best = &candidate;
     if (!best) {
         std::string reasons;

@@ -6,6 +6,8 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -18,7 +20,7 @@ void write_png(const std::filesystem::path& path, const RgbaImage& image) {
                     std::to_string(image.height));
     if (!stbi_write_png(path.c_str(), static_cast<int>(image.width), static_cast<int>(image.height),
                         4, image.pixels.data(), static_cast<int>(image.width * 4)))
-        throw Error("cannot write " + path.string());
+        throw Error("cannot write " + path.string() + ": " + std::strerror(errno));
 }
 
 RgbaImage read_png(const std::filesystem::path& path) {

@@ -2,6 +2,9 @@
 
 #include "vkt/check.hpp"
 
+#include <cstdio>
+#include <string>
+
 namespace vkt {
 
 uint32_t find_memory_type(VkPhysicalDevice physical, uint32_t type_bits,
@@ -11,7 +14,9 @@ uint32_t find_memory_type(VkPhysicalDevice physical, uint32_t type_bits,
     for (uint32_t i = 0; i < memory.memoryTypeCount; ++i)
         if ((type_bits & (1u << i)) && (memory.memoryTypes[i].propertyFlags & wanted) == wanted)
             return i;
-    throw Error("no memory type has the properties 0x" + std::to_string(wanted));
+    char flags[16];
+    std::snprintf(flags, sizeof flags, "0x%x", wanted);
+    throw Error(std::string("no memory type has the properties ") + flags);
 }
 
 // One allocation for one buffer or image: fine for the handful the runner and

@@ -4,15 +4,19 @@
 #include "vkt/image_io.hpp"
 #include "vkt/instance.hpp"
 #include "vkt/memory.hpp"
+#include "vkt/readback.hpp"
 #include "vkt/stats.hpp"
 #include "vkt/swapchain.hpp"
 #include "vkt/window.hpp"
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace vkt {
@@ -71,6 +75,7 @@ struct FrameSlot {
     Fence done;                // signalled when the GPU finished this slot's last frame
     Semaphore image_acquired;  // signalled when the acquired swapchain image may be written
     bool timing_pending = false;
+    Readback readback;  // with --screenshot: what this slot's frame presented
 };
 // [/frame-slot]
 
@@ -106,10 +111,23 @@ private:
     uint64_t timestamp_mask_ = 0;
     std::unique_ptr<Renderer> renderer_;
     std::vector<double> cpu_ms_, gpu_ms_;
+    std::optional<uint32_t> last_slot_;  // the slot of the last frame submitted
 };
+
+// Fails early, with the reason, if the screenshot could not be written: better
+// than finding out after a long run. Leaves no file behind.
+void check_writable(const std::string& path) {
+    const bool existed = std::filesystem::exists(path);
+    std::FILE* file = std::fopen(path.c_str(), "ab");
+    if (!file) throw Error("cannot write " + path + ": " + std::strerror(errno));
+    std::fclose(file);
+    if (!existed) std::filesystem::remove(path);
+}
 
 ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
     : options_(options), spec_(spec) {
+    if (!options.screenshot.empty()) check_writable(options.screenshot);
+
     // [choose-presentation]
     // Where the picture goes: a window if we can, else a headless surface, else
     // our own images only.
@@ -158,16 +176,38 @@ ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
         surface_ = SurfaceHandle(*instance_, surface);
     }
 
+    // A window needs a device that can present to it. Headless, the device is
+    // chosen on its own merits; if it cannot present to the headless surface
+    // (another driver may have provided that), it renders offscreen instead.
     DeviceRequirements requirements = spec.requirements;
-    if (surface_) requirements.extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
-    auto candidates = survey_devices(*instance_, surface_, requirements);
-    device_ = std::make_unique<Device>(choose_device(candidates, options.device), requirements);
+    if (window_) requirements.extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    const auto candidates = survey_devices(*instance_, window_ ? surface_.get() : VK_NULL_HANDLE, requirements);
+    const DeviceCandidate& chosen = choose_device(candidates, options.device);
+    if (presentation_ == Presentation::headless_surface) {
+        if (can_present(chosen.handle, chosen.queue_family, surface_)) {
+            requirements.extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+        } else {
+            surface_.reset();
+            presentation_ = Presentation::offscreen;
+        }
+    }
+    device_ = std::make_unique<Device>(chosen, requirements);
+
+    const uint32_t largest = device_->properties().limits.maxImageDimension2D;
+    if (options.width > largest || options.height > largest)
+        throw Error("--size " + std::to_string(options.width) + "x" +
+                    std::to_string(options.height) + ": this device's images are at most " +
+                    std::to_string(largest) + "x" + std::to_string(largest));
 
     VkExtent2D extent{options.width, options.height};
     if (surface_) {
         if (window_) extent = window_->framebuffer_size();
-        swapchain_ = std::make_unique<Swapchain>(device_->physical(), *device_, surface_, extent,
-                                                 options.benchmark, VK_NULL_HANDLE);
+        swapchain_ = std::make_unique<Swapchain>(
+            device_->physical(), *device_, surface_,
+            SwapchainRequest{.extent = extent,
+                             .uncapped = options.benchmark,
+                             .readable = !options.screenshot.empty()},
+            VK_NULL_HANDLE);
         extent = swapchain_->extent();
     }
     create_target(extent);
@@ -269,7 +309,7 @@ void ChapterRun::run(const RendererFactory& factory) {
 
     VKT_CHECK(vkDeviceWaitIdle(*device_));
     for (uint32_t i = 0; i < frames_in_flight; ++i) collect_gpu_time(slots_[i], i);
-    if (!options_.screenshot.empty() && !cpu_ms_.empty()) save_screenshot(options_.screenshot);
+    if (!options_.screenshot.empty() && last_slot_) save_screenshot(options_.screenshot);
 
     if (options_.benchmark) {
         std::printf(
@@ -341,6 +381,7 @@ bool ChapterRun::draw_frame(uint64_t index, double time) {
     VKT_CHECK(vkQueueSubmit2(device_->queue(), 1, &submit, slot.done));
     // [/submit]
     slot.timing_pending = bool(timestamps_);
+    last_slot_ = slot_index;
 
     // [present]
     if (swapchain_) {
@@ -355,11 +396,10 @@ bool ChapterRun::draw_frame(uint64_t index, double time) {
             .pImageIndices = &image_index,
         };
         VkResult result = vkQueuePresentKHR(device_->queue(), &present);
+        if (result != VK_ERROR_OUT_OF_DATE_KHR) check(result, "vkQueuePresentKHR");
         const bool resized = window_ && window_->take_resized();
         if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR || resized)
             recreate_swapchain();  // this frame was still drawn
-        else
-            check(result, "vkQueuePresentKHR");
     }
     // [/present]
     return true;
@@ -388,6 +428,11 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
 
     renderer_->record(frame);  // the chapter draws
 
+    // GPU time ends here: the copy below waits for the presentation engine,
+    // which is not the chapter's cost.
+    if (timestamps_)
+        vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps_, query + 1);
+
     // The chapter's writes must be finished and visible before we copy.
     image_barrier(cmd, target_.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                   VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
@@ -395,6 +440,10 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                   VK_ACCESS_2_TRANSFER_READ_BIT);
 
+    // --screenshot reads back what each frame presents: the swapchain image
+    // after the copy where the surface lets us read it, else our target.
+    const bool screenshot = !options_.screenshot.empty();
+    const bool read_swapchain = screenshot && swapchain_ && swapchain_->readable();
     if (swapchain_) {
         // The swapchain image: after the acquire semaphore (waited for at the
         // COPY stage), make it a copy destination, copy, then hand it to present.
@@ -409,14 +458,26 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
         };
         vkCmdCopyImage(cmd, target_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        image_barrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                      VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_2_COPY_BIT,
-                      VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE);
+        VkImageLayout layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+        VkAccessFlags2 access = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        if (read_swapchain) {
+            image_barrier(cmd, image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                          VK_PIPELINE_STAGE_2_COPY_BIT, access, VK_PIPELINE_STAGE_2_COPY_BIT,
+                          VK_ACCESS_2_TRANSFER_READ_BIT);
+            record_readback(device_->physical(), *device_, cmd, image, swapchain_->format(),
+                            frame.extent, slot.readback);
+            layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+            access = VK_ACCESS_2_NONE;  // after a read, ordering is all we need
+        }
+        image_barrier(cmd, image, layout, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                      VK_PIPELINE_STAGE_2_COPY_BIT, access, VK_PIPELINE_STAGE_2_NONE,
+                      VK_ACCESS_2_NONE);
     }
     // [/frame-barriers]
+    if (screenshot && !read_swapchain)
+        record_readback(device_->physical(), *device_, cmd, target_.image, target_.format,
+                        frame.extent, slot.readback);
 
-    if (timestamps_)
-        vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps_, query + 1);
     VKT_CHECK(vkEndCommandBuffer(cmd));
 }
 
@@ -428,10 +489,18 @@ void ChapterRun::recreate_swapchain() {
     }
     // Simple and safe: let the GPU finish everything that uses the old images.
     VKT_CHECK(vkDeviceWaitIdle(*device_));
-    VkExtent2D wanted = window_ ? window_->framebuffer_size() : target_.extent;
-    auto next = std::make_unique<Swapchain>(device_->physical(), *device_, surface_, wanted,
-                                            options_.benchmark, swapchain_->get());
+    auto next = std::make_unique<Swapchain>(
+        device_->physical(), *device_, surface_,
+        SwapchainRequest{.extent = window_ ? window_->framebuffer_size() : target_.extent,
+                         .uncapped = options_.benchmark,
+                         .readable = !options_.screenshot.empty(),
+                         .keep = swapchain_->format()},
+        swapchain_->get());
     swapchain_ = std::move(next);  // the old swapchain is destroyed after the new one exists
+    // The chapter's pipelines were made for our target's format; it must not change.
+    if (render_format_for(swapchain_->format()) != target_.format)
+        throw Error(std::string("the surface no longer offers a format with the byte order of ") +
+                    format_name(target_.format));
     VkExtent2D extent = swapchain_->extent();
     std::fprintf(stderr, "%s: swapchain recreated at %ux%u\n", spec_.name.c_str(), extent.width,
                  extent.height);
@@ -454,76 +523,12 @@ void ChapterRun::collect_gpu_time(FrameSlot& slot, uint32_t slot_index) {
 }
 
 void ChapterRun::save_screenshot(const std::string& path) {
-    const VkExtent2D extent = target_.extent;
-    Buffer readback =
-        create_buffer(device_->physical(), *device_, VkDeviceSize{extent.width} * extent.height * 4,
-                      VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-    CommandPool pool = create_command_pool(*device_, device_->queue_family(),
-                                           VK_COMMAND_POOL_CREATE_TRANSIENT_BIT);
-    VkCommandBufferAllocateInfo allocate{
-        .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
-        .commandPool = pool,
-        .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
-        .commandBufferCount = 1,
-    };
-    VkCommandBuffer cmd;
-    VKT_CHECK(vkAllocateCommandBuffers(*device_, &allocate, &cmd));
-    VkCommandBufferBeginInfo begin{
-        .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
-        .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT,
-    };
-    VKT_CHECK(vkBeginCommandBuffer(cmd, &begin));
-    // The last frame left the target in TRANSFER_SRC_OPTIMAL, ready to be read.
-    VkBufferImageCopy region{
-        .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-        .imageExtent = {extent.width, extent.height, 1},
-    };
-    vkCmdCopyImageToBuffer(cmd, target_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           readback.buffer, 1, &region);
-    VkBufferMemoryBarrier2 to_host{
-        .sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2,
-        .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
-        .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
-        .dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT,
-        .dstAccessMask = VK_ACCESS_2_HOST_READ_BIT,
-        .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-        .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-        .buffer = readback.buffer,
-        .size = VK_WHOLE_SIZE,
-    };
-    VkDependencyInfo dependency{
-        .sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
-        .bufferMemoryBarrierCount = 1,
-        .pBufferMemoryBarriers = &to_host,
-    };
-    vkCmdPipelineBarrier2(cmd, &dependency);
-    VKT_CHECK(vkEndCommandBuffer(cmd));
-
-    Fence fence = create_fence(*device_, false);
-    VkCommandBufferSubmitInfo command{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO,
-                                      .commandBuffer = cmd};
-    VkSubmitInfo2 submit{
-        .sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
-        .commandBufferInfoCount = 1,
-        .pCommandBufferInfos = &command,
-    };
-    VKT_CHECK(vkQueueSubmit2(device_->queue(), 1, &submit, fence));
-    VkFence wait_for = fence;
-    VKT_CHECK(vkWaitForFences(*device_, 1, &wait_for, VK_TRUE, UINT64_MAX));
-
-    RgbaImage image{extent.width, extent.height, std::vector<uint8_t>(readback.size)};
-    const auto* bytes = static_cast<const uint8_t*>(readback.mapped);
-    const bool bgra = target_.format == VK_FORMAT_B8G8R8A8_SRGB;
-    for (size_t i = 0; i < image.pixels.size(); i += 4) {
-        image.pixels[i + 0] = bytes[i + (bgra ? 2 : 0)];
-        image.pixels[i + 1] = bytes[i + 1];
-        image.pixels[i + 2] = bytes[i + (bgra ? 0 : 2)];
-        image.pixels[i + 3] = 255;  // the screen shows no alpha, so neither does the file
-    }
-    write_png(path, image);
-    std::fprintf(stderr, "%s: wrote %s (%ux%u)\n", spec_.name.c_str(), path.c_str(), extent.width,
-                 extent.height);
+    // The last frame's slot holds what that frame presented (see record); the
+    // GPU is idle, and the barrier to the HOST stage made the bytes visible.
+    const Readback& readback = slots_[*last_slot_].readback;
+    write_png(path, to_rgba(readback.buffer.mapped, readback.extent, readback.format));
+    std::fprintf(stderr, "%s: wrote %s (%ux%u)\n", spec_.name.c_str(), path.c_str(),
+                 readback.extent.width, readback.extent.height);
 }
 
 // Turns the body's outcome into an exit status: usage errors 2, failures 1.

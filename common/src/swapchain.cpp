@@ -7,11 +7,12 @@
 namespace vkt {
 
 // [choose-format]
-VkSurfaceFormatKHR choose_surface_format(std::span<const VkSurfaceFormatKHR> available) {
-    // An _SRGB swapchain format encodes our linear colours for the display.
-    // Headless surfaces offer only _UNORM; then we encode them ourselves by
-    // rendering into an _SRGB image of our own (see render_format_for).
-    const VkFormat preferred[] = {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB,
+VkSurfaceFormatKHR choose_surface_format(std::span<const VkSurfaceFormatKHR> available,
+                                         VkFormat keep) {
+    // Any of these will do: we always render into an _SRGB image of our own
+    // (see render_format_for) and copy its bytes into the swapchain image.
+    // Headless surfaces offer only _UNORM formats.
+    const VkFormat preferred[] = {keep, VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB,
                                   VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM};
     for (VkFormat format : preferred)
         for (const auto& candidate : available)
@@ -58,7 +59,7 @@ uint32_t choose_image_count(const VkSurfaceCapabilitiesKHR& capabilities) {
 }
 
 Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR surface,
-                     VkExtent2D wanted, bool uncapped, VkSwapchainKHR old_swapchain) {
+                     const SwapchainRequest& request, VkSwapchainKHR old_swapchain) {
     // [create-swapchain]
     VkSurfaceCapabilitiesKHR capabilities;
     VKT_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(physical, surface, &capabilities));
@@ -75,9 +76,11 @@ Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR su
     if (!(capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
         throw Error("the surface's images cannot be copied into (no TRANSFER_DST usage)");
 
-    format_ = choose_surface_format(formats);
-    extent_ = choose_extent(capabilities, wanted);
-    present_mode_ = choose_present_mode(modes, uncapped);
+    format_ = choose_surface_format(formats, request.keep);
+    extent_ = choose_extent(capabilities, request.extent);
+    present_mode_ = choose_present_mode(modes, request.uncapped);
+    // --screenshot reads back the image we present, where the surface allows it.
+    readable_ = request.readable && (capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
 
     VkSwapchainCreateInfoKHR info{
         .sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR,
@@ -87,7 +90,8 @@ Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR su
         .imageColorSpace = format_.colorSpace,
         .imageExtent = extent_,
         .imageArrayLayers = 1,
-        .imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+        .imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                      (readable_ ? VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_SRC_BIT} : VkImageUsageFlags{0}),
         .imageSharingMode = VK_SHARING_MODE_EXCLUSIVE,  // one queue draws and presents
         .preTransform = capabilities.currentTransform,
         .compositeAlpha = (capabilities.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)

@@ -69,6 +69,8 @@ TEST_CASE("malformed values are usage errors", "[args]") {
     CHECK_THROWS_AS(parse({"--size", "-640x480"}), UsageError);
     CHECK_THROWS_AS(parse({"--size", "20000x20"}), UsageError);
     CHECK_THROWS_AS(parse({"--screenshot", ""}), UsageError);
+    CHECK_THROWS_AS(parse({"--screenshot", "shot.jpg"}), UsageError);
+    CHECK_THROWS_AS(parse({"--screenshot", ".png"}), UsageError);
     CHECK_THROWS_AS(parse({"--device="}), UsageError);
     CHECK_THROWS_AS(parse({"--headless=yes"}), UsageError);
 }

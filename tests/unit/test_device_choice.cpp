@@ -26,6 +26,20 @@ TEST_CASE("device types rank discrete > integrated > virtual > CPU > other", "[d
           vkt::device_type_score(VK_PHYSICAL_DEVICE_TYPE_OTHER));
 }
 
+TEST_CASE("the score ranks by type, then by the largest image size", "[device]") {
+    DeviceCandidate small = candidate(0, "a", VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU);
+    DeviceCandidate big = candidate(1, "b", VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU);
+    DeviceCandidate cpu = candidate(2, "c", VK_PHYSICAL_DEVICE_TYPE_CPU);
+    small.max_image_dimension = 16384;
+    big.max_image_dimension = 32768;
+    cpu.max_image_dimension = 1 << 20;
+    CHECK(vkt::device_score(small) == 4016);  // as chapter 02 prints it
+    CHECK(vkt::device_score(big) > vkt::device_score(small));
+    CHECK(vkt::device_score(small) > vkt::device_score(cpu));
+    std::vector<DeviceCandidate> devices{small, big};
+    CHECK(vkt::choose_device(devices, "").name == "b");
+}
+
 TEST_CASE("without --device the best suitable device wins", "[device]") {
     std::vector<DeviceCandidate> devices{
         candidate(0, "llvmpipe", VK_PHYSICAL_DEVICE_TYPE_CPU),
@@ -66,6 +80,8 @@ TEST_CASE("impossible choices explain themselves", "[device]") {
     CHECK(message("3") == "--device 3: there are only 1 device(s), numbered from 0");
     CHECK(message("radeon") == "--device radeon: no device has that in its name");
     CHECK(message("-1") == "--device -1: no device has that in its name");
+    CHECK(message("99999999999999999999") ==
+          "--device 99999999999999999999: there are only 1 device(s), numbered from 0");
     std::vector<DeviceCandidate> none;
     CHECK_THROWS_AS(vkt::choose_device(none, ""), vkt::Error);
 }

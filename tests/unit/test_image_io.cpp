@@ -65,6 +65,30 @@ TEST_CASE("differences are measured over RGB, not alpha", "[image]") {
     CHECK_FALSE(vkt::within(d, {}));
 }
 
+TEST_CASE("each half of the tolerance fails a picture on its own", "[image]") {
+    const RgbaImage a = solid(100, 100, 50, 50, 50);
+    // 25 pixels (0.25%) off by 30 in red: RMSE sqrt(25 * 900 / 30000) = 0.87,
+    // under 2.0, but too many pixels beyond the threshold.
+    RgbaImage few = a;
+    for (int x = 0; x < 25; ++x) few.pixels[size_t(x) * 4] = 80;
+    auto d = vkt::compare_images(a, few, 24);
+    CHECK(d.rmse == Catch::Approx(0.866).epsilon(1e-3));
+    CHECK(d.fraction_over_threshold == Catch::Approx(0.0025));
+    CHECK_FALSE(vkt::within(d, {}));
+    // 15 such pixels (0.15%) pass.
+    RgbaImage fewer = a;
+    for (int x = 0; x < 15; ++x) fewer.pixels[size_t(x) * 4] = 80;
+    CHECK(vkt::within(vkt::compare_images(a, fewer, 24), {}));
+    // Every channel off by 3: no pixel beyond the threshold, but RMSE 3.0.
+    RgbaImage tinted = a;
+    for (size_t i = 0; i < tinted.pixels.size(); ++i)
+        if (i % 4 != 3) tinted.pixels[i] = 53;
+    d = vkt::compare_images(a, tinted, 24);
+    CHECK(d.pixels_over_threshold == 0);
+    CHECK(d.rmse == Catch::Approx(3.0));
+    CHECK_FALSE(vkt::within(d, {}));
+}
+
 TEST_CASE("the tolerance lets rounding through and catches a wrong pixel block", "[image]") {
     RgbaImage a = solid(100, 100, 50, 50, 50), b = a;
     for (auto& p : b.pixels) p = uint8_t(p + 1);  // everything off by one: rounding

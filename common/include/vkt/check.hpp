@@ -14,8 +14,9 @@ namespace vkt {
 const char* result_name(VkResult result);
 
 // [vulkan-error]
-// A Vulkan call returned an error. what() reads
-// "vkCreateDevice(...) failed with VK_ERROR_FEATURE_NOT_PRESENT at device.cpp:120".
+// A Vulkan call returned an error. what() names the call (without its
+// arguments), the result by name and number, and the source file and line:
+// "vkCreateDevice failed with VK_ERROR_FEATURE_NOT_PRESENT (-8) at device.cpp:175".
 class VulkanError : public std::runtime_error {
 public:
     VulkanError(const char* call, VkResult result, std::source_location where);

@@ -23,12 +23,20 @@ struct DeviceCandidate {
     std::string name;
     VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
     uint32_t api_version = 0;
+    uint32_t max_image_dimension = 0;  // limits.maxImageDimension2D: the tie-break
     uint32_t queue_family = 0;  // graphics + compute (+ present, with a surface)
     std::string unsuitable;     // empty when the device can run the chapter
 };
 
 // Discrete GPUs first, then integrated, virtual, and software rasterisers last.
 int device_type_score(VkPhysicalDeviceType type);
+// The score chapter 02 prints: the type first, then the largest image size.
+int device_score(const DeviceCandidate& candidate);
+
+// Whether the device has VK_KHR_swapchain and its queue family can present to
+// the surface. A query that fails (some loaders answer a surface of an
+// extension the driver lacks with an error) counts as "no".
+bool can_present(VkPhysicalDevice device, uint32_t queue_family, VkSurfaceKHR surface);
 
 // Everything vkEnumeratePhysicalDevices reports, each with its verdict.
 // surface may be VK_NULL_HANDLE (offscreen: no present support needed).

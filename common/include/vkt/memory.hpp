@@ -24,9 +24,23 @@ Buffer create_buffer(VkPhysicalDevice physical, VkDevice device, VkDeviceSize si
 struct Image {
     ImageHandle image;
     DeviceMemory memory;
-    ImageView view;
+    ImageView view;  // declared last, so destroyed first
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkExtent2D extent{};
+
+    Image() = default;
+    Image(Image&&) = default;
+    // Replacing an image (a resized target) destroys the old view before the
+    // old image, as the destructor does; the default would go member by member.
+    Image& operator=(Image&& other) noexcept {
+        view.reset();
+        image = std::move(other.image);
+        memory = std::move(other.memory);
+        view = std::move(other.view);
+        format = other.format;
+        extent = other.extent;
+        return *this;
+    }
 };
 
 // A 2D image in device-local memory, one mip level, one layer, with a view.

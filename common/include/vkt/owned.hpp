@@ -1,11 +1,13 @@
 #pragma once
 // Move-only owners for Vulkan handles. Taught in chapter 01 (every vkCreate has
 // its vkDestroy, in reverse order): an owner destroys its handle exactly once,
-// when it goes out of scope, and C++ destroys members in reverse order of
-// declaration, which is the order Vulkan wants.
+// when it goes out of scope. C++ destroys members in reverse order of
+// declaration, so declaring parents before children gives the order Vulkan
+// wants (move assignment goes in declaration order; see vkt::Image).
 
 #include <vulkan/vulkan.h>
 
+#include <cstdint>
 #include <utility>
 
 namespace vkt {

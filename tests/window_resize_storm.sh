@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Resize storm, run under xvfb-run by CTest: a fixed-length windowed run of a
+# chapter while xdotool resizes its window as fast as it can, so that resizes
+# land on any frame, the last one included. The run must end by itself with
+# exit status 0, a clean validation report, and a screenshot of one of the
+# sizes the window had.
+#   window_resize_storm.sh CHAPTER_EXE OUT_DIR TITLE FRAMES
+set -u
+exe=$1 out=$2 title=$3 frames=$4
+mkdir -p "$out"
+name=$(basename "$exe")
+shot="$out/$name.storm.png" err="$out/$name.storm.stderr"
+rm -f "$shot"
+"$exe" --validation --frames "$frames" --size 320x240 --screenshot "$shot" >/dev/null 2>"$err" &
+pid=$!
+window=
+for _ in $(seq 100); do
+  window=$(xdotool search --name "$title" 2>/dev/null | head -n 1)
+  [ -n "$window" ] && break
+  sleep 0.05
+done
+[ -n "$window" ] || { echo "FAIL: no window titled '$title' appeared"; kill "$pid"; exit 1; }
+sizes=("300 200" "200 300" "320 240" "250 250")
+i=0
+while kill -0 "$pid" 2>/dev/null; do
+  xdotool windowsize "$window" ${sizes[$((i % 4))]} 2>/dev/null
+  i=$((i + 1))
+done
+wait "$pid"
+status=$?
+grep -v '^\[validation' "$err" | grep -v 'swapchain recreated' || true
+echo "$(grep -c 'swapchain recreated' "$err") recreations during $i resize requests"
+[ $status -eq 0 ] || { echo "FAIL: exit status $status"; cat "$err"; exit 1; }
+grep -q "validation: 0 warnings, 0 errors" "$err" || { echo "FAIL: validation was not clean"; exit 1; }
+grep -qE "wrote .* \((300x200|200x300|320x240|250x250)\)" "$err" || { echo "FAIL: no screenshot of a known size"; exit 1; }
+[ "$(grep -c 'swapchain recreated' "$err")" -ge 2 ] || { echo "FAIL: the window was hardly resized"; exit 1; }
+echo PASS
