@@ -127,7 +127,8 @@ const Candidate& choose(const std::vector<Candidate>& candidates, const std::str
     const Candidate* chosen = nullptr;
     if (!selector.empty()) {
         // All digits: an index (too large to parse is still an index); else a name.
-        if (std::all_of(selector.begin(), selector.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+        if (std::all_of(selector.begin(), selector.end(),
+                        [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
             size_t index = SIZE_MAX;
             std::from_chars(selector.data(), selector.data() + selector.size(), index);
             if (index >= candidates.size())

@@ -90,8 +90,9 @@ Options parse_args(std::span<const char* const> args, Flags flags) {
         } else if (flag == "--screenshot") {
             std::string_view text = value();
             if (!text.ends_with(".png") || text.size() == 4)
-                throw UsageError("--screenshot writes a PNG: give a file name ending in .png, not '" +
-                                 std::string(text) + "'");
+                throw UsageError(
+                    "--screenshot writes a PNG: give a file name ending in .png, not '" +
+                    std::string(text) + "'");
             options.screenshot = text;
         } else if (flag == "--device") {
             std::string_view text = value();

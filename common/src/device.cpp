@@ -61,7 +61,8 @@ static std::string why_unsuitable(VkPhysicalDevice device, VkSurfaceKHR surface,
     if (!features13.synchronization2) return "lacks the synchronization2 feature";
 
     for (const char* wanted : requirements.extensions)
-        if (!has_device_extension(device, wanted)) return std::string("lacks the extension ") + wanted;
+        if (!has_device_extension(device, wanted))
+            return std::string("lacks the extension ") + wanted;
 
     uint32_t count = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);

@@ -4,8 +4,8 @@
 
 namespace vkt {
 
-void record_readback(VkPhysicalDevice physical, VkDevice device, VkCommandBuffer cmd,
-                     VkImage image, VkFormat format, VkExtent2D extent, Readback& readback) {
+void record_readback(VkPhysicalDevice physical, VkDevice device, VkCommandBuffer cmd, VkImage image,
+                     VkFormat format, VkExtent2D extent, Readback& readback) {
     const VkDeviceSize size = VkDeviceSize{extent.width} * extent.height * 4;
     if (!readback.buffer.buffer || readback.buffer.size < size)
         readback.buffer = create_buffer(
@@ -18,8 +18,8 @@ void record_readback(VkPhysicalDevice physical, VkDevice device, VkCommandBuffer
         .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
         .imageExtent = {extent.width, extent.height, 1},
     };
-    vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           readback.buffer.buffer, 1, &region);
+    vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer.buffer,
+                           1, &region);
     VkBufferMemoryBarrier2 to_host{
         .sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2,
         .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
@@ -43,10 +43,14 @@ RgbaImage to_rgba(const void* pixels, VkExtent2D extent, VkFormat format) {
     bool bgra = false;
     switch (format) {
         case VK_FORMAT_B8G8R8A8_SRGB:
-        case VK_FORMAT_B8G8R8A8_UNORM: bgra = true; break;
+        case VK_FORMAT_B8G8R8A8_UNORM:
+            bgra = true;
+            break;
         case VK_FORMAT_R8G8B8A8_SRGB:
-        case VK_FORMAT_R8G8B8A8_UNORM: break;
-        default: throw Error("to_rgba: not an 8-bit RGBA or BGRA format");
+        case VK_FORMAT_R8G8B8A8_UNORM:
+            break;
+        default:
+            throw Error("to_rgba: not an 8-bit RGBA or BGRA format");
     }
     RgbaImage image{extent.width, extent.height,
                     std::vector<uint8_t>(size_t{extent.width} * extent.height * 4)};

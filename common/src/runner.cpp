@@ -49,24 +49,6 @@ std::string program_name(char** argv) {
     return std::filesystem::path(argv[0] ? argv[0] : "chapter").filename().string();
 }
 
-std::string json_string(std::string_view text) {
-    std::string out = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') out += '\\';
-        out += c;
-    }
-    return out + "\"";
-}
-
-std::string json_summary(const std::vector<double>& values) {
-    if (values.empty()) return "null";
-    Summary s = summarize(values);
-    char text[160];
-    std::snprintf(text, sizeof text, R"({"min": %.4f, "median": %.4f, "p95": %.4f, "max": %.4f})",
-                  s.min, s.median, s.p95, s.max);
-    return text;
-}
-
 // [frame-slot]
 // Per frame in flight: what the CPU records into while the GPU works on the other.
 struct FrameSlot {
@@ -181,7 +163,8 @@ ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
     // (another driver may have provided that), it renders offscreen instead.
     DeviceRequirements requirements = spec.requirements;
     if (window_) requirements.extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
-    const auto candidates = survey_devices(*instance_, window_ ? surface_.get() : VK_NULL_HANDLE, requirements);
+    const auto candidates =
+        survey_devices(*instance_, window_ ? surface_.get() : VK_NULL_HANDLE, requirements);
     const DeviceCandidate& chosen = choose_device(candidates, options.device);
     if (presentation_ == Presentation::headless_surface) {
         if (can_present(chosen.handle, chosen.queue_family, surface_)) {
@@ -202,12 +185,12 @@ ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
     VkExtent2D extent{options.width, options.height};
     if (surface_) {
         if (window_) extent = window_->framebuffer_size();
-        swapchain_ = std::make_unique<Swapchain>(
-            device_->physical(), *device_, surface_,
-            SwapchainRequest{.extent = extent,
-                             .uncapped = options.benchmark,
-                             .readable = !options.screenshot.empty()},
-            VK_NULL_HANDLE);
+        swapchain_ =
+            std::make_unique<Swapchain>(device_->physical(), *device_, surface_,
+                                        SwapchainRequest{.extent = extent,
+                                                         .uncapped = options.benchmark,
+                                                         .readable = !options.screenshot.empty()},
+                                        VK_NULL_HANDLE);
         extent = swapchain_->extent();
     }
     create_target(extent);

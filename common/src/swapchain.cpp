@@ -80,7 +80,8 @@ Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR su
     extent_ = choose_extent(capabilities, request.extent);
     present_mode_ = choose_present_mode(modes, request.uncapped);
     // --screenshot reads back the image we present, where the surface allows it.
-    readable_ = request.readable && (capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    readable_ =
+        request.readable && (capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
 
     VkSwapchainCreateInfoKHR info{
         .sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR,
@@ -90,8 +91,9 @@ Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR su
         .imageColorSpace = format_.colorSpace,
         .imageExtent = extent_,
         .imageArrayLayers = 1,
-        .imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                      (readable_ ? VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_SRC_BIT} : VkImageUsageFlags{0}),
+        .imageUsage =
+            VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+            (readable_ ? VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_SRC_BIT} : VkImageUsageFlags{0}),
         .imageSharingMode = VK_SHARING_MODE_EXCLUSIVE,  // one queue draws and presents
         .preTransform = capabilities.currentTransform,
         .compositeAlpha = (capabilities.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)

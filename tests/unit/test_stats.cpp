@@ -21,6 +21,18 @@ TEST_CASE("summaries of hand-checked samples", "[stats]") {
     CHECK(s.max == 100);
 }
 
+TEST_CASE("summaries print as the JSON --benchmark promises", "[stats]") {
+    CHECK(vkt::json_summary({4, 1, 3, 2}) ==
+          R"({"min": 1.0000, "median": 2.5000, "p95": 4.0000, "max": 4.0000})");
+    CHECK(vkt::json_summary({}) == "null");
+}
+
+TEST_CASE("JSON strings are quoted and escaped", "[stats]") {
+    CHECK(vkt::json_string("llvmpipe (LLVM 15)") == R"j("llvmpipe (LLVM 15)")j");
+    CHECK(vkt::json_string(R"j(a "b" \c)j") == R"j("a \"b\" \\c")j");
+    CHECK(vkt::json_string("tab\there") == R"j("tab\u0009here")j");
+}
+
 TEST_CASE("one value and no values", "[stats]") {
     vkt::Summary one = vkt::summarize({7});
     CHECK(one.min == 7);

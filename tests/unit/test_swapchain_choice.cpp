@@ -23,9 +23,12 @@ TEST_CASE("lavapipe's headless formats are accepted", "[swapchain]") {
 }
 
 TEST_CASE("a recreated swapchain keeps its format where it can", "[swapchain]") {
-    std::vector<VkSurfaceFormatKHR> window{srgb(VK_FORMAT_B8G8R8A8_SRGB), srgb(VK_FORMAT_R8G8B8A8_UNORM)};
-    CHECK(vkt::choose_surface_format(window, VK_FORMAT_R8G8B8A8_UNORM).format == VK_FORMAT_R8G8B8A8_UNORM);
-    CHECK(vkt::choose_surface_format(window, VK_FORMAT_B8G8R8A8_UNORM).format == VK_FORMAT_B8G8R8A8_SRGB);
+    std::vector<VkSurfaceFormatKHR> window{srgb(VK_FORMAT_B8G8R8A8_SRGB),
+                                           srgb(VK_FORMAT_R8G8B8A8_UNORM)};
+    CHECK(vkt::choose_surface_format(window, VK_FORMAT_R8G8B8A8_UNORM).format ==
+          VK_FORMAT_R8G8B8A8_UNORM);
+    CHECK(vkt::choose_surface_format(window, VK_FORMAT_B8G8R8A8_UNORM).format ==
+          VK_FORMAT_B8G8R8A8_SRGB);
 }
 
 TEST_CASE("a surface without an 8-bit sRGB-space format is refused", "[swapchain]") {

@@ -24,8 +24,8 @@ struct DeviceCandidate {
     VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
     uint32_t api_version = 0;
     uint32_t max_image_dimension = 0;  // limits.maxImageDimension2D: the tie-break
-    uint32_t queue_family = 0;  // graphics + compute (+ present, with a surface)
-    std::string unsuitable;     // empty when the device can run the chapter
+    uint32_t queue_family = 0;         // graphics + compute (+ present, with a surface)
+    std::string unsuitable;            // empty when the device can run the chapter
 };
 
 // Discrete GPUs first, then integrated, virtual, and software rasterisers last.

@@ -18,8 +18,8 @@ struct Readback {
 // last write visible to the COPY stage) into the readback buffer, then make the
 // copy visible to the host. Grows the buffer when needed, so the caller must
 // know the GPU is done with it (the frame slot's fence).
-void record_readback(VkPhysicalDevice physical, VkDevice device, VkCommandBuffer cmd,
-                     VkImage image, VkFormat format, VkExtent2D extent, Readback& readback);
+void record_readback(VkPhysicalDevice physical, VkDevice device, VkCommandBuffer cmd, VkImage image,
+                     VkFormat format, VkExtent2D extent, Readback& readback);
 
 // Tightly packed 8-bit RGBA or BGRA pixels as RGBA, alpha set to 255 (the
 // screen shows no alpha, so neither does a screenshot). Throws Error for

@@ -1,6 +1,8 @@
 #pragma once
 // Summaries of frame times for --benchmark.
 
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace vkt {
@@ -13,5 +15,13 @@ struct Summary {
 // p95: the nearest-rank 95th percentile, the smallest value that is at least
 // as large as 95% of all values. An empty input gives all zeros.
 Summary summarize(std::vector<double> values);
+
+// {"min": 1.0000, "median": 2.5000, "p95": 4.0000, "max": 4.0000}, or null for
+// no values: how --benchmark prints a summary.
+std::string json_summary(const std::vector<double>& values);
+
+// A JSON string literal: quotes, with backslashes, quotes and control
+// characters escaped.
+std::string json_string(std::string_view text);
 
 }  // namespace vkt
