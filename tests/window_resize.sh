@@ -5,6 +5,7 @@
 # frame has the last size, and that validation stayed silent.
 #   window_resize.sh CHAPTER_EXE OUT_DIR TITLE
 set -u
+. "$(dirname "$0")/find_window.sh"
 exe=$1 out=$2 title=$3
 mkdir -p "$out"
 name=$(basename "$exe")
@@ -12,12 +13,7 @@ shot="$out/$name.resized.png" err="$out/$name.resized.stderr"
 rm -f "$shot"
 "$exe" --validation --size 320x240 --screenshot "$shot" >/dev/null 2>"$err" &
 pid=$!
-window=
-for _ in $(seq 100); do
-  window=$(xdotool search --name "$title" 2>/dev/null | head -n 1)
-  [ -n "$window" ] && break
-  sleep 0.1
-done
+window=$(find_window "$title")
 fail() { echo "FAIL: $*"; cat "$err"; kill "$pid" 2>/dev/null; exit 1; }
 [ -n "$window" ] || fail "no window titled '$title' appeared"
 wait_for() {  # a line in stderr, up to 20 s

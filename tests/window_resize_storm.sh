@@ -6,6 +6,7 @@
 # sizes the window had.
 #   window_resize_storm.sh CHAPTER_EXE OUT_DIR TITLE FRAMES
 set -u
+. "$(dirname "$0")/find_window.sh"
 exe=$1 out=$2 title=$3 frames=$4
 mkdir -p "$out"
 name=$(basename "$exe")
@@ -13,12 +14,7 @@ shot="$out/$name.storm.png" err="$out/$name.storm.stderr"
 rm -f "$shot"
 "$exe" --validation --frames "$frames" --size 320x240 --screenshot "$shot" >/dev/null 2>"$err" &
 pid=$!
-window=
-for _ in $(seq 100); do
-  window=$(xdotool search --name "$title" 2>/dev/null | head -n 1)
-  [ -n "$window" ] && break
-  sleep 0.05
-done
+window=$(find_window "$title")
 [ -n "$window" ] || { echo "FAIL: no window titled '$title' appeared"; kill "$pid"; exit 1; }
 sizes=("300 200" "200 300" "320 240" "250 250")
 i=0
