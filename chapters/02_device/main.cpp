@@ -228,5 +228,5 @@ int run(const vkt::Options& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return vkt::run_text_chapter(argc, argv, run);
+    return vkt::run_text_chapter(argc, argv, vkt::Flags::device, run);
 }

@@ -44,8 +44,10 @@ Options parse_args(std::span<const char* const> args, Flags flags) {
             if (inline_value) throw UsageError(std::string(flag) + " takes no value");
         };
 
-        if (flags == Flags::text_only && is_frame_loop_flag(flag))
+        if (flags != Flags::frame_loop && is_frame_loop_flag(flag))
             throw UsageError(std::string(flag) + " is not used by this chapter: it draws nothing");
+        if (flags == Flags::instance && flag == "--device")
+            throw UsageError("--device is not used by this chapter: it opens no device");
 
         if (flag == "--help" || flag == "-h") {
             no_value();
@@ -111,7 +113,8 @@ std::string usage_line(std::string_view program, Flags flags) {
         line +=
             " [--headless | --offscreen] [--frames N] [--size WxH] [--screenshot FILE.png]"
             " [--benchmark]";
-    line += " [--device NAME|INDEX] [--validation | --no-validation] [--help]";
+    if (flags != Flags::instance) line += " [--device NAME|INDEX]";
+    line += " [--validation | --no-validation] [--help]";
     return line;
 }
 
@@ -120,14 +123,17 @@ std::string help_text(std::string_view program, Flags flags) {
     if (flags == Flags::frame_loop)
         text +=
             "  --headless           no window: present to VK_EXT_headless_surface, or render\n"
-            "                       offscreen where the driver lacks it (also without a display)\n"
+            "                       offscreen where the device cannot present to it (also the\n"
+            "                       choice when there is no display or no window can open)\n"
             "  --offscreen          no surface at all: render into our own images only\n"
-            "  --frames N           stop after N frames (headless default: 60)\n"
+            "  --frames N           stop after N frames; time is then frame index / 60 s\n"
+            "                       (headless default: 60 frames)\n"
             "  --size WxH           size of the window or the headless image (default 800x600)\n"
-            "  --screenshot FILE    write the last frame as a PNG\n"
+            "  --screenshot FILE.png  write the last frame, as presented, as a PNG\n"
             "  --benchmark          print CPU and GPU frame times as JSON on stdout\n";
+    if (flags != Flags::instance)
+        text += "  --device NAME|INDEX  use this physical device (index, or part of its name)\n";
     text +=
-        "  --device NAME|INDEX  use this physical device (index, or part of its name)\n"
         "  --validation         require the Khronos validation layer, with synchronisation\n"
         "                       validation; any warning or error makes the exit status 1\n"
         "  --no-validation      do not load the validation layer\n"

@@ -319,6 +319,7 @@ bool ChapterRun::draw_frame(uint64_t index, double time) {
     collect_gpu_time(slot, slot_index);
 
     uint32_t image_index = 0;
+    bool suboptimal = false;  // an image was acquired, but recreate after this frame
     if (swapchain_) {
         VkResult result = vkAcquireNextImageKHR(*device_, swapchain_->get(), UINT64_MAX,
                                                 slot.image_acquired, VK_NULL_HANDLE, &image_index);
@@ -326,7 +327,8 @@ bool ChapterRun::draw_frame(uint64_t index, double time) {
             recreate_swapchain();
             return false;
         }
-        check(result, "vkAcquireNextImageKHR");  // VK_SUBOPTIMAL_KHR still acquired an image
+        check(result, "vkAcquireNextImageKHR");
+        suboptimal = result == VK_SUBOPTIMAL_KHR;
     }
     VKT_CHECK(vkResetFences(*device_, 1, &done));  // only now that we will submit
     // [/wait-acquire]
@@ -381,7 +383,8 @@ bool ChapterRun::draw_frame(uint64_t index, double time) {
         VkResult result = vkQueuePresentKHR(device_->queue(), &present);
         if (result != VK_ERROR_OUT_OF_DATE_KHR) check(result, "vkQueuePresentKHR");
         const bool resized = window_ && window_->take_resized();
-        if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR || resized)
+        if (suboptimal || result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR ||
+            resized)
             recreate_swapchain();  // this frame was still drawn
     }
     // [/present]
@@ -561,8 +564,9 @@ int run_chapter(int argc, char** argv, const ChapterSpec& spec, const RendererFa
     });
 }
 
-int run_text_chapter(int argc, char** argv, const std::function<int(const Options&)>& body) {
-    return guarded(argc, argv, Flags::text_only, body);
+int run_text_chapter(int argc, char** argv, Flags flags,
+                     const std::function<int(const Options&)>& body) {
+    return guarded(argc, argv, flags, body);
 }
 
 }  // namespace vkt

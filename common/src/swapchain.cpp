@@ -12,8 +12,31 @@ VkSurfaceFormatKHR choose_surface_format(std::span<const VkSurfaceFormatKHR> ava
     // Any of these will do: we always render into an _SRGB image of our own
     // (see render_format_for) and copy its bytes into the swapchain image.
     // Headless surfaces offer only _UNORM formats.
-    const VkFormat preferred[] = {keep, VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB,
-                                  VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM};
+    // When recreating, `keep` and then its sibling with the same byte order come
+    // first: the chapter's pipelines were made for that byte order.
+    VkFormat sibling = VK_FORMAT_UNDEFINED;
+    switch (keep) {
+        case VK_FORMAT_B8G8R8A8_SRGB:
+            sibling = VK_FORMAT_B8G8R8A8_UNORM;
+            break;
+        case VK_FORMAT_B8G8R8A8_UNORM:
+            sibling = VK_FORMAT_B8G8R8A8_SRGB;
+            break;
+        case VK_FORMAT_R8G8B8A8_SRGB:
+            sibling = VK_FORMAT_R8G8B8A8_UNORM;
+            break;
+        case VK_FORMAT_R8G8B8A8_UNORM:
+            sibling = VK_FORMAT_R8G8B8A8_SRGB;
+            break;
+        default:
+            break;
+    }
+    const VkFormat preferred[] = {keep,
+                                  sibling,
+                                  VK_FORMAT_B8G8R8A8_SRGB,
+                                  VK_FORMAT_R8G8B8A8_SRGB,
+                                  VK_FORMAT_B8G8R8A8_UNORM,
+                                  VK_FORMAT_R8G8B8A8_UNORM};
     for (VkFormat format : preferred)
         for (const auto& candidate : available)
             if (candidate.format == format &&

@@ -86,10 +86,12 @@ TEST_CASE("unknown arguments are usage errors that name the argument", "[args]")
 }
 
 TEST_CASE("text chapters refuse frame-loop flags but take the rest", "[args]") {
-    CHECK_THROWS_AS(parse({"--frames", "3"}, Flags::text_only), UsageError);
-    CHECK_THROWS_AS(parse({"--headless"}, Flags::text_only), UsageError);
-    CHECK_THROWS_AS(parse({"--screenshot", "x.png"}, Flags::text_only), UsageError);
-    Options o = parse({"--device", "1", "--validation"}, Flags::text_only);
+    CHECK_THROWS_AS(parse({"--frames", "3"}, Flags::device), UsageError);
+    CHECK_THROWS_AS(parse({"--headless"}, Flags::device), UsageError);
+    CHECK_THROWS_AS(parse({"--screenshot", "x.png"}, Flags::device), UsageError);
+    CHECK_THROWS_AS(parse({"--device", "0"}, Flags::instance), UsageError);
+    CHECK(parse({"--validation"}, Flags::instance).validation == true);
+    Options o = parse({"--device", "1", "--validation"}, Flags::device);
     CHECK(o.device == "1");
     CHECK(o.validation == true);
 }
@@ -100,7 +102,9 @@ TEST_CASE("usage and help name every flag the chapter takes", "[args]") {
          {"--headless", "--offscreen", "--frames", "--size", "--screenshot", "--benchmark",
           "--device", "--validation", "--no-validation", "--help"})
         CHECK(help.find(flag) != std::string::npos);
-    std::string text = vkt::usage_line("01_instance", Flags::text_only);
+    std::string text = vkt::usage_line("02_device", Flags::device);
     CHECK(text.find("--frames") == std::string::npos);
-    CHECK(text.starts_with("usage: 01_instance"));
+    CHECK(text.starts_with("usage: 02_device"));
+    CHECK(text.find("--device") != std::string::npos);
+    CHECK(vkt::usage_line("01_instance", Flags::instance).find("--device") == std::string::npos);
 }

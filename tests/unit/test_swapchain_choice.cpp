@@ -29,6 +29,11 @@ TEST_CASE("a recreated swapchain keeps its format where it can", "[swapchain]") 
           VK_FORMAT_R8G8B8A8_UNORM);
     CHECK(vkt::choose_surface_format(window, VK_FORMAT_B8G8R8A8_UNORM).format ==
           VK_FORMAT_B8G8R8A8_SRGB);
+    // Gone: its sibling with the same byte order wins over the general order.
+    std::vector<VkSurfaceFormatKHR> changed{srgb(VK_FORMAT_B8G8R8A8_SRGB),
+                                            srgb(VK_FORMAT_R8G8B8A8_UNORM)};
+    CHECK(vkt::choose_surface_format(changed, VK_FORMAT_R8G8B8A8_SRGB).format ==
+          VK_FORMAT_R8G8B8A8_UNORM);
 }
 
 TEST_CASE("a surface without an 8-bit sRGB-space format is refused", "[swapchain]") {

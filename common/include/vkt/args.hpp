@@ -23,9 +23,14 @@ struct Options {
     bool help = false;                   // --help
 };
 
-// Which flags a chapter accepts: the text-only chapters 01 and 02 draw nothing,
-// so frame-loop flags would be silently meaningless there; they reject them.
-enum class Flags { text_only, frame_loop };
+// Which flags a chapter accepts. A flag a chapter would silently ignore is
+// refused instead: chapter 01 opens no device (no --device), chapters 01 and
+// 02 draw nothing (no frame-loop flags).
+enum class Flags {
+    instance,   // chapter 01: --validation, --no-validation, --help
+    device,     // chapter 02: those and --device
+    frame_loop  // chapters 03 on: every flag
+};
 
 // A malformed or unknown argument; the runner prints it with the usage line and
 // exits with status 2.

@@ -16,7 +16,7 @@ const char* result_name(VkResult result);
 // [vulkan-error]
 // A Vulkan call returned an error. what() names the call (without its
 // arguments), the result by name and number, and the source file and line:
-// "vkCreateDevice failed with VK_ERROR_FEATURE_NOT_PRESENT (-8) at device.cpp:175".
+// "vkCreateDevice failed with VK_ERROR_FEATURE_NOT_PRESENT (-8) at device.cpp:<line>".
 class VulkanError : public std::runtime_error {
 public:
     VulkanError(const char* call, VkResult result, std::source_location where);

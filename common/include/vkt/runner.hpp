@@ -65,8 +65,10 @@ using RendererFactory = std::function<std::unique_ptr<Renderer>(const Context&)>
 // 0 done, 1 an error (or any validation message), 2 bad command line.
 int run_chapter(int argc, char** argv, const ChapterSpec& spec, const RendererFactory& factory);
 
-// For the text chapters 01 and 02: parses the command line, runs body, and
-// turns exceptions into one clear line and exit status 1 (2 for usage).
-int run_text_chapter(int argc, char** argv, const std::function<int(const Options&)>& body);
+// For the text chapters 01 and 02: parses the command line (accepting the
+// flags `flags` names), runs body, and turns exceptions into one clear line and
+// exit status 1 (2 for usage).
+int run_text_chapter(int argc, char** argv, Flags flags,
+                     const std::function<int(const Options&)>& body);
 
 }  // namespace vkt
