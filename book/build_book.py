@@ -616,6 +616,19 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     for page in pages:
         expand_page(root, book, page, sources, problems)
 
+    # Every chapter has its page, and a chapter page shows the chapter's
+    # picture wherever the tests keep one (tests/golden/NN_name.png).
+    page_names_md = {page.md_name for page in pages}
+    chapters = root / "chapters"
+    if chapters.is_dir():
+        for folder in sorted(chapters.iterdir()):
+            if folder.is_dir() and folder.name[:2].isdigit() and f"{folder.name}.md" not in page_names_md:
+                problems.append(f"chapters/{folder.name} has no page book/{folder.name}.md")
+    for page in pages:
+        golden = f"tests/golden/{page.md_name[:-3]}.png"
+        if page.md_name[:2].isdigit() and (root / golden).exists() and golden not in page.markdown:
+            problems.append(f"book/{page.md_name}: does not show the chapter's picture, {golden}")
+
     # Every marker in the chapters, the helper library and the shaders must be
     # well formed and quoted somewhere: a marker nobody quotes is stale.
     quoted = {(inc.rel, inc.marker) for page in pages for inc in page.includes}
