@@ -266,7 +266,7 @@ def expand_page(root: Path, book: Path, page: Page, sources: Sources, problems: 
         match = INCLUDE_RE.match(line)
         if not match:
             problems.append(f"{where}:{number}: malformed directive {line.strip()!r} "
-                            "(want '{{#include ../path/file:marker}}')")
+                            "(want '{{#include <path>:<marker>}}')")
             continue
         path_text, marker = match.groups()
         target = (book / path_text)

@@ -1,4 +1,4 @@
-// A fixture for book/tests: [goodbye] is quoted by no page.
+// A fixture for the book tests (book/CMakeLists.txt): [goodbye] is quoted by no page.
 #include <cstdio>
 
 int main() {

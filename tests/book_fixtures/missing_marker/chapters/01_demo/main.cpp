@@ -1,4 +1,4 @@
-// A fixture for book/tests: it has one marker, [hello], but the page asks
+// A fixture for the book tests (book/CMakeLists.txt): it has one marker, [hello], but the page asks
 // for [no-such-marker].
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-// A fixture for book/tests: [goodbye] is opened and never closed.
+// A fixture for the book tests (book/CMakeLists.txt): [goodbye] is opened and never closed.
 #include <cstdio>
 
 int main() {
