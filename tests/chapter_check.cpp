@@ -2,15 +2,17 @@
 // chapter regression test and every bad-input test:
 //
 //   vkt_chapter_check --exe PATH --out DIR --name NAME [--golden PNG]
-//                     [--exit N] [--expect REGEX]... [--pixel X,Y,R,G,B]...
+//                     [--exit N] [--expect REGEX]... [--pixel X,Y,R,G,B[,TOL]]...
 //                     [--isolate DIR] -- ARGS...
+//   vkt_chapter_check --png FILE [--pixel X,Y,R,G,B[,TOL]]...
 //
 // It runs PATH ARGS (with --screenshot DIR/NAME.png added when --golden is
 // given), keeps its stdout and stderr in DIR/NAME.stdout / .stderr, and fails
 // unless: the exit status is N (default 0); with exit 0 and --validation in
 // ARGS, stderr says "validation: 0 warnings, 0 errors"; every REGEX matches
 // stdout or stderr; and the screenshot is within vkt::Tolerance of the golden
-// image, and every --pixel of the screenshot has that colour (within 1). A
+// image, and every --pixel of the screenshot has that colour (within TOL,
+// default 1). The --png form checks the pixels of an existing picture. A
 // failed comparison leaves NAME.png (rendered) and NAME.diff.png.
 // With VKT_BLESS=1 in the environment the screenshot replaces the golden image.
 // --isolate DIR runs a copy of the executable from DIR/bin, so that it finds
@@ -71,13 +73,36 @@ int run(const std::vector<std::string>& args, const fs::path& out, const fs::pat
     return WEXITSTATUS(status);
 }
 
+// Each spec is "x,y,r,g,b" or "x,y,r,g,b,tolerance" (default 1 per channel).
+int check_pixels(const vkt::RgbaImage& actual, const std::vector<std::string>& pixels) {
+    for (const auto& spec : pixels) {
+        unsigned x, y, r, g, b, tolerance = 1;
+        const int fields =
+            std::sscanf(spec.c_str(), "%u,%u,%u,%u,%u,%u", &x, &y, &r, &g, &b, &tolerance);
+        if (fields < 5 || x >= actual.width || y >= actual.height)
+            return fail("bad --pixel " + spec + " for a " + std::to_string(actual.width) + "x" +
+                        std::to_string(actual.height) + " picture");
+        const uint8_t* p = &actual.pixels[(size_t{y} * actual.width + x) * 4];
+        const unsigned want[3] = {r, g, b};
+        for (int c = 0; c < 3; ++c)
+            if (unsigned(std::abs(int(p[c]) - int(want[c]))) > tolerance)
+                return fail("pixel " + std::to_string(x) + "," + std::to_string(y) + " is " +
+                            std::to_string(p[0]) + "," + std::to_string(p[1]) + "," +
+                            std::to_string(p[2]) + ", expected " + std::to_string(r) + "," +
+                            std::to_string(g) + "," + std::to_string(b) + " (within " +
+                            std::to_string(tolerance) + ")");
+        std::printf("pixel %u,%u: %u,%u,%u as expected\n", x, y, p[0], p[1], p[2]);
+    }
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     fs::path exe, out_dir, golden;
     std::string name;
     int expected_exit = 0;
-    fs::path isolate;
+    fs::path isolate, png_only;
     std::vector<std::string> expects, pixels, chapter_args;
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
@@ -97,6 +122,8 @@ int main(int argc, char** argv) {
             expected_exit = std::stoi(next());
         else if (arg == "--expect")
             expects.push_back(next());
+        else if (arg == "--png")
+            png_only = next();
         else if (arg == "--pixel")
             pixels.push_back(next());
         else if (arg == "--isolate")
@@ -106,6 +133,11 @@ int main(int argc, char** argv) {
             break;
         } else
             return fail("unknown checker argument " + arg);
+    }
+    if (!png_only.empty()) {  // no run: only check the pixels of an existing picture
+        if (int failed = check_pixels(vkt::read_png(png_only), pixels)) return failed;
+        std::printf("PASS\n");
+        return 0;
     }
     if (exe.empty() || out_dir.empty() || name.empty())
         return fail("--exe, --out and --name are required");
@@ -158,21 +190,7 @@ int main(int argc, char** argv) {
         if (!fs::exists(screenshot)) return fail("the chapter wrote no screenshot");
         // The hand-worked pixels come first: not even blessing may contradict them.
         const vkt::RgbaImage actual = vkt::read_png(screenshot);
-        for (const auto& spec : pixels) {
-            unsigned x, y, r, g, b;
-            if (std::sscanf(spec.c_str(), "%u,%u,%u,%u,%u", &x, &y, &r, &g, &b) != 5 ||
-                x >= actual.width || y >= actual.height)
-                return fail("bad --pixel " + spec);
-            const uint8_t* p = &actual.pixels[(size_t{y} * actual.width + x) * 4];
-            const unsigned want[3] = {r, g, b};
-            for (int c = 0; c < 3; ++c)
-                if (std::abs(int(p[c]) - int(want[c])) > 1)
-                    return fail("pixel " + std::to_string(x) + "," + std::to_string(y) + " is " +
-                                std::to_string(p[0]) + "," + std::to_string(p[1]) + "," +
-                                std::to_string(p[2]) + ", expected " + std::to_string(r) + "," +
-                                std::to_string(g) + "," + std::to_string(b));
-            std::printf("pixel %u,%u: %u,%u,%u as expected\n", x, y, p[0], p[1], p[2]);
-        }
+        if (int failed = check_pixels(actual, pixels)) return failed;
         if (const char* bless = std::getenv("VKT_BLESS"); bless && std::string(bless) == "1") {
             fs::create_directories(golden.parent_path());
             fs::copy_file(screenshot, golden, fs::copy_options::overwrite_existing);

@@ -2,11 +2,12 @@
 # Window resize test, run under xvfb-run by CTest: opens a chapter in a window
 # with validation, resizes the window twice with xdotool, closes it with Esc,
 # and checks that the swapchain was recreated at each size, that the last
-# frame has the last size, and that validation stayed silent.
-#   window_resize.sh CHAPTER_EXE OUT_DIR TITLE
+# frame has the last size and the right picture, and that validation stayed
+# silent.
+#   window_resize.sh CHAPTER_EXE OUT_DIR TITLE CHECKER
 set -u
-. "$(dirname "$0")/find_window.sh"
-exe=$1 out=$2 title=$3
+. "$(dirname "$0")/window_test_helpers.sh"
+exe=$1 out=$2 title=$3 checker=$4
 mkdir -p "$out"
 name=$(basename "$exe")
 shot="$out/$name.resized.png" err="$out/$name.resized.stderr"
@@ -33,4 +34,5 @@ cat "$err"
 [ $status -eq 0 ] || fail "exit status $status"
 grep -q "validation: 0 warnings, 0 errors" "$err" || fail "validation was not clean"
 grep -q "wrote .* (200x400)" "$err" || fail "the last frame was not 200x400"
+check_triangle "$checker" "$shot" 200 400 || fail "the last frame is not the triangle"
 echo PASS

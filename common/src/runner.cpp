@@ -290,7 +290,10 @@ void ChapterRun::run(const RendererFactory& factory) {
 
     VKT_CHECK(vkDeviceWaitIdle(*device_));
     for (uint32_t i = 0; i < frames_in_flight; ++i) collect_gpu_time(slots_[i], i);
-    if (!options_.screenshot.empty() && last_slot_) save_screenshot(options_.screenshot);
+    if (!options_.screenshot.empty()) {
+        if (!last_slot_) throw Error("no frame was drawn, so there is no screenshot to write");
+        save_screenshot(options_.screenshot);
+    }
 
     if (options_.benchmark) {
         std::printf(
@@ -470,6 +473,7 @@ void ChapterRun::recreate_swapchain() {
     if (window_) {
         window_->wait_while_minimised();  // a 0x0 swapchain cannot exist
         if (window_->should_close()) return;
+        window_->take_resized();  // this recreation answers any resize so far
     }
     // Simple and safe: let the GPU finish everything that uses the old images.
     VKT_CHECK(vkDeviceWaitIdle(*device_));
