@@ -1,6 +1,8 @@
 #include "vkt/args.hpp"
 
 #include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace vkt {
@@ -22,10 +24,82 @@ bool is_frame_loop_flag(std::string_view flag) {
            flag == "--size" || flag == "--screenshot" || flag == "--benchmark";
 }
 
+std::string format_number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+std::string joined(const std::vector<std::string>& words, const char* separator) {
+    std::string out;
+    for (const auto& word : words) out += (out.empty() ? "" : separator) + word;
+    return out;
+}
+
+// Checks one value of a chapter option; returns it as it will be stored.
+std::string check_option_value(const OptionSpec& spec, std::string_view text) {
+    const std::string given(text);
+    switch (spec.type) {
+        case OptionType::integer: {
+            int64_t value = 0;
+            auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+            if (error != std::errc{} || end != text.data() + text.size() || text.empty() ||
+                double(value) < spec.min || double(value) > spec.max)
+                throw UsageError(spec.name + " wants a whole number from " +
+                                 format_number(spec.min) + " to " + format_number(spec.max) +
+                                 ", not '" + given + "'");
+            return std::to_string(value);
+        }
+        case OptionType::number: {
+            double value = 0;
+            auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+            if (error != std::errc{} || end != text.data() + text.size() || text.empty() ||
+                !std::isfinite(value) || value < spec.min || value > spec.max)
+                throw UsageError(spec.name + " wants a number from " + format_number(spec.min) +
+                                 " to " + format_number(spec.max) + ", not '" + given + "'");
+            return given;
+        }
+        case OptionType::choice:
+            for (const auto& choice : spec.choices)
+                if (choice == text) return given;
+            throw UsageError(spec.name + " wants one of " + joined(spec.choices, ", ") + ", not '" +
+                             given + "'");
+        case OptionType::text:
+        default:
+            if (text.empty()) throw UsageError(spec.name + " wants a value");
+            return given;
+    }
+}
+
+std::string option_value_name(const OptionSpec& spec) {
+    if (!spec.value_name.empty()) return spec.value_name;
+    if (spec.type == OptionType::choice) return joined(spec.choices, "|");
+    return spec.type == OptionType::text ? "TEXT" : "N";
+}
+
 }  // namespace
 
-Options parse_args(std::span<const char* const> args, Flags flags) {
+const std::string& Options::text(std::string_view name) const {
+    auto found = values.find(name);
+    if (found == values.end())
+        throw std::logic_error("chapter option " + std::string(name) + " has no value");
+    return found->second;
+}
+
+int64_t Options::integer(std::string_view name) const {
+    return std::stoll(text(name));
+}
+
+double Options::number(std::string_view name) const {
+    return std::stod(text(name));
+}
+
+Options parse_args(std::span<const char* const> args, Flags flags,
+                   std::span<const OptionSpec> chapter_options) {
     Options options;
+    for (const auto& spec : chapter_options)
+        if (!spec.default_value.empty())
+            options.values[spec.name] = check_option_value(spec, spec.default_value);
     for (size_t i = 0; i < args.size(); ++i) {
         std::string_view arg = args[i];
         // Accept both "--frames 10" and "--frames=10".
@@ -101,13 +175,18 @@ Options parse_args(std::span<const char* const> args, Flags flags) {
             if (text.empty()) throw UsageError("--device wants a name or an index");
             options.device = text;
         } else {
-            throw UsageError("unknown argument '" + std::string(arg) + "'");
+            const OptionSpec* spec = nullptr;
+            for (const auto& candidate : chapter_options)
+                if (candidate.name == flag) spec = &candidate;
+            if (!spec) throw UsageError("unknown argument '" + std::string(arg) + "'");
+            options.values[spec->name] = check_option_value(*spec, value());
         }
     }
     return options;
 }
 
-std::string usage_line(std::string_view program, Flags flags) {
+std::string usage_line(std::string_view program, Flags flags,
+                       std::span<const OptionSpec> chapter_options) {
     std::string line = "usage: " + std::string(program);
     if (flags == Flags::frame_loop)
         line +=
@@ -115,11 +194,29 @@ std::string usage_line(std::string_view program, Flags flags) {
             " [--benchmark]";
     if (flags != Flags::instance) line += " [--device NAME|INDEX]";
     line += " [--validation | --no-validation] [--help]";
+    for (const auto& spec : chapter_options)
+        line += " [" + spec.name + " " + option_value_name(spec) + "]";
     return line;
 }
 
-std::string help_text(std::string_view program, Flags flags) {
-    std::string text = usage_line(program, flags) + "\n\n";
+std::string help_text(std::string_view program, Flags flags,
+                      std::span<const OptionSpec> chapter_options) {
+    std::string text = usage_line(program, flags, chapter_options) + "\n\n";
+    if (!chapter_options.empty()) {
+        text += "this chapter's own flags:\n";
+        for (const auto& spec : chapter_options) {
+            std::string left = "  " + spec.name + " " + option_value_name(spec);
+            std::string right = spec.help;
+            if (spec.type == OptionType::integer || spec.type == OptionType::number)
+                right += " (" + format_number(spec.min) + ".." + format_number(spec.max) + ")";
+            if (!spec.default_value.empty()) right += " [default: " + spec.default_value + "]";
+            if (left.size() < 23)
+                text += left + std::string(23 - left.size(), ' ') + right + "\n";
+            else
+                text += left + "\n" + std::string(23, ' ') + right + "\n";
+        }
+        text += "\nshared flags:\n";
+    }
     if (flags == Flags::frame_loop)
         text +=
             "  --headless           no window: present to VK_EXT_headless_surface, or render\n"

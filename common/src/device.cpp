@@ -7,6 +7,45 @@
 
 namespace vkt {
 
+FeatureChain::FeatureChain() {
+    features13_.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
+    features12_.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
+    features12_.pNext = &features13_;
+    features11_.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES;
+    features11_.pNext = &features12_;
+    features_.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+    features_.pNext = &features11_;
+}
+
+VkBool32& FeatureChain::operator[](const Feature& feature) {
+    std::byte* base = nullptr;
+    switch (feature.set) {
+        case Feature::core10:
+            base = reinterpret_cast<std::byte*>(&features_.features);
+            break;
+        case Feature::core11:
+            base = reinterpret_cast<std::byte*>(&features11_);
+            break;
+        case Feature::core12:
+            base = reinterpret_cast<std::byte*>(&features12_);
+            break;
+        case Feature::core13:
+            base = reinterpret_cast<std::byte*>(&features13_);
+            break;
+    }
+    return *reinterpret_cast<VkBool32*>(base + feature.offset);
+}
+
+bool FeatureChain::has(const Feature& feature) const {
+    return const_cast<FeatureChain&>(*this)[feature] == VK_TRUE;
+}
+
+std::span<const Feature> base_features() {
+    static const Feature base[] = {VKT_FEATURE_13(dynamicRendering),
+                                   VKT_FEATURE_13(synchronization2)};
+    return base;
+}
+
 int device_score(const DeviceCandidate& candidate) {
     return 1000 * device_type_score(candidate.type) + int(candidate.max_image_dimension / 1024);
 }
@@ -52,13 +91,12 @@ static std::string why_unsuitable(VkPhysicalDevice device, VkSurfaceKHR surface,
                std::to_string(VK_API_VERSION_MAJOR(properties.apiVersion)) + "." +
                std::to_string(VK_API_VERSION_MINOR(properties.apiVersion)) + ", not 1.3";
 
-    VkPhysicalDeviceVulkan13Features features13{
-        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
-                                       .pNext = &features13};
-    vkGetPhysicalDeviceFeatures2(device, &features);
-    if (!features13.dynamicRendering) return "lacks the dynamicRendering feature";
-    if (!features13.synchronization2) return "lacks the synchronization2 feature";
+    FeatureChain available;
+    vkGetPhysicalDeviceFeatures2(device, available.head());
+    for (const Feature& feature : base_features())
+        if (!available.has(feature)) return std::string("lacks the ") + feature.name + " feature";
+    for (const Feature& feature : requirements.features)
+        if (!available.has(feature)) return std::string("lacks the ") + feature.name + " feature";
 
     for (const char* wanted : requirements.extensions)
         if (!has_device_extension(device, wanted))
@@ -170,18 +208,17 @@ Device::Device(const DeviceCandidate& chosen, const DeviceRequirements& requirem
         .queueCount = 1,
         .pQueuePriorities = &priority,
     };
-    VkPhysicalDeviceVulkan13Features features13{
-        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
-        .synchronization2 = VK_TRUE,
-        .dynamicRendering = VK_TRUE,
-    };
-    VkPhysicalDeviceFeatures2 features{
-        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
-        .pNext = &features13,
-    };
+    // Turn on exactly what is needed: the base features, the chapter's required
+    // ones, and those optional ones this device has.
+    FeatureChain available;
+    vkGetPhysicalDeviceFeatures2(physical_, available.head());
+    for (const Feature& feature : base_features()) enabled_[feature] = VK_TRUE;
+    for (const Feature& feature : requirements.features) enabled_[feature] = VK_TRUE;
+    for (const Feature& feature : requirements.optional_features)
+        enabled_[feature] = available.has(feature) ? VK_TRUE : VK_FALSE;
     VkDeviceCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
-        .pNext = &features,
+        .pNext = enabled_.head(),
         .queueCreateInfoCount = 1,
         .pQueueCreateInfos = &queue_info,
         .enabledExtensionCount = static_cast<uint32_t>(requirements.extensions.size()),

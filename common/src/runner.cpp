@@ -264,6 +264,8 @@ void ChapterRun::run(const RendererFactory& factory) {
         .color_format = target_.format,
         .extent = target_.extent,
         .frames_in_flight = frames_in_flight,
+        .properties = device_->properties(),
+        .features = device_->features(),
     });
 
     const uint64_t frame_count =
@@ -520,19 +522,20 @@ void ChapterRun::save_screenshot(const std::string& path) {
 }
 
 // Turns the body's outcome into an exit status: usage errors 2, failures 1.
-int guarded(int argc, char** argv, Flags flags, const std::function<int(const Options&)>& body) {
+int guarded(int argc, char** argv, Flags flags, std::span<const OptionSpec> chapter_options,
+            const std::function<int(const Options&)>& body) {
     const std::string program = program_name(argv);
     Options options;
     try {
         options = parse_args(std::span<const char* const>(argv + 1, size_t(std::max(argc - 1, 0))),
-                             flags);
+                             flags, chapter_options);
     } catch (const UsageError& e) {
         std::fprintf(stderr, "%s: %s\n%s\n", program.c_str(), e.what(),
-                     usage_line(program, flags).c_str());
+                     usage_line(program, flags, chapter_options).c_str());
         return 2;
     }
     if (options.help) {
-        std::fputs(help_text(program, flags).c_str(), stdout);
+        std::fputs(help_text(program, flags, chapter_options).c_str(), stdout);
         return 0;
     }
     try {
@@ -555,7 +558,7 @@ int report_validation(const std::string& program, const ValidationCounts* counts
 }  // namespace
 
 int run_chapter(int argc, char** argv, const ChapterSpec& spec, const RendererFactory& factory) {
-    return guarded(argc, argv, Flags::frame_loop, [&](const Options& options) {
+    return guarded(argc, argv, Flags::frame_loop, spec.options, [&](const Options& options) {
         std::shared_ptr<const ValidationCounts> counts;
         {
             ChapterRun run(options, spec);
@@ -568,7 +571,7 @@ int run_chapter(int argc, char** argv, const ChapterSpec& spec, const RendererFa
 
 int run_text_chapter(int argc, char** argv, Flags flags,
                      const std::function<int(const Options&)>& body) {
-    return guarded(argc, argv, flags, body);
+    return guarded(argc, argv, flags, {}, body);
 }
 
 }  // namespace vkt

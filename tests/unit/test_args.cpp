@@ -108,3 +108,86 @@ TEST_CASE("usage and help name every flag the chapter takes", "[args]") {
     CHECK(text.find("--device") != std::string::npos);
     CHECK(vkt::usage_line("01_instance", Flags::instance).find("--device") == std::string::npos);
 }
+
+// --- A chapter's own flags (ChapterSpec::options) ---------------------------
+
+static const std::vector<vkt::OptionSpec> chapter_options = {
+    {.name = "--lights",
+     .type = vkt::OptionType::integer,
+     .value_name = "N",
+     .help = "point lights",
+     .default_value = "16",
+     .min = 1,
+     .max = 65536},
+    {.name = "--exposure",
+     .type = vkt::OptionType::number,
+     .help = "exposure",
+     .default_value = "1.5",
+     .min = 0.25,
+     .max = 4},
+    {.name = "--view",
+     .type = vkt::OptionType::choice,
+     .help = "what to show",
+     .default_value = "lit",
+     .choices = {"lit", "albedo", "normal"}},
+    {.name = "--model", .type = vkt::OptionType::text, .value_name = "FILE", .help = "a glTF file"},
+};
+
+static Options parse_chapter(std::vector<const char*> args) {
+    return parse_args(args, Flags::frame_loop, chapter_options);
+}
+
+TEST_CASE("a chapter's flags get their defaults", "[args][chapter-options]") {
+    Options o = parse_chapter({});
+    CHECK(o.integer("--lights") == 16);
+    CHECK(o.number("--exposure") == 1.5);
+    CHECK(o.text("--view") == "lit");
+    CHECK_FALSE(o.has("--model"));  // no default: unset
+    CHECK_THROWS_AS(o.text("--model"), std::logic_error);
+    CHECK_THROWS_AS(o.integer("--undeclared"), std::logic_error);
+}
+
+TEST_CASE("a chapter's flags take values in range, separate or inline", "[args][chapter-options]") {
+    Options o = parse_chapter({"--lights", "65536", "--exposure=0.25", "--view", "normal",
+                               "--model", "scene.glb", "--headless"});
+    CHECK(o.integer("--lights") == 65536);
+    CHECK(o.number("--exposure") == 0.25);
+    CHECK(o.text("--view") == "normal");
+    CHECK(o.text("--model") == "scene.glb");
+    CHECK(o.headless);
+    CHECK(parse_chapter({"--lights", "1"}).integer("--lights") == 1);
+}
+
+TEST_CASE("a chapter's flags refuse bad values with a clear message", "[args][chapter-options]") {
+    auto message = [](std::vector<const char*> args) {
+        try {
+            parse_chapter(std::move(args));
+        } catch (const UsageError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    CHECK(message({"--lights", "0"}) == "--lights wants a whole number from 1 to 65536, not '0'");
+    CHECK(message({"--lights", "65537"}) ==
+          "--lights wants a whole number from 1 to 65536, not '65537'");
+    CHECK(message({"--lights", "3.5"}) ==
+          "--lights wants a whole number from 1 to 65536, not '3.5'");
+    CHECK(message({"--lights", ""}) == "--lights wants a whole number from 1 to 65536, not ''");
+    CHECK(message({"--exposure", "5"}) == "--exposure wants a number from 0.25 to 4, not '5'");
+    CHECK(message({"--exposure", "nan"}) == "--exposure wants a number from 0.25 to 4, not 'nan'");
+    CHECK(message({"--view", "depth"}) == "--view wants one of lit, albedo, normal, not 'depth'");
+    CHECK(message({"--model"}) == "--model needs a value");
+    CHECK(message({"--model="}) == "--model wants a value");
+    CHECK(message({"--count", "3"}) == "unknown argument '--count'");
+}
+
+TEST_CASE("--help and the usage line list a chapter's flags", "[args][chapter-options]") {
+    const std::string usage = vkt::usage_line("10_gltf", Flags::frame_loop, chapter_options);
+    CHECK(usage.find("[--lights N]") != std::string::npos);
+    CHECK(usage.find("[--view lit|albedo|normal]") != std::string::npos);
+    CHECK(usage.find("[--model FILE]") != std::string::npos);
+    const std::string help = vkt::help_text("10_gltf", Flags::frame_loop, chapter_options);
+    CHECK(help.find("point lights (1..65536) [default: 16]") != std::string::npos);
+    CHECK(help.find("a glTF file") != std::string::npos);
+    CHECK(help.find("--screenshot FILE.png") != std::string::npos);
+}

@@ -3,13 +3,34 @@
 // Parsing is pure, so the unit tests can feed it any argument list.
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace vkt {
+
+// A flag of a chapter's own (chapter 06 on): declared in its ChapterSpec, parsed
+// and checked by the same parser as the shared flags, listed by --help.
+enum class OptionType {
+    integer,  // a whole number within [min, max]
+    number,   // a real number within [min, max]
+    choice,   // one of `choices`
+    text,     // any non-empty text (a file name, say)
+};
+
+struct OptionSpec {
+    std::string name;  // "--lights"
+    OptionType type = OptionType::text;
+    std::string value_name;            // shown in the usage line: "N", "FILE", "NAME"
+    std::string help;                  // one line
+    std::string default_value;         // as it would be typed; empty: unset unless given
+    double min = 0, max = 0;           // integer and number: the accepted range
+    std::vector<std::string> choices;  // choice: the accepted words
+};
 
 struct Options {
     bool headless = false;               // --headless: no window, even if a display exists
@@ -21,6 +42,15 @@ struct Options {
     std::string device;                  // --device NAME|INDEX
     std::optional<bool> validation;      // --validation / --no-validation (unset: on if installed)
     bool help = false;                   // --help
+
+    // The chapter's own flags (see OptionSpec): the value given, or the default.
+    std::map<std::string, std::string, std::less<>> values;
+    bool has(std::string_view name) const { return values.contains(name); }
+    // Each throws std::logic_error for a name the chapter did not declare or
+    // that has no value: a bug in the chapter, not bad input.
+    const std::string& text(std::string_view name) const;
+    int64_t integer(std::string_view name) const;
+    double number(std::string_view name) const;
 };
 
 // Which flags a chapter accepts. A flag a chapter would silently ignore is
@@ -40,9 +70,13 @@ public:
 };
 
 // args excludes the program name.
-Options parse_args(std::span<const char* const> args, Flags flags = Flags::frame_loop);
+// chapter_options are the chapter's own flags; their defaults are filled in.
+Options parse_args(std::span<const char* const> args, Flags flags = Flags::frame_loop,
+                   std::span<const OptionSpec> chapter_options = {});
 
-std::string usage_line(std::string_view program, Flags flags = Flags::frame_loop);
-std::string help_text(std::string_view program, Flags flags = Flags::frame_loop);
+std::string usage_line(std::string_view program, Flags flags = Flags::frame_loop,
+                       std::span<const OptionSpec> chapter_options = {});
+std::string help_text(std::string_view program, Flags flags = Flags::frame_loop,
+                      std::span<const OptionSpec> chapter_options = {});
 
 }  // namespace vkt

@@ -5,6 +5,7 @@
 
 #include "vkt/check.hpp"
 
+#include <cstddef>
 #include <span>
 #include <string>
 #include <string_view>
@@ -12,8 +13,64 @@
 
 namespace vkt {
 
+// One VkBool32 member of a feature struct: Vulkan 1.0's VkPhysicalDeviceFeatures
+// or the Vulkan 1.1, 1.2 and 1.3 feature structs. Name them with the macros
+// below, e.g. VKT_FEATURE_10(samplerAnisotropy), VKT_FEATURE_12(descriptorIndexing).
+struct Feature {
+    enum Set { core10, core11, core12, core13 };
+    const char* name;
+    Set set;
+    size_t offset;  // of the VkBool32 member within its struct
+};
+
+#define VKT_FEATURE_10(member)                                                      \
+    ::vkt::Feature {                                                                \
+#member, ::vkt::Feature::core10, offsetof(VkPhysicalDeviceFeatures, member) \
+    }
+#define VKT_FEATURE_11(member)                                                              \
+    ::vkt::Feature {                                                                        \
+#member, ::vkt::Feature::core11, offsetof(VkPhysicalDeviceVulkan11Features, member) \
+    }
+#define VKT_FEATURE_12(member)                                                              \
+    ::vkt::Feature {                                                                        \
+#member, ::vkt::Feature::core12, offsetof(VkPhysicalDeviceVulkan12Features, member) \
+    }
+#define VKT_FEATURE_13(member)                                                              \
+    ::vkt::Feature {                                                                        \
+#member, ::vkt::Feature::core13, offsetof(VkPhysicalDeviceVulkan13Features, member) \
+    }
+
+// Chapter 02's feature chain: the four feature structs linked through pNext,
+// for vkGetPhysicalDeviceFeatures2 (what a device has) and vkCreateDevice (what
+// we turn on). Not copyable: the pNext pointers point into the object itself.
+class FeatureChain {
+public:
+    FeatureChain();
+    FeatureChain(const FeatureChain&) = delete;
+    FeatureChain& operator=(const FeatureChain&) = delete;
+
+    VkBool32& operator[](const Feature& feature);
+    bool has(const Feature& feature) const;
+    VkPhysicalDeviceFeatures2* head() { return &features_; }
+
+private:
+    VkPhysicalDeviceFeatures2 features_{};
+    VkPhysicalDeviceVulkan11Features features11_{};
+    VkPhysicalDeviceVulkan12Features features12_{};
+    VkPhysicalDeviceVulkan13Features features13_{};
+};
+
+// What every chapter needs (dynamicRendering and synchronization2).
+std::span<const Feature> base_features();
+
 struct DeviceRequirements {
     std::vector<const char*> extensions;  // device extensions, e.g. VK_KHR_swapchain
+    // Features the chapter cannot run without: a device that lacks one is
+    // unsuitable, and says which.
+    std::vector<Feature> features;
+    // Features the chapter uses when present (anisotropic filtering, say); it
+    // asks Context::features whether it got them.
+    std::vector<Feature> optional_features;
 };
 
 // What we learned about one physical device.
@@ -61,8 +118,12 @@ public:
     VkQueue queue() const { return queue_; }
     uint32_t queue_family() const { return queue_family_; }
     const VkPhysicalDeviceProperties& properties() const { return properties_; }
+    // Exactly the features that were enabled: the base ones, the required ones,
+    // and the optional ones the device has.
+    const FeatureChain& features() const { return enabled_; }
 
 private:
+    FeatureChain enabled_;
     VkPhysicalDevice physical_ = VK_NULL_HANDLE;
     VkDevice device_ = VK_NULL_HANDLE;
     VkQueue queue_ = VK_NULL_HANDLE;

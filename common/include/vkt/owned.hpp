@@ -61,6 +61,9 @@ using SurfaceHandle = Owned<VkSurfaceKHR, VkInstance, vkDestroySurfaceKHR>;
 using DeviceMemory = Owned<VkDeviceMemory, VkDevice, vkFreeMemory>;
 using BufferHandle = Owned<VkBuffer, VkDevice, vkDestroyBuffer>;
 using ImageHandle = Owned<VkImage, VkDevice, vkDestroyImage>;
+using DescriptorSetLayout = Owned<VkDescriptorSetLayout, VkDevice, vkDestroyDescriptorSetLayout>;
+using DescriptorPool = Owned<VkDescriptorPool, VkDevice, vkDestroyDescriptorPool>;
+using Sampler = Owned<VkSampler, VkDevice, vkDestroySampler>;
 
 // Small constructors for the objects every frame loop needs.
 Semaphore create_semaphore(VkDevice device);

@@ -12,6 +12,7 @@
 
 #include "vkt/args.hpp"
 #include "vkt/device.hpp"
+#include "vkt/upload.hpp"
 
 #include <functional>
 #include <memory>
@@ -31,6 +32,11 @@ struct Context {
     VkFormat color_format;  // the colour target's format (always an _SRGB format)
     VkExtent2D extent;      // the colour target's size at start (see Renderer::resize)
     uint32_t frames_in_flight;
+    const VkPhysicalDeviceProperties& properties;  // limits, name, ...
+    const FeatureChain& features;  // what was enabled: ask it about optional features
+
+    // What the upload helpers need (chapter 05).
+    Gpu gpu() const { return {physical, device, queue, queue_family}; }
 };
 
 // [renderer-contract]
@@ -57,6 +63,7 @@ struct ChapterSpec {
     std::string name;   // "04_triangle"
     std::string title;  // shown in the window's title bar
     DeviceRequirements requirements;
+    std::vector<OptionSpec> options;  // the chapter's own flags (--model, --lights, ...)
 };
 
 using RendererFactory = std::function<std::unique_ptr<Renderer>(const Context&)>;
