@@ -17,6 +17,10 @@ std::filesystem::path shader_path(std::string_view chapter, std::string_view gls
     return executable_dir().parent_path() / "shaders" / chapter / (std::string(glsl_file) + ".spv");
 }
 
+std::filesystem::path asset_path(std::string_view name) {
+    return executable_dir().parent_path() / "assets" / name;
+}
+
 std::vector<char> read_file(const std::filesystem::path& path) {
     std::ifstream file(path, std::ios::binary | std::ios::ate);
     if (!file) throw Error("cannot open " + path.string());
