@@ -59,15 +59,23 @@ Buffer create_buffer(VkPhysicalDevice physical, VkDevice device, VkDeviceSize si
 
 Image create_image_2d(VkPhysicalDevice physical, VkDevice device, VkFormat format,
                       VkExtent2D extent, VkImageUsageFlags usage, VkImageAspectFlags aspect) {
+    return create_image_2d_mips(physical, device, format, extent, 1, usage, aspect);
+}
+
+Image create_image_2d_mips(VkPhysicalDevice physical, VkDevice device, VkFormat format,
+                           VkExtent2D extent, uint32_t mip_levels, VkImageUsageFlags usage,
+                           VkImageAspectFlags aspect) {
+    if (mip_levels == 0) throw Error("create_image_2d_mips: an image needs at least one mip level");
     Image out;
     out.format = format;
     out.extent = extent;
+    out.mip_levels = mip_levels;
     VkImageCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
         .imageType = VK_IMAGE_TYPE_2D,
         .format = format,
         .extent = {extent.width, extent.height, 1},
-        .mipLevels = 1,
+        .mipLevels = mip_levels,
         .arrayLayers = 1,
         .samples = VK_SAMPLE_COUNT_1_BIT,
         .tiling = VK_IMAGE_TILING_OPTIMAL,
@@ -89,7 +97,7 @@ Image create_image_2d(VkPhysicalDevice physical, VkDevice device, VkFormat forma
         .image = image,
         .viewType = VK_IMAGE_VIEW_TYPE_2D,
         .format = format,
-        .subresourceRange = {aspect, 0, 1, 0, 1},
+        .subresourceRange = {aspect, 0, mip_levels, 0, 1},
     };
     VkImageView view;
     VKT_CHECK(vkCreateImageView(device, &view_info, nullptr, &view));

@@ -27,6 +27,7 @@ struct Image {
     ImageView view;  // declared last, so destroyed first
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkExtent2D extent{};
+    uint32_t mip_levels = 1;  // chapter 09: a texture's mip chain
 
     Image() = default;
     Image(Image&&) = default;
@@ -39,6 +40,7 @@ struct Image {
         view = std::move(other.view);
         format = other.format;
         extent = other.extent;
+        mip_levels = other.mip_levels;
         return *this;
     }
 };
@@ -46,5 +48,10 @@ struct Image {
 // A 2D image in device-local memory, one mip level, one layer, with a view.
 Image create_image_2d(VkPhysicalDevice physical, VkDevice device, VkFormat format,
                       VkExtent2D extent, VkImageUsageFlags usage, VkImageAspectFlags aspect);
+
+// The same with `mip_levels` mip levels (chapter 09); the view sees all of them.
+Image create_image_2d_mips(VkPhysicalDevice physical, VkDevice device, VkFormat format,
+                           VkExtent2D extent, uint32_t mip_levels, VkImageUsageFlags usage,
+                           VkImageAspectFlags aspect);
 
 }  // namespace vkt
