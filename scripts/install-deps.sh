@@ -20,7 +20,8 @@ sudo_if_needed apt-get update -q
 sudo_if_needed apt-get install -y -q --no-install-recommends \
   build-essential cmake ninja-build pkg-config \
   libvulkan-dev vulkan-validationlayers glslang-tools vulkan-tools \
-  libglfw3-dev libglm-dev libtinygltf-dev libstb-dev xvfb xauth xdotool \
+  libglfw3-dev libglm-dev libtinygltf-dev libstb-dev xvfb xauth xdotool openbox wmctrl \
+  stress-ng \
   python3 python3-markdown python3-pygments
 sudo_if_needed apt-get install -y -q --no-install-recommends -t bookworm-backports \
   mesa-vulkan-drivers catch2

@@ -1,24 +1,119 @@
-# Sourced by the window tests.
+# Sourced by the window tests, which CTest runs under xvfb-run.
+#
+# The rule (book/appendix_testing.md): a window test is driven by events, never
+# by the clock. The chapter runs open-ended; the script acts (resize, minimise,
+# close), then waits for the event that proves the chapter reacted: a line the
+# chapter writes to stderr, a window appearing, the process exiting. Every wait
+# has a bound, and only a failure ever reaches it; it then says which event
+# did not come. Nothing depends on how fast lavapipe draws or X answers.
 
-# find_window TITLE prints the X window id of the first window with that
-# title, waiting up to 30 s for it to appear (a loaded CI machine starts the
-# X server and the chapter slowly), or prints nothing.
+# Bounds for single events, in tenths of a second. Generous: they only decide
+# how long a broken run takes to fail, never whether a working one passes.
+VKT_EVENT_BOUND=${VKT_EVENT_BOUND:-1200}   # 120 s
+
+err=""   # the chapter's stderr, set by start_chapter
+pid=""   # the chapter's process id
+
+fail() {
+  echo "FAIL: $*"
+  if [ -n "$err" ] && [ -f "$err" ]; then echo "--- the chapter's stderr ---"; grep -v '^\[validation' "$err"; fi
+  [ -n "$pid" ] && kill "$pid" 2>/dev/null
+  exit 1
+}
+
+# start_wm: a real window manager (openbox) on the Xvfb display, so that
+# minimising and the close button work as on a desktop. Waits until it has
+# taken over the screen (wmctrl answers).
+start_wm() {
+  command -v openbox >/dev/null || fail "openbox is not installed (scripts/install-deps.sh)"
+  openbox --sm-disable >/dev/null 2>&1 &
+  for _ in $(seq "$VKT_EVENT_BOUND"); do
+    wmctrl -m >/dev/null 2>&1 && return 0
+    sleep 0.1
+  done
+  fail "the window manager did not start"
+}
+
+# start_chapter STDERR_FILE EXE ARGS...: runs the chapter in the background.
+start_chapter() {
+  err=$1; shift
+  rm -f "$err"
+  "$@" >/dev/null 2>"$err" &
+  pid=$!
+}
+
+# find_window TITLE: prints the X window id of the chapter's window, waiting
+# for it to be mapped.
 find_window() {
   local window
-  for _ in $(seq 300); do
-    window=$(xdotool search --name "$1" 2>/dev/null | head -n 1)
+  for _ in $(seq "$VKT_EVENT_BOUND"); do
+    window=$(xdotool search --onlyvisible --name "$1" 2>/dev/null | head -n 1)
     [ -n "$window" ] && { echo "$window"; return 0; }
+    kill -0 "$pid" 2>/dev/null || return 1
     sleep 0.1
   done
   return 1
+}
+
+# mark: the number of lines the chapter has written so far; wait_line MARK
+# REGEX waits for a line matching REGEX written after that mark.
+mark() { wc -l <"$err"; }
+wait_line() {
+  local from=$(($1 + 1)) what=$2
+  for _ in $(seq "$VKT_EVENT_BOUND"); do
+    tail -n "+$from" "$err" | grep -qE "$what" && return 0
+    kill -0 "$pid" 2>/dev/null || { tail -n "+$from" "$err" | grep -qE "$what" && return 0; fail "the chapter exited before it said: $what"; }
+    sleep 0.1
+  done
+  fail "the chapter never said: $what"
+}
+
+# resize WINDOW W H: resizes the window and waits until the chapter has
+# recreated its swapchain at that size and presented a frame of it.
+resize() {
+  local m; m=$(mark)
+  xdotool windowsize "$1" "$2" "$3" || fail "xdotool could not resize the window"
+  wait_line "$m" "swapchain recreated at $2x$3"
+  wait_line "$m" "presented a frame at $2x$3"
+}
+
+# wait_exit: waits for the chapter to exit and sets $status.
+wait_exit() {
+  for _ in $(seq "$VKT_EVENT_BOUND"); do
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.1
+  done
+  kill -0 "$pid" 2>/dev/null && fail "the chapter did not exit after its window was closed"
+  wait "$pid"
+  status=$?
+  pid=""
+}
+
+# close_with_wm WINDOW: the window manager's close (the title bar's X button):
+# _NET_CLOSE_WINDOW, which openbox turns into WM_DELETE_WINDOW for GLFW.
+close_with_wm() { wmctrl -i -c "$1" || fail "wmctrl could not close the window"; wait_exit; }
+# close_with_escape WINDOW: the key every chapter quits on.
+close_with_escape() { xdotool key --window "$1" Escape || fail "xdotool could not press Escape"; wait_exit; }
+
+# expect_clean_exit SCREENSHOT W H: exit status 0, a clean validation report,
+# and a screenshot of the last frame presented, at W x H.
+expect_clean_exit() {
+  [ "$status" -eq 0 ] || fail "exit status $status"
+  grep -q "validation: 0 warnings, 0 errors" "$err" || fail "validation was not clean"
+  grep -q "wrote .* ($2x$3)" "$err" || fail "the screenshot is not of the last size, $2x$3"
+  [ -f "$1" ] || fail "no screenshot was written"
 }
 
 # check_triangle CHECKER PNG W H: chapter 04's picture at any size has the
 # clear colour in its corners and, at its centre (clip space 0,0, where the
 # vertex colours mix 1/2 red, 1/4 green, 1/4 blue), linear (0.55, 0.35, 0.325),
 # which the _SRGB target stores as (196, 160, 154); the tolerance covers the
-# half-pixel offset of the centre sample.
+# half-pixel offset of the centre sample (and, in tiny pictures, the edges).
 check_triangle() {
   "$1" --png "$2" --pixel 0,0,39,39,56 --pixel $(($3 - 1)),$(($4 - 1)),39,39,56 \
        --pixel $(($3 / 2)),$(($4 / 2)),196,160,154,3
 }
+
+# main_thread_ticks: CPU time (user + system, in clock ticks) of the chapter's
+# main thread, from /proc.
+main_thread_ticks() { awk '{print $14 + $15}' "/proc/$pid/task/$pid/stat"; }

@@ -76,6 +76,7 @@ private:
     void recreate_swapchain();
     void collect_gpu_time(FrameSlot& slot, uint32_t slot_index);
     void save_screenshot(const std::string& path);
+    void note_presented(VkExtent2D extent);
 
     const Options& options_;
     const ChapterSpec& spec_;
@@ -92,6 +93,7 @@ private:
     std::unique_ptr<Renderer> renderer_;
     std::vector<double> cpu_ms_, gpu_ms_;
     std::optional<uint32_t> last_slot_;  // the slot of the last frame submitted
+    VkExtent2D presented_{};              // the size of the last frame presented
 };
 
 // Fails early, with the reason, if the screenshot could not be written: better
@@ -279,6 +281,20 @@ void ChapterRun::run(const RendererFactory& factory) {
         if (window_) {
             window_->poll();
             if (window_->should_close()) break;
+            // [minimised]
+            // A minimised window shows nothing, so draw nothing: sleep until the
+            // window manager gives it back (or closes it), then start afresh.
+            if (window_->minimised()) {
+                std::fprintf(stderr, "%s: minimised after %llu frames: waiting\n",
+                             spec_.name.c_str(), (unsigned long long)index);
+                window_->wait_while_minimised();
+                if (window_->should_close()) break;
+                std::fprintf(stderr, "%s: restored, still at %llu frames\n", spec_.name.c_str(),
+                             (unsigned long long)index);
+                recreate_swapchain();
+                continue;
+            }
+            // [/minimised]
         }
         const double time =
             fixed_step ? double(index) * fixed_time_step : window_->seconds() - start;
@@ -370,6 +386,7 @@ bool ChapterRun::draw_frame(uint64_t index, double time) {
     // [/submit]
     slot.timing_pending = bool(timestamps_);
     last_slot_ = slot_index;
+    if (!swapchain_) note_presented(target_.extent);
 
     // [present]
     if (swapchain_) {
@@ -385,6 +402,7 @@ bool ChapterRun::draw_frame(uint64_t index, double time) {
         };
         VkResult result = vkQueuePresentKHR(device_->queue(), &present);
         if (result != VK_ERROR_OUT_OF_DATE_KHR) check(result, "vkQueuePresentKHR");
+        note_presented(target_.extent);
         const bool resized = window_ && window_->take_resized();
         if (suboptimal || result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR ||
             resized)
@@ -492,6 +510,7 @@ void ChapterRun::recreate_swapchain() {
         throw Error(std::string("the surface no longer offers a format with the byte order of ") +
                     format_name(target_.format));
     VkExtent2D extent = swapchain_->extent();
+    presented_ = {};  // the next present is reported, whatever its size
     std::fprintf(stderr, "%s: swapchain recreated at %ux%u\n", spec_.name.c_str(), extent.width,
                  extent.height);
     if (extent.width != target_.extent.width || extent.height != target_.extent.height) {
@@ -500,6 +519,15 @@ void ChapterRun::recreate_swapchain() {
     }
 }
 // [/recreate]
+
+// Says when the first frame of a new size has been presented: the event a
+// window test waits for after it resizes, before it closes the window.
+void ChapterRun::note_presented(VkExtent2D extent) {
+    if (extent.width == presented_.width && extent.height == presented_.height) return;
+    presented_ = extent;
+    std::fprintf(stderr, "%s: presented a frame at %ux%u\n", spec_.name.c_str(), extent.width,
+                 extent.height);
+}
 
 void ChapterRun::collect_gpu_time(FrameSlot& slot, uint32_t slot_index) {
     if (!slot.timing_pending) return;

@@ -60,10 +60,13 @@ VkExtent2D Window::framebuffer_size() const {
     return {uint32_t(width), uint32_t(height)};
 }
 
+bool Window::minimised() const {
+    const VkExtent2D size = framebuffer_size();
+    return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) || size.width == 0 || size.height == 0;
+}
+
 void Window::wait_while_minimised() const {
-    for (VkExtent2D size = framebuffer_size();
-         (size.width == 0 || size.height == 0) && !should_close(); size = framebuffer_size())
-        glfwWaitEvents();
+    while (minimised() && !should_close()) glfwWaitEvents();
 }
 
 bool Window::take_resized() {

@@ -25,7 +25,11 @@ public:
     bool should_close() const;
     void poll() const;
     VkExtent2D framebuffer_size() const;
-    // Sleeps while the window is minimised (its framebuffer is 0x0).
+    // Minimised: iconified by the window manager (on X11 the framebuffer keeps
+    // its size then), or a framebuffer of 0x0 (what Windows reports).
+    bool minimised() const;
+    // Blocks in glfwWaitEvents while the window is minimised: no frames, no
+    // spinning. Returns at once if it is not (or once it should close).
     void wait_while_minimised() const;
     // True once after the framebuffer changed size.
     bool take_resized();
