@@ -230,8 +230,8 @@ Texture create_texture(const Gpu& gpu, const RgbaImage& pixels, bool srgb, float
     one_time_submit(gpu, [&](VkCommandBuffer cmd) {
         mip_barrier(cmd, image, 0, levels, VK_IMAGE_LAYOUT_UNDEFINED,
                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE,
-                    VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
-                    VK_ACCESS_2_TRANSFER_WRITE_BIT);
+                    VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT,
+                    VK_ACCESS_2_TRANSFER_WRITE_BIT);  // the copy and the blits write after it
         vkCmdCopyBufferToImage(cmd, staging.buffer, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                                uint32_t(regions.size()), regions.data());
         if (mips != MipGeneration::blit) {
