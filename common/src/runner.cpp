@@ -1,6 +1,7 @@
 #include "vkt/runner.hpp"
 
 #include "vkt/barrier.hpp"
+#include "vkt/gpu_timer.hpp"
 #include "vkt/image_io.hpp"
 #include "vkt/instance.hpp"
 #include "vkt/memory.hpp"
@@ -54,8 +55,7 @@ struct FrameSlot {
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     Fence done;                // signalled when the GPU finished this slot's last frame
     Semaphore image_acquired;  // signalled when the acquired swapchain image may be written
-    bool timing_pending = false;
-    Readback readback;  // with --screenshot: what this slot's frame presented
+    Readback readback;         // with --screenshot: what this slot's frame presented
 };
 // [/frame-slot]
 
@@ -74,7 +74,6 @@ private:
     bool draw_frame(uint64_t index, double time);
     void record(FrameSlot& slot, uint32_t image_index, const Frame& frame);
     void recreate_swapchain();
-    void collect_gpu_time(FrameSlot& slot, uint32_t slot_index);
     void save_screenshot(const std::string& path);
     void note_presented(VkExtent2D extent);
 
@@ -88,12 +87,11 @@ private:
     std::unique_ptr<Swapchain> swapchain_;
     Image target_;
     std::vector<FrameSlot> slots_;
-    QueryPool timestamps_;
-    uint64_t timestamp_mask_ = 0;
+    GpuTimer gpu_timer_;
     std::unique_ptr<Renderer> renderer_;
-    std::vector<double> cpu_ms_, gpu_ms_;
+    std::vector<double> cpu_ms_;
     std::optional<uint32_t> last_slot_;  // the slot of the last frame submitted
-    VkExtent2D presented_{};              // the size of the last frame presented
+    VkExtent2D presented_{};             // the size of the last frame presented
 };
 
 // Fails early, with the reason, if the screenshot could not be written: better
@@ -214,22 +212,8 @@ ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
 
     if (options.benchmark) {
         // GPU time from two timestamps per frame, where the queue can write them.
-        uint32_t count = 0;
-        vkGetPhysicalDeviceQueueFamilyProperties(device_->physical(), &count, nullptr);
-        std::vector<VkQueueFamilyProperties> families(count);
-        vkGetPhysicalDeviceQueueFamilyProperties(device_->physical(), &count, families.data());
-        const uint32_t bits = families[device_->queue_family()].timestampValidBits;
-        if (bits > 0 && device_->properties().limits.timestampPeriod > 0) {
-            timestamp_mask_ = bits >= 64 ? ~0ull : (1ull << bits) - 1;
-            VkQueryPoolCreateInfo info{
-                .sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO,
-                .queryType = VK_QUERY_TYPE_TIMESTAMP,
-                .queryCount = 2 * frames_in_flight,
-            };
-            VkQueryPool pool;
-            VKT_CHECK(vkCreateQueryPool(*device_, &info, nullptr, &pool));
-            timestamps_ = QueryPool(*device_, pool);
-        }
+        gpu_timer_ =
+            GpuTimer(device_->physical(), *device_, device_->queue_family(), frames_in_flight);
     }
 
     std::string where = presentation_name(presentation_);
@@ -307,7 +291,7 @@ void ChapterRun::run(const RendererFactory& factory) {
     }
 
     VKT_CHECK(vkDeviceWaitIdle(*device_));
-    for (uint32_t i = 0; i < frames_in_flight; ++i) collect_gpu_time(slots_[i], i);
+    for (uint32_t i = 0; i < frames_in_flight; ++i) gpu_timer_.collect(i);
     if (!options_.screenshot.empty()) {
         if (!last_slot_) throw Error("no frame was drawn, so there is no screenshot to write");
         save_screenshot(options_.screenshot);
@@ -321,7 +305,7 @@ void ChapterRun::run(const RendererFactory& factory) {
             json_string(spec_.name).c_str(), json_string(device_->properties().deviceName).c_str(),
             json_string(presentation_name(presentation_)).c_str(), target_.extent.width,
             target_.extent.height, cpu_ms_.size(), json_summary(cpu_ms_).c_str(),
-            json_summary(gpu_ms_).c_str());
+            json_summary(gpu_timer_.samples_ms()).c_str());
     }
     renderer_.reset();
 }
@@ -335,7 +319,7 @@ bool ChapterRun::draw_frame(uint64_t index, double time) {
     // so its command buffer and semaphore can be used again.
     VkFence done = slot.done;
     VKT_CHECK(vkWaitForFences(*device_, 1, &done, VK_TRUE, UINT64_MAX));
-    collect_gpu_time(slot, slot_index);
+    gpu_timer_.collect(slot_index);
 
     uint32_t image_index = 0;
     bool suboptimal = false;  // an image was acquired, but recreate after this frame
@@ -384,7 +368,6 @@ bool ChapterRun::draw_frame(uint64_t index, double time) {
     };
     VKT_CHECK(vkQueueSubmit2(device_->queue(), 1, &submit, slot.done));
     // [/submit]
-    slot.timing_pending = bool(timestamps_);
     last_slot_ = slot_index;
     if (!swapchain_) note_presented(target_.extent);
 
@@ -419,11 +402,7 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
         .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT,
     };
     VKT_CHECK(vkBeginCommandBuffer(cmd, &begin));
-    const uint32_t query = 2 * frame.slot;
-    if (timestamps_) {
-        vkCmdResetQueryPool(cmd, timestamps_, query, 2);
-        vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps_, query);
-    }
+    gpu_timer_.begin(cmd, frame.slot);
 
     // [frame-barriers]
     // Our colour target: the previous frame's copy must have read it before we
@@ -437,8 +416,7 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
 
     // GPU time ends here: the copy below waits for the presentation engine,
     // which is not the chapter's cost.
-    if (timestamps_)
-        vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps_, query + 1);
+    gpu_timer_.end(cmd, frame.slot);
 
     // The chapter's writes must be finished and visible before we copy.
     image_barrier(cmd, target_.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
@@ -527,17 +505,6 @@ void ChapterRun::note_presented(VkExtent2D extent) {
     presented_ = extent;
     std::fprintf(stderr, "%s: presented a frame at %ux%u\n", spec_.name.c_str(), extent.width,
                  extent.height);
-}
-
-void ChapterRun::collect_gpu_time(FrameSlot& slot, uint32_t slot_index) {
-    if (!slot.timing_pending) return;
-    slot.timing_pending = false;
-    uint64_t ticks[2];
-    VKT_CHECK(vkGetQueryPoolResults(*device_, timestamps_, 2 * slot_index, 2, sizeof ticks, ticks,
-                                    sizeof(uint64_t),
-                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
-    const uint64_t elapsed = (ticks[1] - ticks[0]) & timestamp_mask_;
-    gpu_ms_.push_back(double(elapsed) * device_->properties().limits.timestampPeriod / 1e6);
 }
 
 void ChapterRun::save_screenshot(const std::string& path) {
