@@ -30,12 +30,10 @@ namespace {
 // stb_image decodes PNG, JPEG, BMP, TGA...; asking for 4 channels gives
 // 8-bit RGBA whatever the file holds (alpha 255 where it has none).
 vkt::RgbaImage load_texture(const std::filesystem::path& path) {
-    if (!std::filesystem::is_regular_file(path))
-        throw vkt::Error("cannot open " + path.string());
+    if (!std::filesystem::is_regular_file(path)) throw vkt::Error("cannot open " + path.string());
     int width = 0, height = 0, channels_in_file = 0;
     stbi_uc* data = stbi_load(path.c_str(), &width, &height, &channels_in_file, 4);
-    if (!data)
-        throw vkt::Error(path.string() + ": cannot decode image: " + stbi_failure_reason());
+    if (!data) throw vkt::Error(path.string() + ": cannot decode image: " + stbi_failure_reason());
     vkt::RgbaImage image{uint32_t(width), uint32_t(height), {}};
     image.pixels.assign(data, data + size_t(width) * size_t(height) * 4);
     stbi_image_free(data);
@@ -172,8 +170,8 @@ vkt::Image upload_texture(const vkt::Context& context, const vkt::RgbaImage& pix
         // (there are none) may be dropped. Both writers of the image, the
         // copy and the blits, wait for the change.
         transition(cmd, image, 0, out.mip_levels, VK_IMAGE_LAYOUT_UNDEFINED,
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE,
-                   VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                   VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT,
                    VK_ACCESS_2_TRANSFER_WRITE_BIT);
         vkCmdCopyBufferToImage(cmd, staging.buffer, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                                uint32_t(regions.size()), regions.data());
@@ -211,11 +209,11 @@ vkt::Image upload_texture(const vkt::Context& context, const vkt::RgbaImage& pix
                        VK_ACCESS_2_NONE, kSampling, kSampledRead);
         }
         // The smallest level was only written, never read.
-        transition(cmd, image, out.mip_levels - 1, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                   out.mip_levels == 1 ? VK_PIPELINE_STAGE_2_COPY_BIT
-                                       : VK_PIPELINE_STAGE_2_BLIT_BIT,
-                   VK_ACCESS_2_TRANSFER_WRITE_BIT, kSampling, kSampledRead);
+        transition(
+            cmd, image, out.mip_levels - 1, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+            out.mip_levels == 1 ? VK_PIPELINE_STAGE_2_COPY_BIT : VK_PIPELINE_STAGE_2_BLIT_BIT,
+            VK_ACCESS_2_TRANSFER_WRITE_BIT, kSampling, kSampledRead);
         // [/blit-mips]
     });  // waits: the staging buffer may go now
     return out;
@@ -251,8 +249,9 @@ public:
             VK_FORMAT_FEATURE_BLIT_DST_BIT;
         if (mips == "blit" &&
             (format_properties.optimalTilingFeatures & blit_features) != blit_features) {
-            std::fprintf(stderr, "09_textures: this device cannot blit-filter R8G8B8A8_SRGB: "
-                                 "making the mips on the CPU\n");
+            std::fprintf(stderr,
+                         "09_textures: this device cannot blit-filter R8G8B8A8_SRGB: "
+                         "making the mips on the CPU\n");
             mips = "cpu";
         }
         // [/format-check]
@@ -266,8 +265,8 @@ public:
         if (!context.features.has(VKT_FEATURE_10(samplerAnisotropy))) anisotropy = 0.0f;
         VkSamplerCreateInfo sampler_info{
             .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
-            .magFilter = VK_FILTER_LINEAR,  // magnified: blend the 4 nearest texels
-            .minFilter = VK_FILTER_LINEAR,  // minified: the same, within a mip level
+            .magFilter = VK_FILTER_LINEAR,                // magnified: blend the 4 nearest texels
+            .minFilter = VK_FILTER_LINEAR,                // minified: the same, within a mip level
             .mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR,  // and blend the 2 nearest levels
             .addressModeU = VK_SAMPLER_ADDRESS_MODE_REPEAT,  // uv 1.25 reads 0.25
             .addressModeV = VK_SAMPLER_ADDRESS_MODE_REPEAT,
@@ -278,9 +277,9 @@ public:
             .compareEnable = VK_FALSE,  // comparison is for shadow maps
             .compareOp = VK_COMPARE_OP_ALWAYS,
             .minLod = 0.0f,
-            .maxLod = VK_LOD_CLAMP_NONE,  // every level the image has
+            .maxLod = VK_LOD_CLAMP_NONE,                      // every level the image has
             .borderColor = VK_BORDER_COLOR_INT_OPAQUE_BLACK,  // unused with REPEAT
-            .unnormalizedCoordinates = VK_FALSE,  // uv in 0..1, not texels
+            .unnormalizedCoordinates = VK_FALSE,              // uv in 0..1, not texels
         };
         VkSampler sampler;
         VKT_CHECK(vkCreateSampler(device, &sampler_info, nullptr, &sampler));
@@ -319,12 +318,13 @@ public:
         VkDescriptorSetLayout set_layouts[] = {set_layout_};
         VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(Push)};
         layout_ = vkt::create_pipeline_layout(device, set_layouts, {&push, 1});
-        pipeline_ = vkt::create_graphics_pipeline(device, {
-                                                              .vertex = vertex,
-                                                              .fragment = fragment,
-                                                              .layout = layout_,
-                                                              .color_formats = {context.color_format},
-                                                          });
+        pipeline_ =
+            vkt::create_graphics_pipeline(device, {
+                                                      .vertex = vertex,
+                                                      .fragment = fragment,
+                                                      .layout = layout_,
+                                                      .color_formats = {context.color_format},
+                                                  });
     }
 
     void record(const vkt::Frame& frame) override {
@@ -357,8 +357,8 @@ public:
         // [draw]
         vkCmdBindPipeline(frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
         VkDescriptorSet set = set_;
-        vkCmdBindDescriptorSets(frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set,
-                                0, nullptr);
+        vkCmdBindDescriptorSets(frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set, 0,
+                                nullptr);
         vkCmdPushConstants(frame.cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(Push), &push);
         vkt::set_viewport_and_scissor(frame.cmd, frame.extent);
         vkCmdDraw(frame.cmd, 6, 1, 0, 0);  // the floor: two triangles

@@ -20,8 +20,8 @@ RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what) 
     int width = 0, height = 0, channels = 0;
     // Ask for 4 channels whatever the file holds: grey, RGB and palette images
     // all arrive as RGBA, alpha 255 where the file has none.
-    stbi_uc* data = stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height,
-                                          &channels, 4);
+    stbi_uc* data =
+        stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 4);
     if (!data) {
         const char* reason = stbi_failure_reason();
         throw Error(what + ": cannot decode image: " + (reason ? reason : "unknown reason"));
@@ -194,9 +194,9 @@ Texture create_texture(const Gpu& gpu, const RgbaImage& pixels, bool srgb, float
     // What goes into the staging buffer: level 0, or (cpu) every level.
     std::vector<RgbaImage> cpu_levels;
     if (mips == MipGeneration::cpu) cpu_levels = generate_mips_cpu(pixels, srgb);
-    std::span<const RgbaImage> uploads =
-        mips == MipGeneration::cpu ? std::span<const RgbaImage>(cpu_levels)
-                                   : std::span<const RgbaImage>(&pixels, 1);
+    std::span<const RgbaImage> uploads = mips == MipGeneration::cpu
+                                             ? std::span<const RgbaImage>(cpu_levels)
+                                             : std::span<const RgbaImage>(&pixels, 1);
     const uint32_t levels =
         mips == MipGeneration::none ? 1 : mip_level_count(pixels.width, pixels.height);
 

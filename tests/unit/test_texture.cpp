@@ -48,8 +48,8 @@ TEST_CASE("mip_extent halves, rounds down and stops at 1", "[texture]") {
 
 TEST_CASE("decode_image reads back a PNG written by write_png", "[texture]") {
     const auto path = std::filesystem::path(VKT_BINARY_DIR) / "test_texture_roundtrip.png";
-    vkt::RgbaImage original = solid(3, 2, {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255,  //
-                                           10, 20, 30, 40, 128, 128, 128, 0, 1, 2, 3, 4});
+    vkt::RgbaImage original = solid(3, 2, {255, 0,  0,  255, 0,   255, 0,   255, 0, 0, 255, 255,  //
+                                           10,  20, 30, 40,  128, 128, 128, 0,   1, 2, 3,   4});
     vkt::write_png(path, original);
     vkt::RgbaImage decoded = vkt::decode_image(bytes_of(path), "roundtrip");
     CHECK(decoded.width == 3);
@@ -61,7 +61,8 @@ TEST_CASE("decode_image reads back a PNG written by write_png", "[texture]") {
 }
 
 TEST_CASE("decode_image refuses bytes that are no image, with a clear message", "[texture]") {
-    const std::vector<uint8_t> garbage = {'n', 'o', 't', ' ', 'a', 'n', ' ', 'i', 'm', 'a', 'g', 'e'};
+    const std::vector<uint8_t> garbage = {'n', 'o', 't', ' ', 'a', 'n',
+                                          ' ', 'i', 'm', 'a', 'g', 'e'};
     CHECK_THROWS_AS(vkt::decode_image(garbage, "garbage.png"), vkt::Error);
     CHECK_THROWS_WITH(vkt::decode_image(garbage, "garbage.png"),
                       ContainsSubstring("garbage.png: cannot decode image: "));
@@ -81,8 +82,9 @@ TEST_CASE("load_image_file names a missing file", "[texture]") {
 TEST_CASE("downsample_box averages 2x2 in linear light for sRGB data", "[texture]") {
     // One 2x2 image; per channel: R 0 0 255 255, G 0 255 255 255, B all 128,
     // A 0 255 255 255.
-    vkt::RgbaImage image = solid(2, 2, {0, 0, 128, 0, 0, 255, 128, 255,  //
-                                        255, 255, 128, 255, 255, 255, 128, 255});
+    vkt::RgbaImage image = solid(2, 2,
+                                 {0, 0, 128, 0, 0, 255, 128, 255,  //
+                                  255, 255, 128, 255, 255, 255, 128, 255});
     vkt::RgbaImage srgb = vkt::downsample_box(image, true);
     REQUIRE(srgb.width == 1);
     REQUIRE(srgb.height == 1);
@@ -113,8 +115,8 @@ TEST_CASE("generate_mips_cpu makes the whole chain of a 4x4 image", "[texture]")
     CHECK(levels[0].pixels == image.pixels);
     // Level 1: each quadrant is uniform, so it comes back exactly.
     CHECK(levels[1].width == 2);
-    CHECK(levels[1].pixels == std::vector<uint8_t>{255, 0,   0,   255, 0,   255, 0,   255,  //
-                                                   0,   0,   255, 255, 255, 255, 255, 255});
+    CHECK(levels[1].pixels == std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255,  //
+                                                   0, 0, 255, 255, 255, 255, 255, 255});
     // Level 2: each channel is 255 in two quadrants of four, linear 0.5: 188.
     CHECK(levels[2].width == 1);
     CHECK(levels[2].pixels == std::vector<uint8_t>{188, 188, 188, 255});

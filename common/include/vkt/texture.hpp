@@ -35,10 +35,9 @@ VkExtent2D mip_extent(uint32_t width, uint32_t height, uint32_t level);
 
 // The CPU fallback for mip generation: the next level down, each texel the
 // average of the 2x2 texels above it (an odd last row or column is left
-// out; a side one texel wide is averaged with itself). With srgb, R, G and B are averaged in linear light
-// (decoded from sRGB, averaged, encoded again), as a blit of an _SRGB image
-// does; alpha, and everything when !srgb, is averaged as stored. Rounds to
-// nearest.
+// out; a side one texel wide is averaged with itself). With srgb, R, G and B are averaged in linear
+// light (decoded from sRGB, averaged, encoded again), as a blit of an _SRGB image does; alpha, and
+// everything when !srgb, is averaged as stored. Rounds to nearest.
 RgbaImage downsample_box(const RgbaImage& level, bool srgb);
 
 // Every level of the chain, level 0 (a copy of base) first.
