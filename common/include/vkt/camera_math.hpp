@@ -11,10 +11,10 @@ namespace vkt {
 
 // glm::perspective (right-handed, looking down -z, depth 0..1) with
 // proj[1][1] negated, so that +y in the world goes up on the screen although
-// Vulkan's framebuffer y points down. Negating y mirrors the picture, which
-// turns counter-clockwise triangles clockwise in framebuffer coordinates;
-// keep VK_FRONT_FACE_COUNTER_CLOCKWISE for triangles wound counter-clockwise
-// seen from outside.
+// Vulkan's framebuffer y points down. With it, a triangle that the viewer sees
+// counter-clockwise is counter-clockwise by Vulkan's rule too: keep
+// VK_FRONT_FACE_COUNTER_CLOCKWISE for meshes wound counter-clockwise seen from
+// outside (chapter 07's cubes, glTF).
 glm::mat4 vulkan_perspective(float fovy_radians, float aspect, float z_near, float z_far);
 
 // The world-from-object matrix T * R * S: scale by `scale`, rotate by
