@@ -72,11 +72,11 @@ constexpr uint32_t object_count = 2;
 std::array<ObjectUniforms, object_count> scene(double t) {
     const float time = float(t);
     const glm::vec3 up(0.0f, 1.0f, 0.0f);
-    const glm::mat4 big = glm::scale(glm::rotate(glm::mat4(1.0f), 0.5f + 0.6f * time, up),
-                                     glm::vec3(2.0f));
+    const glm::mat4 big =
+        glm::scale(glm::rotate(glm::mat4(1.0f), 0.5f + 0.6f * time, up), glm::vec3(2.0f));
     const float orbit = 1.2f + 0.9f * time;
-    glm::mat4 small = glm::translate(glm::mat4(1.0f),
-                                     2.2f * glm::vec3(std::sin(orbit), 0.0f, std::cos(orbit)));
+    glm::mat4 small =
+        glm::translate(glm::mat4(1.0f), 2.2f * glm::vec3(std::sin(orbit), 0.0f, std::cos(orbit)));
     small = glm::scale(glm::rotate(small, -2.0f * time, up), glm::vec3(0.4f));
     return {{
         {.world = big, .tint = glm::vec3(1.0f), .tint_amount = 0.0f},
@@ -88,8 +88,8 @@ FrameUniforms camera(VkExtent2D extent) {
     FrameUniforms frame;
     frame.view = glm::lookAt(glm::vec3(0.0f, 2.0f, 5.5f), glm::vec3(0.0f), glm::vec3(0, 1, 0));
     // A perspective projection for Vulkan's clip space; chapter 08 derives it.
-    frame.proj = glm::perspective(glm::radians(45.0f),
-                                  float(extent.width) / float(extent.height), 0.1f, 100.0f);
+    frame.proj = glm::perspective(glm::radians(45.0f), float(extent.width) / float(extent.height),
+                                  0.1f, 100.0f);
     frame.proj[1][1] = -frame.proj[1][1];
     return frame;
 }
@@ -103,12 +103,12 @@ public:
         make_cube(vertices, indices);
         index_count_ = uint32_t(indices.size());
         const vkt::Gpu gpu = context.gpu();
-        vertex_buffer_ = vkt::create_device_buffer(gpu, vertices.data(),
-                                                   vertices.size() * sizeof(Vertex),
-                                                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-        index_buffer_ = vkt::create_device_buffer(gpu, indices.data(),
-                                                  indices.size() * sizeof(uint16_t),
-                                                  VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+        vertex_buffer_ =
+            vkt::create_device_buffer(gpu, vertices.data(), vertices.size() * sizeof(Vertex),
+                                      VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        index_buffer_ =
+            vkt::create_device_buffer(gpu, indices.data(), indices.size() * sizeof(uint16_t),
+                                      VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
         // [stride]
         // Each object's block starts at a multiple of the device's
@@ -227,16 +227,17 @@ public:
             {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
             {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, colour)},
         };
-        pipeline_ = vkt::create_graphics_pipeline(device_, {
-            .vertex = vertex,
-            .fragment = fragment,
-            .layout = layout_,
-            .bindings = {&binding, 1},
-            .attributes = attributes,
-            .cull_mode = VK_CULL_MODE_BACK_BIT,
-            .front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE,
-            .color_formats = {context.color_format},
-        });
+        pipeline_ = vkt::create_graphics_pipeline(device_,
+                                                  {
+                                                      .vertex = vertex,
+                                                      .fragment = fragment,
+                                                      .layout = layout_,
+                                                      .bindings = {&binding, 1},
+                                                      .attributes = attributes,
+                                                      .cull_mode = VK_CULL_MODE_BACK_BIT,
+                                                      .front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE,
+                                                      .color_formats = {context.color_format},
+                                                  });
         // [/pipeline]
     }
 
@@ -298,7 +299,7 @@ private:
     std::vector<vkt::Buffer> frame_buffers_;   // [slot]: FrameUniforms
     std::vector<vkt::Buffer> object_buffers_;  // [slot]: object_count blocks, stride_ apart
     vkt::DescriptorSetLayout set_layout_;
-    vkt::DescriptorPool pool_;  // owns sets_: they go when it goes
+    vkt::DescriptorPool pool_;           // owns sets_: they go when it goes
     std::vector<VkDescriptorSet> sets_;  // [slot]
     vkt::PipelineLayout layout_;
     vkt::Pipeline pipeline_;

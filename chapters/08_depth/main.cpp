@@ -71,17 +71,22 @@ VkFormat choose_depth_format(VkPhysicalDevice physical) {
         if (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT)
             return format;
     }
-    throw vkt::Error("no depth format can be a depth attachment on this device (tried "
-                     "D32_SFLOAT, D32_SFLOAT_S8_UINT, D24_UNORM_S8_UINT, D16_UNORM)");
+    throw vkt::Error(
+        "no depth format can be a depth attachment on this device (tried "
+        "D32_SFLOAT, D32_SFLOAT_S8_UINT, D24_UNORM_S8_UINT, D16_UNORM)");
 }
 // [/choose-format]
 
 const char* format_name(VkFormat format) {
     switch (format) {
-        case VK_FORMAT_D32_SFLOAT: return "VK_FORMAT_D32_SFLOAT";
-        case VK_FORMAT_D32_SFLOAT_S8_UINT: return "VK_FORMAT_D32_SFLOAT_S8_UINT";
-        case VK_FORMAT_D24_UNORM_S8_UINT: return "VK_FORMAT_D24_UNORM_S8_UINT";
-        default: return "VK_FORMAT_D16_UNORM";
+        case VK_FORMAT_D32_SFLOAT:
+            return "VK_FORMAT_D32_SFLOAT";
+        case VK_FORMAT_D32_SFLOAT_S8_UINT:
+            return "VK_FORMAT_D32_SFLOAT_S8_UINT";
+        case VK_FORMAT_D24_UNORM_S8_UINT:
+            return "VK_FORMAT_D24_UNORM_S8_UINT";
+        default:
+            return "VK_FORMAT_D16_UNORM";
     }
 }
 
@@ -151,12 +156,12 @@ public:
         make_cube(vertices, indices);
         index_count_ = uint32_t(indices.size());
         const vkt::Gpu gpu = context.gpu();
-        vertex_buffer_ = vkt::create_device_buffer(gpu, vertices.data(),
-                                                   vertices.size() * sizeof(Vertex),
-                                                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-        index_buffer_ = vkt::create_device_buffer(gpu, indices.data(),
-                                                  indices.size() * sizeof(uint16_t),
-                                                  VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+        vertex_buffer_ =
+            vkt::create_device_buffer(gpu, vertices.data(), vertices.size() * sizeof(Vertex),
+                                      VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        index_buffer_ =
+            vkt::create_device_buffer(gpu, indices.data(), indices.size() * sizeof(uint16_t),
+                                      VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
         // Chapter 07's descriptors, with its helpers: per frame in flight, a
         // camera buffer (binding 0) and the objects' blocks (binding 1, dynamic).
@@ -196,18 +201,19 @@ public:
             {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
             {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, colour)},
         };
-        pipeline_ = vkt::create_graphics_pipeline(device_, {
-            .vertex = vertex,
-            .fragment = fragment,
-            .layout = layout_,
-            .bindings = {&binding, 1},
-            .attributes = attributes,
-            .cull_mode = VK_CULL_MODE_BACK_BIT,
-            .color_formats = {context.color_format},
-            .depth_format = depth_format_,
-            .depth_write = true,
-            .depth_compare = VK_COMPARE_OP_LESS,
-        });
+        pipeline_ =
+            vkt::create_graphics_pipeline(device_, {
+                                                       .vertex = vertex,
+                                                       .fragment = fragment,
+                                                       .layout = layout_,
+                                                       .bindings = {&binding, 1},
+                                                       .attributes = attributes,
+                                                       .cull_mode = VK_CULL_MODE_BACK_BIT,
+                                                       .color_formats = {context.color_format},
+                                                       .depth_format = depth_format_,
+                                                       .depth_write = true,
+                                                       .depth_compare = VK_COMPARE_OP_LESS,
+                                                   });
         // [/pipeline]
     }
 

@@ -10,8 +10,7 @@ glm::mat4 vulkan_perspective(float fovy_radians, float aspect, float z_near, flo
     return proj;
 }
 
-glm::mat4 transform(glm::vec3 translation, float angle_radians, glm::vec3 axis,
-                    glm::vec3 scale) {
+glm::mat4 transform(glm::vec3 translation, float angle_radians, glm::vec3 axis, glm::vec3 scale) {
     const glm::mat4 t = glm::translate(glm::mat4(1.0f), translation);
     const glm::mat4 r = glm::rotate(glm::mat4(1.0f), angle_radians, axis);
     const glm::mat4 s = glm::scale(glm::mat4(1.0f), scale);

@@ -62,8 +62,8 @@ void begin_depth_frame(VkCommandBuffer cmd, VkImage depth_image) {
     // where a shader writes gl_FragDepth), and the clear of loadOp counts as a
     // write in EARLY. Waiting for the last frame's writes before the layout
     // change (itself a write) is what synchronisation validation checks.
-    constexpr VkPipelineStageFlags2 tests = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
-                                            VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+    constexpr VkPipelineStageFlags2 tests =
+        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
     image_barrier(cmd, depth_image, VK_IMAGE_LAYOUT_UNDEFINED,
                   VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, tests,
                   VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, tests,

@@ -39,8 +39,7 @@ TEST_CASE("vulkan_perspective: the edge of the field of view is the edge of the 
     CHECK(right.y == Approx(0.0f).margin(1e-6));
 }
 
-TEST_CASE("a look-at target lands at the centre, world up goes up on the screen",
-          "[camera_math]") {
+TEST_CASE("a look-at target lands at the centre, world up goes up on the screen", "[camera_math]") {
     const glm::vec3 eye{3.0f, 4.0f, 5.0f};
     const glm::vec3 target{-1.0f, 0.5f, 0.0f};
     const glm::mat4 view = glm::lookAt(eye, target, glm::vec3(0.0f, 1.0f, 0.0f));
@@ -62,8 +61,8 @@ TEST_CASE("transform is T * R * S: scale, then rotate, then translate", "[camera
     // Scale (2, 3, 1), rotate 90 degrees about +z, translate (10, 20, 30).
     // (1, 1, 0) -> scale -> (2, 3, 0) -> rotate (x, y) -> (-y, x) -> (-3, 2, 0)
     // -> translate -> (7, 22, 30).
-    const glm::mat4 m = vkt::transform({10.0f, 20.0f, 30.0f}, pi / 2.0f, {0.0f, 0.0f, 1.0f},
-                                       {2.0f, 3.0f, 1.0f});
+    const glm::mat4 m =
+        vkt::transform({10.0f, 20.0f, 30.0f}, pi / 2.0f, {0.0f, 0.0f, 1.0f}, {2.0f, 3.0f, 1.0f});
     const glm::vec4 p = m * glm::vec4(1.0f, 1.0f, 0.0f, 1.0f);
     CHECK(p.x == Approx(7.0f));
     CHECK(p.y == Approx(22.0f));

@@ -41,8 +41,8 @@ std::map<std::string, uint32_t> block_offsets(const std::vector<uint32_t>& words
     constexpr uint32_t op_name = 5, op_member_name = 6, op_member_decorate = 72;
     constexpr uint32_t decoration_offset = 35;
     uint32_t type = 0;
-    std::map<uint32_t, std::string> names;     // member index -> name
-    std::map<uint32_t, uint32_t> offsets;      // member index -> offset
+    std::map<uint32_t, std::string> names;  // member index -> name
+    std::map<uint32_t, uint32_t> offsets;   // member index -> offset
     // Two passes: OpName of the type may come after nothing else we need, but
     // member instructions refer to the type id, so find it first.
     for (int pass = 0; pass < 2; ++pass) {

@@ -20,8 +20,7 @@ glm::mat4 vulkan_perspective(float fovy_radians, float aspect, float z_near, flo
 // The world-from-object matrix T * R * S: scale by `scale`, rotate by
 // `angle_radians` about `axis` (a unit vector), then translate by
 // `translation`.
-glm::mat4 transform(glm::vec3 translation, float angle_radians, glm::vec3 axis,
-                    glm::vec3 scale);
+glm::mat4 transform(glm::vec3 translation, float angle_radians, glm::vec3 axis, glm::vec3 scale);
 
 // Where a world point lands: clip = clip_from_world * (p, 1), then the
 // perspective divide. Returns (x, y, depth) in normalised device coordinates.
