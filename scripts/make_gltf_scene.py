@@ -9,7 +9,7 @@ Standard library only (json, struct, zlib), so anyone can re-run it:
 Everything is made here: the geometry is computed, the textures are drawn
 pixel by pixel. The scene exercises what the chapter 10 loader supports:
 
-- a floor with 8-bit indices and a checker texture repeated twice;
+- a floor with 8-bit indices and a checker texture repeated 1.5 times;
 - a cube whose vertices are interleaved in one bufferView (byteStride 32),
   used by two meshes with different materials (bricks, and bricks tinted blue
   by baseColorFactor), with 16-bit indices;
@@ -67,7 +67,7 @@ def stripes(x, y):
 # --- Geometry ----------------------------------------------------------------
 
 
-def floor_mesh(half=4.0, repeat=2.0):
+def floor_mesh(half=3.0, repeat=1.5):
     p = [(-half, 0, -half), (half, 0, -half), (half, 0, half), (-half, 0, half)]
     n = [(0, 1, 0)] * 4
     t = [(0, 0), (repeat, 0), (repeat, repeat), (0, repeat)]

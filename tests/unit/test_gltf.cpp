@@ -539,8 +539,8 @@ TEST_CASE("gltf: the chapter's scene loads the same from .gltf and .glb", "[gltf
     for (size_t i = 0; i < text.images.size(); ++i) CHECK(text.images[i].pixels == binary.images[i].pixels);
     CHECK(text.bounds_min == binary.bounds_min);
     CHECK(text.bounds_max == binary.bounds_max);
-    // The floor is 8 x 8 at y = 0; the pyramid on the brick cube is the tallest.
-    CHECK(text.bounds_min.x == Approx(-4));
+    // The floor is 6 x 6 at y = 0; the pyramid on the brick cube is the tallest.
+    CHECK(text.bounds_min.x == Approx(-3));
     CHECK(text.bounds_min.y == Approx(0).margin(1e-6));
     CHECK(text.bounds_max.y == Approx(1.7).margin(1e-5));  // the pyramid's apex: 1 + 0.7
 }

@@ -1,0 +1,86 @@
+# Chapter 10: a glTF scene (assets/gltf/scene.gltf), framed from its bounding
+# box and orbiting slowly.
+#
+# Hand-worked pixels: the top corners show the clear colour (0.02, 0.02, 0.04),
+# stored sRGB-encoded as (39, 39, 56); the scene never reaches them, because
+# the camera keeps the whole bounding sphere inside the narrower field of view.
+set(VKT_10_PIXEL PIXEL 0,0,39,39,56 319,0,39,39,56)
+vkt_chapter_test(chapter.10_gltf 10_gltf GOLDEN BLESS ${VKT_10_PIXEL} ARGS ${headless}
+  EXPECT "10_gltf: .*scene.gltf: draws 5, primitives 5, materials 5, images 3")
+vkt_chapter_test(chapter.10_gltf.offscreen 10_gltf GOLDEN ${VKT_10_PIXEL} ARGS ${offscreen})
+vkt_chapter_window_test(10_gltf PIXEL 0,0,39,39,56)
+# The same scene as one .glb (JSON chunk, BIN chunk, images in bufferViews)
+# must give the same picture.
+vkt_chapter_test(chapter.10_gltf.glb 10_gltf GOLDEN ${VKT_10_PIXEL}
+  ARGS ${headless} --model ${PROJECT_SOURCE_DIR}/assets/gltf/scene.glb
+  EXPECT "10_gltf: .*scene.glb: draws 5, primitives 5, materials 5, images 3")
+vkt_chapter_test(chapter.10_gltf.help 10_gltf EXIT 0 ARGS --help
+  EXPECT "usage: 10_gltf" "--model FILE")
+
+# --- Bad input: small files written here, each wrong in one way -------------
+# A triangle, (0,0,0) (1,0,0) (0,1,0), with 16-bit indices, in a data: URI;
+# @INDICES@, @COUNT@ and @EXTRA@ make it wrong.
+set(vkt_10_dir ${CMAKE_CURRENT_BINARY_DIR}/gltf_bad_input)
+set(vkt_10_good_indices "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA=")
+set(vkt_10_template [=[{
+  "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+  "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]}],
+  "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [1, 0.5, 0, 1]}}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": @COUNT@, "type": "VEC3"},
+                {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+  "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+  "buffers": [{"byteLength": 44, "uri": "data:application/octet-stream;base64,@INDICES@"}]@EXTRA@
+}]=])
+function(vkt_10_bad_file name indices count extra)
+  string(REPLACE "@INDICES@" "${indices}" text "${vkt_10_template}")
+  string(REPLACE "@COUNT@" "${count}" text "${text}")
+  string(REPLACE "@EXTRA@" "${extra}" text "${text}")
+  file(WRITE ${vkt_10_dir}/${name} "${text}")
+endfunction()
+vkt_10_bad_file(good.gltf ${vkt_10_good_indices} 3 "")
+vkt_10_bad_file(long_accessor.gltf ${vkt_10_good_indices} 4 "")
+vkt_10_bad_file(index_past_end.gltf
+  "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAcAAAA=" 3 "")
+vkt_10_bad_file(draco.gltf ${vkt_10_good_indices} 3
+  [=[, "extensionsUsed": ["KHR_draco_mesh_compression"], "extensionsRequired": ["KHR_draco_mesh_compression"]]=])
+vkt_10_bad_file(warnings.gltf ${vkt_10_good_indices} 3
+  [=[, "extensionsUsed": ["KHR_materials_emissive_strength"], "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}]]=])
+file(WRITE ${vkt_10_dir}/not_gltf.gltf "This is a text file, not glTF.\n")
+# An image whose bytes are "this is not a PNG".
+string(REPLACE [=["materials": [{"pbrMetallicRoughness": {"baseColorFactor": [1, 0.5, 0, 1]}}],]=]
+  [=["materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+  "textures": [{"source": 0}], "images": [{"uri": "data:image/png;base64,dGhpcyBpcyBub3QgYSBQTkc="}],]=]
+  vkt_10_bad_image "${vkt_10_template}")
+string(REPLACE "@INDICES@" "${vkt_10_good_indices}" vkt_10_bad_image "${vkt_10_bad_image}")
+string(REPLACE "@COUNT@" "3" vkt_10_bad_image "${vkt_10_bad_image}")
+string(REPLACE "@EXTRA@" "" vkt_10_bad_image "${vkt_10_bad_image}")
+file(WRITE ${vkt_10_dir}/bad_image.gltf "${vkt_10_bad_image}")
+
+set(vkt_10_run --headless --validation --frames 1 --size ${VKT_TEST_SIZE})
+# The template itself is fine: one orange triangle.
+vkt_chapter_test(chapter.10_gltf.small_file 10_gltf ARGS ${vkt_10_run} --model ${vkt_10_dir}/good.gltf
+  EXPECT "good.gltf: draws 1, primitives 1, materials 1, images 0, vertices 3, indices 3")
+vkt_chapter_test(bad_input.10_gltf.missing_model 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${vkt_10_dir}/no-such-model.gltf
+  EXPECT "10_gltf: error: cannot open .*no-such-model.gltf")
+vkt_chapter_test(bad_input.10_gltf.not_gltf 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${vkt_10_dir}/not_gltf.gltf
+  EXPECT "10_gltf: error: .*not_gltf.gltf: not a glTF file: ")
+vkt_chapter_test(bad_input.10_gltf.broken_accessor 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${vkt_10_dir}/long_accessor.gltf
+  EXPECT "long_accessor.gltf: mesh 0 primitive 0 POSITION: accessor 0 \\(count 4, byteOffset 0, stride 12\\) runs past the end of bufferView 0 \\(36 bytes\\)")
+vkt_chapter_test(bad_input.10_gltf.index_past_end 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${vkt_10_dir}/index_past_end.gltf
+  EXPECT "index_past_end.gltf: mesh 0 primitive 0: index 2 is 7, past the end of the vertex data \\(3 vertices\\)")
+vkt_chapter_test(bad_input.10_gltf.bad_image 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${vkt_10_dir}/bad_image.gltf
+  EXPECT "bad_image.gltf: image 0: cannot decode image: ")
+vkt_chapter_test(bad_input.10_gltf.required_extension 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${vkt_10_dir}/draco.gltf
+  EXPECT "draco.gltf: requires extension KHR_draco_mesh_compression, which this loader does not support")
+# What is only ignored is a warning, and the rest is drawn.
+vkt_chapter_test(chapter.10_gltf.warnings 10_gltf ARGS ${vkt_10_run} --model ${vkt_10_dir}/warnings.gltf
+  EXPECT "warnings.gltf: warning: uses extension KHR_materials_emissive_strength, which this loader ignores"
+         "warnings.gltf: warning: cameras are ignored"
+         "warnings.gltf: draws 1, primitives 1")
