@@ -1,0 +1,26 @@
+# Chapter 14: boxes falling onto a floor, drawn with instancing.
+#
+# The picture is deterministic: headless, time is frame index / 60 and the
+# physics runs exactly 2 fixed steps of 1/120 s per frame, and the same
+# inputs give bit-equal physics (tests/unit/test_physics.cpp). --warmup 3
+# simulates 3 s (360 steps) before the first frame, so frame 10 shows the
+# boxes after they have landed and stacked.
+set(VKT_14_ARGS --warmup 3)
+vkt_chapter_test(chapter.14_physics 14_physics GOLDEN BLESS ARGS ${headless} ${VKT_14_ARGS}
+  EXPECT "14_physics: 1000 boxes, sort-and-sweep, 120 steps/s, 360 warm-up steps")
+vkt_chapter_test(chapter.14_physics.offscreen 14_physics GOLDEN ARGS ${offscreen} ${VKT_14_ARGS})
+vkt_chapter_window_test(14_physics ARGS ${VKT_14_ARGS})
+# Brute force finds the same pairs in the same order, so the world, and the
+# picture, are the same bit for bit.
+vkt_chapter_test(chapter.14_physics.brute 14_physics GOLDEN ARGS ${headless} ${VKT_14_ARGS}
+  --broadphase brute EXPECT "1000 boxes, brute force")
+vkt_chapter_test(chapter.14_physics.help 14_physics EXIT 0 ARGS --help
+  EXPECT "usage: 14_physics" "--count N" "--broadphase sap\\|brute" "--warmup SECONDS")
+
+# Bad input: no boxes, too many, a broad phase it does not know.
+vkt_chapter_test(bad_input.14_physics.count_zero 14_physics EXIT 2 ARGS --count 0
+  EXPECT "--count wants a whole number from 1 to 65536, not '0'")
+vkt_chapter_test(bad_input.14_physics.count_too_many 14_physics EXIT 2 ARGS --count 65537
+  EXPECT "--count wants a whole number from 1 to 65536, not '65537'")
+vkt_chapter_test(bad_input.14_physics.broadphase 14_physics EXIT 2 ARGS --broadphase grid
+  EXPECT "--broadphase wants one of sap, brute, not 'grid'")
