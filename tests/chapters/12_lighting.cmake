@@ -1,0 +1,50 @@
+# Chapter 12: a mirror-symmetric scene under coloured point lights, the left
+# half lit per vertex and the right half per fragment.
+#
+# Hand-worked pixels, split (the default), frame 9 of 10: the top corners are
+# background, the clear colour (0.02, 0.02, 0.04) stored sRGB-encoded as
+# (39, 39, 56); the gap between the halves (columns 159 and 160 at 320 wide)
+# shows it too.
+set(VKT_12_PIXEL PIXEL 0,0,39,39,56 319,0,39,39,56 160,120,39,39,56 159,200,39,39,56)
+vkt_chapter_test(chapter.12_lighting 12_lighting GOLDEN BLESS ${VKT_12_PIXEL} ARGS ${headless}
+  EXPECT "12_lighting: 5 lights, shading split, windowed falloff, normals by inverse-transpose")
+vkt_chapter_test(chapter.12_lighting.offscreen 12_lighting GOLDEN ${VKT_12_PIXEL}
+  ARGS ${offscreen})
+vkt_chapter_window_test(12_lighting PIXEL 160,120,39,39,56)
+
+# The GPU against the CPU: one light, per fragment. The image centre shows the
+# floor point (0, 0, 0) (the sample at the pixel's centre, (160.5, 120.5),
+# lands at (0.019, 0, 0.043)); tests/unit/test_lighting.cpp works its colour
+# out by hand and with vkt::shade: linear (0.4813, 0.4122, 0.3202) at the
+# origin, (0.4763, 0.4080, 0.3169) at the sample, stored sRGB-encoded as
+# (183, 171, 153).
+vkt_chapter_test(chapter.12_lighting.one_light 12_lighting PIXEL 160,120,183,171,153,2
+  ARGS ${headless} --lights 1 --shading fragment
+  EXPECT "12_lighting: 1 light, shading fragment")
+# The same with the classic falloff 1 / (1 + 0.35 d + 0.44 d^2): linear
+# (0.6868, 0.5869, 0.4538) at the sample, stored (216, 201, 180).
+vkt_chapter_test(chapter.12_lighting.one_light_classic 12_lighting PIXEL 160,120,216,201,180,2
+  ARGS ${headless} --lights 1 --shading fragment --falloff classic)
+
+# The other modes run cleanly (no golden image: the book shows them).
+vkt_chapter_test(chapter.12_lighting.vertex 12_lighting ARGS ${headless} --shading vertex
+  EXPECT "shading vertex")
+vkt_chapter_test(chapter.12_lighting.many_lights 12_lighting ARGS ${offscreen} --lights 16
+  EXPECT "16 lights")
+vkt_chapter_test(chapter.12_lighting.model_normals 12_lighting
+  ARGS ${headless} --normal-matrix model EXPECT "normals by model")
+vkt_chapter_test(chapter.12_lighting.help 12_lighting EXIT 0 ARGS --help
+  EXPECT "usage: 12_lighting" "--shading MODE" "--lights N" "--falloff KIND"
+         "--normal-matrix KIND")
+
+# Bad input: one clear line and exit status 2.
+vkt_chapter_test(bad_input.12_lighting.no_lights 12_lighting EXIT 2 ARGS --lights 0
+  EXPECT "--lights")
+vkt_chapter_test(bad_input.12_lighting.too_many_lights 12_lighting EXIT 2 ARGS --lights 17
+  EXPECT "--lights")
+vkt_chapter_test(bad_input.12_lighting.lights_not_a_number 12_lighting EXIT 2 ARGS --lights many
+  EXPECT "--lights")
+vkt_chapter_test(bad_input.12_lighting.bad_shading 12_lighting EXIT 2 ARGS --shading flat
+  EXPECT "--shading wants one of split, vertex, fragment, not 'flat'")
+vkt_chapter_test(bad_input.12_lighting.bad_falloff 12_lighting EXIT 2 ARGS --falloff linear
+  EXPECT "--falloff wants one of windowed, classic, not 'linear'")
