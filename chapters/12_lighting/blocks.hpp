@@ -17,16 +17,16 @@ constexpr uint32_t max_lights = 16;  // MAX_LIGHTS in the shader
 
 // [scene-struct]
 struct SceneUniforms {
-    glm::mat4 view;              // 0
-    glm::mat4 proj;              // 64
-    glm::vec3 camera_position;   // 128
-    int32_t light_count;         // 140: fills camera_position's fourth word
-    glm::vec3 ambient;           // 144
-    int32_t falloff;             // 156: vkt::Falloff
-    glm::vec3 classic;           // 160: (constant, linear, quadratic)
-    float specular;              // 172
-    float shininess;             // 176
-    float padding[3];            // 180: an array of structs starts at a multiple of 16
+    glm::mat4 view;                      // 0
+    glm::mat4 proj;                      // 64
+    glm::vec3 camera_position;           // 128
+    int32_t light_count;                 // 140: fills camera_position's fourth word
+    glm::vec3 ambient;                   // 144
+    int32_t falloff;                     // 156: vkt::Falloff
+    glm::vec3 classic;                   // 160: (constant, linear, quadratic)
+    float specular;                      // 172
+    float shininess;                     // 176
+    float padding[3];                    // 180: an array of structs starts at a multiple of 16
     vkt::PointLight lights[max_lights];  // 192, 32 bytes each
 };
 static_assert(offsetof(SceneUniforms, camera_position) == 128);

@@ -48,7 +48,7 @@ enum Mesh { floor_mesh, cube_mesh, sphere_mesh, cylinder_mesh, torus_mesh, mesh_
 struct Object {
     Mesh mesh;
     glm::mat4 model;
-    glm::vec3 albedo;  // the fraction of each colour of light the surface scatters
+    glm::vec3 albedo;       // the fraction of each colour of light the surface scatters
     float emissive = 0.0f;  // 1: a light's marker, drawn in its colour, unlit
 };
 
@@ -66,20 +66,24 @@ glm::mat4 mirrored(const glm::mat4& model) {
 std::vector<Object> make_objects(float t) {
     const glm::vec3 up(0, 1, 0);
     std::vector<Object> right = {
-        {sphere_mesh, vkt::transform({1.9f, 0.75f, 1.0f}, 0.0f, up, glm::vec3(1.5f)),
+        {sphere_mesh,
+         vkt::transform({1.9f, 0.75f, 1.0f}, 0.0f, up, glm::vec3(1.5f)),
          {0.85f, 0.85f, 0.85f}},
-        {cube_mesh, vkt::transform({3.6f, 0.5f, -1.0f}, 0.6f + 0.4f * t, up, glm::vec3(1.0f)),
+        {cube_mesh,
+         vkt::transform({3.6f, 0.5f, -1.0f}, 0.6f + 0.4f * t, up, glm::vec3(1.0f)),
          {0.9f, 0.55f, 0.35f}},
         {torus_mesh,
          vkt::transform({1.6f, 0.85f, -3.0f}, 0.5f * t, up, glm::vec3(1.7f)) *
              glm::rotate(glm::mat4(1.0f), pi / 2, glm::vec3(1, 0, 0)),
          {0.95f, 0.8f, 0.35f}},
-        {cylinder_mesh, vkt::transform({3.6f, 0.6f, 2.2f}, 0.0f, up, {0.9f, 1.2f, 0.9f}),
+        {cylinder_mesh,
+         vkt::transform({3.6f, 0.6f, 2.2f}, 0.0f, up, {0.9f, 1.2f, 0.9f}),
          {0.4f, 0.65f, 0.9f}},
     };
     std::vector<Object> objects = {
         {floor_mesh, vkt::transform({0, 0, 0}, 0.0f, up, {12.0f, 1.0f, 12.0f}), {0.7f, 0.7f, 0.7f}},
-        {sphere_mesh, vkt::transform({0, 0.45f, -1.2f}, 0.3f * t, up, {2.6f, 0.9f, 1.3f}),
+        {sphere_mesh,
+         vkt::transform({0, 0.45f, -1.2f}, 0.3f * t, up, {2.6f, 0.9f, 1.3f}),
          {0.55f, 0.85f, 0.5f}},
     };
     for (const Object& object : right) {
@@ -112,11 +116,11 @@ std::vector<vkt::PointLight> make_lights(uint32_t count, float t) {
         const glm::vec3 wheel =
             0.5f + 0.5f * glm::cos(2.0f * pi * (0.618f * k + glm::vec3(0.0f, 1.0f, 2.0f) / 3.0f));
         const glm::vec3 colour = pair <= 3 ? palette[pair - 1] : wheel;
-        vkt::PointLight light{.position = {2.6f + orbit * std::cos(angle), height,
-                                           -0.4f + orbit * std::sin(angle)},
-                              .radius = 3.5f,
-                              .colour = colour,
-                              .intensity = 5.0f};
+        vkt::PointLight light{
+            .position = {2.6f + orbit * std::cos(angle), height, -0.4f + orbit * std::sin(angle)},
+            .radius = 3.5f,
+            .colour = colour,
+            .intensity = 5.0f};
         lights.push_back(light);
         light.position.x = -light.position.x;  // its mirror image
         if (lights.size() < count) lights.push_back(light);
@@ -154,8 +158,8 @@ public:
         const vkt::Options& options = context.options;
         shading_ = options.text("--shading");
         light_count_ = uint32_t(options.integer("--lights"));
-        falloff_ = options.text("--falloff") == "classic" ? vkt::Falloff::classic
-                                                           : vkt::Falloff::windowed;
+        falloff_ =
+            options.text("--falloff") == "classic" ? vkt::Falloff::classic : vkt::Falloff::windowed;
         inverse_transpose_ = options.text("--normal-matrix") == "inverse-transpose";
         std::fprintf(stderr, "12_lighting: %u light%s, shading %s, %s falloff, normals by %s\n",
                      light_count_, light_count_ == 1 ? "" : "s", shading_.c_str(),
@@ -225,18 +229,19 @@ public:
                 .dataSize = sizeof per_fragment,
                 .pData = &per_fragment,
             };
-            pipelines_[per_fragment] = vkt::create_graphics_pipeline(device_, {
-                .vertex = vertex,
-                .fragment = fragment,
-                .layout = layout_,
-                .bindings = {&input, 1},
-                .attributes = attributes,
-                .cull_mode = VK_CULL_MODE_BACK_BIT,
-                .color_formats = {context.color_format},
-                .depth_format = depth_format_,
-                .vertex_specialization = &specialization,
-                .fragment_specialization = &specialization,
-            });
+            pipelines_[per_fragment] = vkt::create_graphics_pipeline(
+                device_, {
+                             .vertex = vertex,
+                             .fragment = fragment,
+                             .layout = layout_,
+                             .bindings = {&input, 1},
+                             .attributes = attributes,
+                             .cull_mode = VK_CULL_MODE_BACK_BIT,
+                             .color_formats = {context.color_format},
+                             .depth_format = depth_format_,
+                             .vertex_specialization = &specialization,
+                             .fragment_specialization = &specialization,
+                         });
         }
         // [/specialization]
     }
@@ -251,9 +256,9 @@ public:
         // The camera, the lighting constants and the lights, once per frame.
         SceneUniforms scene{};
         scene.view = glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0, 1, 0));
-        scene.proj = vkt::vulkan_perspective(
-            glm::radians(45.0f), float(frame.extent.width) / float(frame.extent.height), 0.1f,
-            100.0f);
+        scene.proj = vkt::vulkan_perspective(glm::radians(45.0f),
+                                             float(frame.extent.width) / float(frame.extent.height),
+                                             0.1f, 100.0f);
         scene.camera_position = eye;
         const vkt::LightingParams params{.falloff = falloff_, .classic = {1.0f, 0.35f, 0.44f}};
         scene.ambient = params.ambient;
@@ -322,8 +327,8 @@ public:
         std::vector<Object> objects = make_objects(t);
         // A small glowing sphere at each light, in its colour.
         for (const vkt::PointLight& light : lights)
-            objects.push_back({sphere_mesh, vkt::transform(light.position, 0.0f, {0, 1, 0},
-                                                           glm::vec3(0.25f)),
+            objects.push_back({sphere_mesh,
+                               vkt::transform(light.position, 0.0f, {0, 1, 0}, glm::vec3(0.25f)),
                                light.colour, 1.0f});
         for (const Pass& pass : passes) {
             vkCmdBindPipeline(frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline);

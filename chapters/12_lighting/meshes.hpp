@@ -69,8 +69,8 @@ struct MeshBuilder {
             u[(axis + 1) % 3] = 1.0f;
             v[(axis + 2) % 3] = sign;  // u x v = n
             const uint32_t first = uint32_t(vertices.size());
-            for (glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1),
-                                glm::vec2(-1, 1)})
+            for (glm::vec2 c :
+                 {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)})
                 vertex(0.5f * (n + c.x * u + c.y * v), n);
             triangle(first, first + 1, first + 2);
             triangle(first, first + 2, first + 3);
@@ -114,8 +114,8 @@ struct MeshBuilder {
         for (int i = 0; i <= segments; ++i) {
             const float phi = 2.0f * pi * float(i) / float(segments);
             const glm::vec3 n(std::cos(phi), 0.0f, std::sin(phi));
-            vertex(0.5f * n + glm::vec3(0, 0.5f, 0), n);   // 2i: top edge
-            vertex(0.5f * n - glm::vec3(0, 0.5f, 0), n);   // 2i + 1: bottom edge
+            vertex(0.5f * n + glm::vec3(0, 0.5f, 0), n);  // 2i: top edge
+            vertex(0.5f * n - glm::vec3(0, 0.5f, 0), n);  // 2i + 1: bottom edge
         }
         for (uint32_t i = 0; i < uint32_t(segments); ++i) {
             const uint32_t top = sides + 2 * i, bottom = top + 1;
@@ -131,8 +131,10 @@ struct MeshBuilder {
             }
             for (uint32_t i = 0; i < uint32_t(segments); ++i) {
                 const uint32_t ring = centre + 1 + i;
-                if (y > 0) triangle(centre, ring + 1, ring);
-                else triangle(centre, ring, ring + 1);
+                if (y > 0)
+                    triangle(centre, ring + 1, ring);
+                else
+                    triangle(centre, ring, ring + 1);
             }
         }
         range.index_count = uint32_t(indices.size()) - range.first_index;

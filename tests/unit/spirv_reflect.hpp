@@ -21,8 +21,8 @@
 
 namespace spirv {
 
-constexpr uint32_t op_name = 5, op_member_name = 6, op_type_struct = 30,
-                   op_decorate = 71, op_member_decorate = 72;
+constexpr uint32_t op_name = 5, op_member_name = 6, op_type_struct = 30, op_decorate = 71,
+                   op_member_decorate = 72;
 constexpr uint32_t decoration_array_stride = 6, decoration_matrix_stride = 7,
                    decoration_offset = 35;
 
@@ -84,8 +84,8 @@ inline std::map<std::string, Member> struct_members(const std::vector<uint32_t>&
     if (type == 0) throw std::runtime_error("no laid-out struct type named " + name);
     std::map<uint32_t, std::string> names;
     std::map<uint32_t, Member> members;
-    std::map<uint32_t, uint32_t> member_types;     // member index -> type id
-    std::map<uint32_t, uint32_t> array_strides;    // array type id -> stride
+    std::map<uint32_t, uint32_t> member_types;   // member index -> type id
+    std::map<uint32_t, uint32_t> array_strides;  // array type id -> stride
     for_each_instruction(words, [&](uint32_t op, const uint32_t* operands, uint32_t count) {
         if (op == op_member_name && operands[0] == type)
             names[operands[1]] = literal(operands + 2, count - 2);

@@ -59,8 +59,7 @@ TEST_CASE("windowed attenuation: (1 - (d/r)^4)^2 / (d^2 + 1), exactly 0 from the
     }
 }
 
-TEST_CASE("Lambert is the cosine between the normal and the light, 0 from behind",
-          "[lighting]") {
+TEST_CASE("Lambert is the cosine between the normal and the light, 0 from behind", "[lighting]") {
     const glm::vec3 n(0, 1, 0);
     CHECK(vkt::lambert(n, {0, 1, 0}) == Approx(1.0f));
     CHECK(vkt::lambert(n, glm::normalize(glm::vec3(1, 1, 0))) == Approx(root_half));
@@ -88,8 +87,7 @@ TEST_CASE("Blinn-Phong peaks when the half vector is the normal", "[lighting]") 
     CHECK(vkt::blinn_phong(n, glm::normalize(glm::vec3(1, -0.1f, 0)), {0, 1, 0}, 8.0f) == 0.0f);
 }
 
-TEST_CASE("the normal matrix keeps normals perpendicular under a non-uniform scale",
-          "[lighting]") {
+TEST_CASE("the normal matrix keeps normals perpendicular under a non-uniform scale", "[lighting]") {
     // Scale x by 2. The plane x + y = 1 has normal (1, 1, 0)/sqrt2; scaled, it
     // is X/2 + Y = 1, i.e. X + 2Y = 2, whose normal is (1, 2, 0)/sqrt5.
     const glm::mat4 model = glm::scale(glm::mat4(1.0f), {2.0f, 1.0f, 1.0f});
@@ -117,13 +115,15 @@ TEST_CASE("the normal matrix keeps normals perpendicular under a non-uniform sca
 
 TEST_CASE("shade: ambient alone beyond the windowed radius", "[lighting]") {
     const vkt::PointLight light{.position = {0, 5, 0}, .radius = 4.0f, .colour = {1, 1, 1}};
-    const glm::vec3 colour = vkt::shade({0, 0, 0}, {0, 1, 0}, glm::vec3(0.5f), {0, 2, 2}, {&light, 1});
+    const glm::vec3 colour =
+        vkt::shade({0, 0, 0}, {0, 1, 0}, glm::vec3(0.5f), {0, 2, 2}, {&light, 1});
     CHECK(colour.x == Approx(0.015f));  // ambient 0.03 times albedo 0.5
     CHECK(colour.y == Approx(0.015f));
     // Lights add: two equal lights give twice one light's share.
     const vkt::PointLight near{.position = {0, 1, 0}, .radius = 4.0f};
     const vkt::PointLight two[] = {near, near};
-    const glm::vec3 one_light = vkt::shade({0, 0, 0}, {0, 2, 0}, glm::vec3(0.5f), {0, 2, 2}, {&near, 1});
+    const glm::vec3 one_light =
+        vkt::shade({0, 0, 0}, {0, 2, 0}, glm::vec3(0.5f), {0, 2, 2}, {&near, 1});
     const glm::vec3 two_lights = vkt::shade({0, 0, 0}, {0, 1, 0}, glm::vec3(0.5f), {0, 2, 2}, two);
     CHECK(two_lights.x - 0.015f == Approx(2.0f * (one_light.x - 0.015f)));
 }
@@ -143,11 +143,11 @@ TEST_CASE("shade: ambient alone beyond the windowed radius", "[lighting]") {
 //          = 0.021 + 0.460275 * (1, 0.85, 0.65) = (0.481275, 0.412234, 0.320179)
 TEST_CASE("shade: chapter 12's centre pixel, worked by hand", "[lighting]") {
     const float t = 9.0f / 60.0f;
-    const vkt::PointLight light{.position = {0.0f, 1.5f + 0.5f * std::sin(2.0f * t),
-                                             -std::cos(0.8f * t)},
-                                .radius = 6.0f,
-                                .colour = {1.0f, 0.85f, 0.65f},
-                                .intensity = 3.0f};
+    const vkt::PointLight light{
+        .position = {0.0f, 1.5f + 0.5f * std::sin(2.0f * t), -std::cos(0.8f * t)},
+        .radius = 6.0f,
+        .colour = {1.0f, 0.85f, 0.65f},
+        .intensity = 3.0f};
     const glm::vec3 colour =
         vkt::shade({0, 0, 0}, {0, 1, 0}, glm::vec3(0.7f), {0.0f, 5.0f, 10.0f}, {&light, 1});
     CHECK(colour.x == Approx(0.481275f).epsilon(1e-4));

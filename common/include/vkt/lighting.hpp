@@ -67,9 +67,9 @@ enum class Falloff : int { classic = 0, windowed = 1 };  // the shaders' `fallof
 struct LightingParams {
     glm::vec3 ambient{0.03f};  // light that comes from everywhere, times albedo
     Falloff falloff = Falloff::windowed;
-    Attenuation classic{};     // used when falloff == classic
-    float specular = 0.5f;     // strength of the (white) specular highlight
-    float shininess = 32.0f;   // Blinn-Phong exponent: larger, smaller highlight
+    Attenuation classic{};    // used when falloff == classic
+    float specular = 0.5f;    // strength of the (white) specular highlight
+    float shininess = 32.0f;  // Blinn-Phong exponent: larger, smaller highlight
 };
 
 // One light's contribution at a surface point: attenuation times the light's
