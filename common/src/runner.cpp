@@ -71,7 +71,7 @@ public:
 
 private:
     void create_target(VkExtent2D extent);
-    bool draw_frame(uint64_t index, double time);
+    bool draw_frame(uint64_t index, double time, const Input& input);
     void record(FrameSlot& slot, uint32_t image_index, const Frame& frame);
     void recreate_swapchain();
     void save_screenshot(const std::string& path);
@@ -115,8 +115,8 @@ ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
         presentation_ = Presentation::offscreen;
     } else if (!options.headless && has_display()) {
         try {
-            window_ =
-                std::make_unique<Window>(spec.title, VkExtent2D{options.width, options.height});
+            window_ = std::make_unique<Window>(
+                spec.title, VkExtent2D{options.width, options.height}, spec.input);
             presentation_ = Presentation::window;
         } catch (const Error& e) {
             std::fprintf(stderr, "%s: %s; running headless\n", spec.name.c_str(), e.what());
@@ -283,7 +283,10 @@ void ChapterRun::run(const RendererFactory& factory) {
         const double time =
             fixed_step ? double(index) * fixed_time_step : window_->seconds() - start;
         const auto begin = std::chrono::steady_clock::now();
-        if (!draw_frame(index, time)) continue;  // the swapchain was recreated: try again
+        // Input only in an open-ended window run: with --frames, as headless,
+        // every frame sees an empty snapshot, so the run is reproducible.
+        const Input input = window_ && fixed_step == false ? window_->take_input() : Input{};
+        if (!draw_frame(index, time, input)) continue;  // swapchain recreated: try again
         cpu_ms_.push_back(
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
                 .count());
@@ -298,20 +301,25 @@ void ChapterRun::run(const RendererFactory& factory) {
     }
 
     if (options_.benchmark) {
+        std::string scopes;  // "name": {summary}, one per GPU scope the chapter named
+        for (const auto& scope : gpu_timer_.scopes())
+            scopes += (scopes.empty() ? "" : ", ") + json_string(scope.name) + ": " +
+                      json_summary(scope.samples);
         std::printf(
             "{\"chapter\": %s, \"device\": %s, \"presentation\": %s, \"width\": %u, \"height\": "
             "%u, "
-            "\"frames\": %zu, \"cpu_frame_ms\": %s, \"gpu_frame_ms\": %s}\n",
+            "\"frames\": %zu, \"cpu_frame_ms\": %s, \"gpu_frame_ms\": %s, \"gpu_scopes_ms\": "
+            "{%s}}\n",
             json_string(spec_.name).c_str(), json_string(device_->properties().deviceName).c_str(),
             json_string(presentation_name(presentation_)).c_str(), target_.extent.width,
             target_.extent.height, cpu_ms_.size(), json_summary(cpu_ms_).c_str(),
-            json_summary(gpu_timer_.samples_ms()).c_str());
+            json_summary(gpu_timer_.samples_ms()).c_str(), scopes.c_str());
     }
     renderer_.reset();
 }
 
 // [wait-acquire]
-bool ChapterRun::draw_frame(uint64_t index, double time) {
+bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
     const uint32_t slot_index = uint32_t(index % frames_in_flight);
     FrameSlot& slot = slots_[slot_index];
 
@@ -338,7 +346,8 @@ bool ChapterRun::draw_frame(uint64_t index, double time) {
 
     VKT_CHECK(vkResetCommandPool(*device_, slot.pool, 0));
     record(slot, image_index,
-           Frame{slot.cmd, target_.image, target_.view, target_.extent, index, time, slot_index});
+           Frame{slot.cmd, target_.image, target_.view, target_.extent, index, time, slot_index,
+                 input, gpu_timer_ ? &gpu_timer_ : nullptr});
 
     // [submit]
     // Submit: wait for the acquired image before copying into it, signal the

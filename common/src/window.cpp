@@ -7,7 +7,7 @@
 
 namespace vkt {
 
-Window::Window(const std::string& title, VkExtent2D size) {
+Window::Window(const std::string& title, VkExtent2D size, InputUse use) : use_(use) {
     if (!glfwInit()) throw Error("GLFW cannot initialise (no display?)");
     if (!glfwVulkanSupported()) {
         glfwTerminate();
@@ -25,8 +25,40 @@ Window::Window(const std::string& title, VkExtent2D size) {
         static_cast<Window*>(glfwGetWindowUserPointer(w))->resized_ = true;
     });
     glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
-        if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
+        auto* self = static_cast<Window*>(glfwGetWindowUserPointer(w));
+        if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) {
+            // A captured cursor is released first, so the user is never stuck.
+            if (self->captured_)
+                self->capture_cursor(false);
+            else
+                glfwSetWindowShouldClose(w, GLFW_TRUE);
+            return;
+        }
+        if (self->use_ != InputUse::none && action != GLFW_REPEAT)
+            self->input_.key(key, action == GLFW_PRESS);
     });
+    if (use_ == InputUse::none) return;  // the chapter sees no input at all
+    glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
+        static_cast<Window*>(glfwGetWindowUserPointer(w))->input_.scroll(dy);
+    });
+    if (use_ != InputUse::mouse_look) return;
+    glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
+        static_cast<Window*>(glfwGetWindowUserPointer(w))->input_.cursor(x, y);
+    });
+    glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int, int action, int) {
+        auto* self = static_cast<Window*>(glfwGetWindowUserPointer(w));
+        if (action == GLFW_PRESS && !self->captured_) self->capture_cursor(true);
+    });
+    capture_cursor(true);
+}
+
+void Window::capture_cursor(bool capture) {
+    captured_ = capture;
+    glfwSetInputMode(window_, GLFW_CURSOR, capture ? GLFW_CURSOR_DISABLED : GLFW_CURSOR_NORMAL);
+    // Raw motion (no pointer acceleration) where the platform has it.
+    if (glfwRawMouseMotionSupported())
+        glfwSetInputMode(window_, GLFW_RAW_MOUSE_MOTION, capture ? GLFW_TRUE : GLFW_FALSE);
+    input_.set_captured(capture);
 }
 
 Window::~Window() {

@@ -12,6 +12,8 @@
 
 #include "vkt/args.hpp"
 #include "vkt/device.hpp"
+#include "vkt/gpu_timer.hpp"
+#include "vkt/input.hpp"
 #include "vkt/upload.hpp"
 
 #include <functional>
@@ -48,6 +50,13 @@ struct Frame {
     uint64_t index;  // 0, 1, 2, ...
     double time;    // seconds: index / 60 headless or with --frames (reproducible), else wall clock
     uint32_t slot;  // which frame in flight, 0 .. frames_in_flight - 1
+    const Input& input;  // what the user did since the last frame (chapter 11); may be empty
+    GpuTimer* timer;     // null unless --benchmark: use gpu_scope()
+
+    // Times the commands recorded while the returned object lives as a named
+    // GPU scope, which --benchmark reports (chapter 13):
+    //   { auto scope = frame.gpu_scope("simulate"); vkCmdDispatch(...); }
+    GpuScope gpu_scope(std::string_view name) const { return {timer, cmd, slot, name}; }
 };
 
 class Renderer {
@@ -64,6 +73,7 @@ struct ChapterSpec {
     std::string title;  // shown in the window's title bar
     DeviceRequirements requirements;
     std::vector<OptionSpec> options;  // the chapter's own flags (--model, --lights, ...)
+    InputUse input = InputUse::none;  // what input the chapter wants in a window (chapter 11)
 };
 
 using RendererFactory = std::function<std::unique_ptr<Renderer>(const Context&)>;

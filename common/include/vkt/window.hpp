@@ -1,6 +1,7 @@
 #pragma once
 // A resizable GLFW window with a Vulkan surface (chapter 03's window path).
 
+#include "vkt/input.hpp"
 #include "vkt/owned.hpp"
 
 #include <string>
@@ -13,7 +14,8 @@ namespace vkt {
 class Window {
 public:
     // Throws Error when GLFW cannot open a window (no display, no Vulkan support).
-    Window(const std::string& title, VkExtent2D size);
+    // use: which input the chapter wants (chapter 11); with none, Escape still quits.
+    Window(const std::string& title, VkExtent2D size, InputUse use = InputUse::none);
     ~Window();
     Window(const Window&) = delete;
     Window& operator=(const Window&) = delete;
@@ -34,10 +36,17 @@ public:
     // True once after the framebuffer changed size.
     bool take_resized();
     double seconds() const;
+    // What happened since the last call (always empty for InputUse::none).
+    Input take_input() { return input_.take(); }
 
 private:
+    void capture_cursor(bool capture);
+
     GLFWwindow* window_ = nullptr;
     bool resized_ = false;
+    InputUse use_ = InputUse::none;
+    bool captured_ = false;
+    InputAccumulator input_;
 };
 
 }  // namespace vkt
