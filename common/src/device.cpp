@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cstdlib>
 #include <cstring>
+#include <string_view>
 
 namespace vkt {
 
@@ -82,6 +84,31 @@ int device_type_score(VkPhysicalDeviceType type) {
     }
 }
 
+// VKT_HIDE_FEATURES=name,name,...: the tests' way to play a device that lacks
+// a feature or an extension (lavapipe has nearly all of them), so the message a
+// reader with such a device would see can be checked. Names as in the Vulkan
+// structs and extension strings: bufferDeviceAddress, VK_KHR_swapchain.
+static bool hidden_by_tests(std::string_view name) {
+    const char* list = std::getenv("VKT_HIDE_FEATURES");
+    if (!list) return false;
+    std::string_view rest(list);
+    while (!rest.empty()) {
+        const size_t comma = rest.find(',');
+        if (rest.substr(0, comma) == name) return true;
+        if (comma == std::string_view::npos) break;
+        rest.remove_prefix(comma + 1);
+    }
+    return false;
+}
+
+// "lacks the dynamicRendering feature", "lacks the extension VK_KHR_swapchain"
+static std::string lacks(bool feature, std::string_view name) {
+    std::string text = feature ? "lacks the " + std::string(name) + " feature"
+                               : "lacks the extension " + std::string(name);
+    if (hidden_by_tests(name)) text += " (hidden by VKT_HIDE_FEATURES)";
+    return text;
+}
+
 static std::string why_unsuitable(VkPhysicalDevice device, VkSurfaceKHR surface,
                                   const DeviceRequirements& requirements, uint32_t& family_out) {
     VkPhysicalDeviceProperties properties;
@@ -94,13 +121,15 @@ static std::string why_unsuitable(VkPhysicalDevice device, VkSurfaceKHR surface,
     FeatureChain available;
     vkGetPhysicalDeviceFeatures2(device, available.head());
     for (const Feature& feature : base_features())
-        if (!available.has(feature)) return std::string("lacks the ") + feature.name + " feature";
+        if (!available.has(feature) || hidden_by_tests(feature.name))
+            return lacks(true, feature.name);
     for (const Feature& feature : requirements.features)
-        if (!available.has(feature)) return std::string("lacks the ") + feature.name + " feature";
+        if (!available.has(feature) || hidden_by_tests(feature.name))
+            return lacks(true, feature.name);
 
     for (const char* wanted : requirements.extensions)
-        if (!has_device_extension(device, wanted))
-            return std::string("lacks the extension ") + wanted;
+        if (!has_device_extension(device, wanted) || hidden_by_tests(wanted))
+            return lacks(false, wanted);
 
     uint32_t count = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
