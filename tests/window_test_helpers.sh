@@ -26,9 +26,12 @@ fail() {
 # taken over the screen (wmctrl answers).
 start_wm() {
   command -v openbox >/dev/null || fail "openbox is not installed (scripts/install-deps.sh)"
-  openbox --sm-disable >/dev/null 2>&1 &
+  local log; log=$(mktemp -t openbox.XXXXXX)
+  openbox --sm-disable >/dev/null 2>"$log" &
+  local wm=$!
   for _ in $(seq "$VKT_EVENT_BOUND"); do
-    wmctrl -m >/dev/null 2>&1 && return 0
+    wmctrl -m >/dev/null 2>&1 && { rm -f "$log"; return 0; }
+    kill -0 "$wm" 2>/dev/null || fail "the window manager exited: $(cat "$log")"
     sleep 0.1
   done
   fail "the window manager did not start"
