@@ -316,7 +316,11 @@ private:
 }  // namespace
 
 int main(int argc, char** argv) {
-    return vkt::run_chapter(
-        argc, argv, {.name = "08_depth", .title = "08 - depth"},
-        [](const vkt::Context& context) { return std::make_unique<Scene>(context); });
+    vkt::ChapterSpec spec{.name = "08_depth", .title = "08 - depth"};
+    // DEPTH_ATTACHMENT_OPTIMAL, a layout for the depth aspect alone, is only
+    // allowed with this Vulkan 1.2 feature turned on (every 1.3 device has it).
+    spec.requirements.features = {VKT_FEATURE_12(separateDepthStencilLayouts)};
+    return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
+        return std::make_unique<Scene>(context);
+    });
 }
