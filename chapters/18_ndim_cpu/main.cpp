@@ -1,0 +1,363 @@
+// Chapter 18: objects of n dimensions, on the CPU.
+//
+// A tesseract (the 4-cube) and a 24-cell side by side, turning in several of
+// their six rotation planes at once; or one n-cube (--scene cube --dim N), or
+// 250 of them (--scene many). The mathematics is plain C++ in common/
+// (vkt/ndim.hpp): meshes, transforms of n(n+3)/2 numbers, (n+1)x(n+1) model
+// matrices, projection n -> 2 one dimension at a time. This file is the CPU
+// path that uses it: every frame it builds each object's model matrix,
+// transforms and projects every vertex, writes two 2D points per visible edge
+// into this frame's host-visible vertex buffer, and draws them all with one
+// vkCmdDraw of a LINE_LIST. Chapters 19 and 20 move that work to the GPU.
+
+#include "vkt/ndim.hpp"
+#include "vkt/pipeline.hpp"
+#include "vkt/runner.hpp"
+#include "vkt/shader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace nd = vkt::ndim;
+
+// [line-vertex]
+// What the GPU gets: a point already projected to clip space and its colour.
+// 12 bytes; the colour is four bytes unpacked to floats by the vertex input.
+struct LineVertex {
+    float x, y;
+    uint32_t colour;  // R, G, B, A bytes, lowest first: VK_FORMAT_R8G8B8A8_UNORM
+};
+static_assert(sizeof(LineVertex) == 12);
+// [/line-vertex]
+
+// An object: a mesh, where it starts, and how fast each plane's angle turns.
+struct Object {
+    const nd::Mesh* mesh;
+    float radius;  // of the mesh: scales the depth colour
+    nd::Transform start;
+    std::vector<float> spin;  // radians per second, one per plane
+};
+
+// A reproducible generator, the same on every machine (the standard
+// distributions are not): 24 random bits of a 32-bit xorshift as a float.
+struct Random {
+    uint32_t state;
+    float uniform(float lo, float hi) {
+        state ^= state << 13;
+        state ^= state >> 17;
+        state ^= state << 5;
+        return lo + (hi - lo) * float(state >> 8) * (1.0f / 16777216.0f);
+    }
+};
+
+// Linear colour (the _SRGB target encodes it) from the depth in the dropped
+// dimensions: t = -1 (far from the eye on the last axis) blue, t = 1 (near)
+// orange.
+uint32_t depth_colour(float t) {
+    t = std::clamp(0.5f + 0.5f * t, 0.0f, 1.0f);
+    const float r = 0.10f + 0.90f * t, g = 0.30f + 0.15f * t, b = 1.00f - 0.90f * t;
+    return uint32_t(r * 255.0f + 0.5f) | uint32_t(g * 255.0f + 0.5f) << 8 |
+           uint32_t(b * 255.0f + 0.5f) << 16 | 0xff000000u;
+}
+
+// GLFW key codes for the controls (vkt/input.hpp has the common ones).
+constexpr int key_0 = 48, key_1 = 49, key_o = 79, key_r = 82, key_left_bracket = 91,
+              key_right_bracket = 93, key_f1 = 290;
+
+class NdimCpu : public vkt::Renderer {
+public:
+    explicit NdimCpu(const vkt::Context& context) : device_(context.device) {
+        const auto& options = context.options;
+        const std::string scene = options.text("--scene");
+        if (scene == "default" && options.has("--dim"))
+            throw std::runtime_error("--dim " + options.text("--dim") +
+                                     ": the default scene is 4-dimensional; use --scene cube or "
+                                     "--scene many to choose n");
+        n_ = options.has("--dim") ? int(options.integer("--dim")) : 4;
+        still_ = options.text("--motion") == "still";
+        projection_ = options.text("--projection") == "orthographic" ? nd::Projection::orthographic
+                                                                     : nd::Projection::perspective;
+        naive_ = options.text("--matrix") == "naive";
+        build_scene(scene);
+
+        // [vertex-buffers]
+        // Every visible edge becomes two LineVertex, rewritten every frame: one
+        // host-visible buffer per frame in flight, sized for every edge of
+        // every object (edges behind the eye are left out, never added).
+        size_t edges = 0;
+        for (const Object& object : objects_) edges += object.mesh->edges.size();
+        for (uint32_t i = 0; i < context.frames_in_flight; ++i)
+            vertex_buffers_.push_back(vkt::create_host_buffer(
+                context.gpu(), edges * 2 * sizeof(LineVertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT));
+        // [/vertex-buffers]
+        std::fprintf(
+            stderr,
+            "18_ndim_cpu: %s scene, n = %d, %zu objects, %zu lines per frame, eye at %.3g\n",
+            scene.c_str(), n_, objects_.size(), edges, eye_);
+
+        // [line-pipeline]
+        // The points arrive projected: the vertex shader only passes them on.
+        // LINE_LIST: vertices 2k and 2k+1 make line k, one pixel wide.
+        const VkVertexInputBindingDescription binding{
+            .binding = 0, .stride = sizeof(LineVertex), .inputRate = VK_VERTEX_INPUT_RATE_VERTEX};
+        const VkVertexInputAttributeDescription attributes[] = {
+            {.location = 0,
+             .binding = 0,
+             .format = VK_FORMAT_R32G32_SFLOAT,
+             .offset = offsetof(LineVertex, x)},
+            {.location = 1,
+             .binding = 0,
+             .format = VK_FORMAT_R8G8B8A8_UNORM,
+             .offset = offsetof(LineVertex, colour)},
+        };
+        layout_ = vkt::create_pipeline_layout(device_);
+        vkt::ShaderModule vertex = vkt::load_shader(device_, context.chapter, "lines.vert");
+        vkt::ShaderModule fragment = vkt::load_shader(device_, context.chapter, "lines.frag");
+        pipeline_ =
+            vkt::create_graphics_pipeline(device_, {
+                                                       .vertex = vertex,
+                                                       .fragment = fragment,
+                                                       .layout = layout_,
+                                                       .bindings = {&binding, 1},
+                                                       .attributes = attributes,
+                                                       .topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST,
+                                                       .color_formats = {context.color_format},
+                                                   });
+        // [/line-pipeline]
+        world_.resize(size_t(n_));
+    }
+
+    void record(const vkt::Frame& frame) override {
+        const float dt = float(frame.time - last_time_);
+        last_time_ = frame.time;
+        steer(frame.input, dt);
+        if (!still_ && !paused_) spin_time_ += dt;
+
+        const float aspect = float(frame.extent.width) / float(frame.extent.height);
+        const float to_clip_x = 1.0f / (view_half_height_ * aspect),
+                    to_clip_y = -1.0f / view_half_height_;
+        auto* out = static_cast<LineVertex*>(vertex_buffers_[frame.slot].mapped);
+        size_t written = 0;
+        for (const Object& object : objects_) {
+            // [model-matrix]
+            // This frame's transform: the start angles plus spin * time, plus
+            // what the keys added; then the (n+1)x(n+1) matrix T * R * S.
+            nd::Transform t = object.start;
+            for (size_t p = 0; p < t.angles.size(); ++p)
+                t.angles[p] += object.spin[p] * spin_time_ + user_angles_[p];
+            for (int k = 0; k < n_; ++k) t.position[size_t(k)] += user_offset_[size_t(k)];
+            const nd::Matrix model = naive_ ? nd::model_matrix(t) : nd::model_matrix_by_rows(t);
+            // [/model-matrix]
+
+            // [transform-project]
+            // Each vertex once: (n+1)^2 multiply-adds for the matrix, n - 2
+            // divisions for the projection. The colour says how near the eye
+            // the vertex is along the last axis, the first one dropped.
+            const nd::Mesh& mesh = *object.mesh;
+            projected_.resize(mesh.vertex_count());
+            for (size_t i = 0; i < mesh.vertex_count(); ++i) {
+                nd::transform_point(model, mesh.vertex(i), world_);
+                Projected& p = projected_[i];
+                float xy[2] = {0.0f, 0.0f};
+                p.visible = nd::project_to_2d(world_, projection_, eye_, xy);
+                p.x = xy[0] * to_clip_x;
+                p.y = xy[1] * to_clip_y;
+                p.colour = depth_colour((world_.back() - t.position.back()) / object.radius);
+            }
+            // [/transform-project]
+
+            // [write-lines]
+            // Two points per edge whose ends are both in front of the eye.
+            // Coherent memory: no flush, the queue submit makes it visible.
+            for (const nd::Edge& edge : mesh.edges) {
+                const Projected &a = projected_[edge.a], &b = projected_[edge.b];
+                if (!a.visible || !b.visible) continue;
+                out[written++] = {a.x, a.y, a.colour};
+                out[written++] = {b.x, b.y, b.colour};
+            }
+            // [/write-lines]
+        }
+
+        VkRenderingAttachmentInfo colour{
+            .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+            .imageView = frame.target_view,
+            .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+            .clearValue = {.color = {{0.006f, 0.006f, 0.012f, 1.0f}}},
+        };
+        VkRenderingInfo rendering{
+            .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+            .renderArea = {{0, 0}, frame.extent},
+            .layerCount = 1,
+            .colorAttachmentCount = 1,
+            .pColorAttachments = &colour,
+        };
+        vkCmdBeginRendering(frame.cmd, &rendering);
+        if (written > 0) {
+            auto scope = frame.gpu_scope("raster");
+            vkCmdBindPipeline(frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+            vkt::set_viewport_and_scissor(frame.cmd, frame.extent);
+            const VkDeviceSize offset = 0;
+            const VkBuffer buffer = vertex_buffers_[frame.slot].buffer;
+            vkCmdBindVertexBuffers(frame.cmd, 0, 1, &buffer, &offset);
+            vkCmdDraw(frame.cmd, uint32_t(written), 1, 0, 0);
+        }
+        vkCmdEndRendering(frame.cmd);
+    }
+
+private:
+    struct Projected {
+        float x, y;
+        uint32_t colour;
+        bool visible;
+    };
+
+    // [scenes]
+    // Object radii r and the eye distance: with d > r sqrt(n - 2) no vertex
+    // can reach the eye (the appendix derives it); twice that keeps a clear
+    // perspective without clipping. Objects sit side by side along axes 0
+    // and 1, the two that reach the screen.
+    void build_scene(const std::string& scene) {
+        Random random{18u};
+        const int planes = nd::plane_count(n_);
+        auto object_at = [&](const nd::Mesh& mesh, float x, float y) {
+            Object object{&mesh, mesh.radius(), nd::Transform::identity(n_),
+                          std::vector<float>(size_t(planes))};
+            object.start.position[0] = x;
+            object.start.position[1] = y;
+            for (int p = 0; p < planes; ++p) {
+                object.start.angles[size_t(p)] = still_ ? 0.0f : random.uniform(-0.6f, 0.6f);
+                object.spin[size_t(p)] = still_ ? 0.0f : random.uniform(-0.5f, 0.5f);
+            }
+            return object;
+        };
+        if (scene == "default") {
+            meshes_ = {nd::make_cube(4, 1.0f), nd::make_24_cell(2.0f)};  // both of radius 2
+            objects_ = {object_at(meshes_[0], -3.0f, 0.0f), object_at(meshes_[1], 3.0f, 0.0f)};
+            eye_ = 2.0f * nd::safe_eye_distance(4, 2.0f);
+            view_half_height_ = 4.3f;
+        } else if (scene == "cube") {
+            meshes_ = {nd::make_cube(n_, 1.0f)};
+            objects_ = {object_at(meshes_[0], 0.0f, 0.0f)};
+            const float r = std::sqrt(float(n_));
+            eye_ = 2.0f * nd::safe_eye_distance(n_, r);
+            view_half_height_ = 1.5f * r;
+        } else {  // many: 250 n-cubes scattered over a 4:3 field
+            meshes_ = {nd::make_cube(n_, 1.0f)};
+            const float r = std::sqrt(float(n_)), field = 9.0f * r;
+            for (int i = 0; i < 250; ++i) {
+                const float x = random.uniform(-field * 4.0f / 3.0f, field * 4.0f / 3.0f);
+                const float y = random.uniform(-field, field);
+                objects_.push_back(object_at(meshes_[0], x, y));
+            }
+            // A cube far off the axis is stretched by about its offset times
+            // its depth over d, as in a wide-angle lens: the eye stands
+            // further back here.
+            eye_ = std::max(2.0f * nd::safe_eye_distance(n_, r), 3.0f * field);
+            view_half_height_ = field + 1.5f * r;
+        }
+        user_angles_.assign(size_t(planes), 0.0f);
+        user_offset_.assign(size_t(n_), 0.0f);
+    }
+    // [/scenes]
+
+    // [controls]
+    // In a window: keys 1..9, 0 turn the ten planes of the current page
+    // (1 is plane (0,1) on page one), [ and ] change the page, F1..F12 move
+    // along axes 0..11, Shift reverses, Space pauses the spin, O switches
+    // perspective and orthographic, R resets. Headless, input is always
+    // empty and the picture depends on the frame index alone.
+    void steer(const vkt::Input& input, float dt) {
+        const float sign = input.shift() ? -1.0f : 1.0f;
+        const int planes = nd::plane_count(n_), pages = (planes + 9) / 10;
+        if (input.went_down(key_right_bracket) || input.went_down(key_left_bracket)) {
+            page_ = (page_ + (input.went_down(key_right_bracket) ? 1 : pages - 1)) % pages;
+            const auto [i, j] = nd::plane_axes(n_, page_ * 10);
+            std::fprintf(stderr, "18_ndim_cpu: keys 1..0 turn planes %d.. from (%d,%d)\n",
+                         page_ * 10 + 1, i, j);
+        }
+        for (int key = 0; key < 10; ++key) {
+            const int plane = page_ * 10 + key;
+            if (plane < planes && input.down(key == 9 ? key_0 : key_1 + key))
+                user_angles_[size_t(plane)] += sign * 1.0f * dt;
+        }
+        for (int axis = 0; axis < std::min(n_, 12); ++axis)
+            if (input.down(key_f1 + axis)) user_offset_[size_t(axis)] += sign * 1.5f * dt;
+        if (input.went_down(vkt::key::space)) paused_ = !paused_;
+        if (input.went_down(key_o))
+            projection_ = projection_ == nd::Projection::perspective ? nd::Projection::orthographic
+                                                                     : nd::Projection::perspective;
+        if (input.went_down(key_r)) {
+            std::fill(user_angles_.begin(), user_angles_.end(), 0.0f);
+            std::fill(user_offset_.begin(), user_offset_.end(), 0.0f);
+        }
+    }
+    // [/controls]
+
+    VkDevice device_;
+    int n_ = 4;
+    bool still_ = false, naive_ = true, paused_ = false;
+    nd::Projection projection_ = nd::Projection::perspective;
+    std::vector<nd::Mesh> meshes_;
+    std::vector<Object> objects_;
+    float eye_ = 4.0f, view_half_height_ = 1.0f;
+    std::vector<float> user_angles_, user_offset_;
+    int page_ = 0;
+    double last_time_ = 0.0;
+    float spin_time_ = 0.0f;
+    std::vector<float> world_;
+    std::vector<Projected> projected_;
+    std::vector<vkt::Buffer> vertex_buffers_;
+    vkt::PipelineLayout layout_;
+    vkt::Pipeline pipeline_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // [spec]
+    vkt::ChapterSpec spec{
+        .name = "18_ndim_cpu", .title = "18 - ndim_cpu", .input = vkt::InputUse::keys};
+    spec.options = {
+        {.name = "--scene",
+         .type = vkt::OptionType::choice,
+         .help = "a tesseract and a 24-cell, one n-cube, or 250 n-cubes",
+         .default_value = "default",
+         .choices = {"default", "cube", "many"}},
+        // 3: below that there is nothing to project. 12: 250 12-cubes are
+        // 6.1 million lines, 141 MiB of line vertices per frame in flight;
+        // each step up doubles the vertices and more than doubles the edges.
+        {.name = "--dim",
+         .type = vkt::OptionType::integer,
+         .value_name = "N",
+         .help = "the dimension n of the cubes of --scene cube and many (default 4)",
+         .min = 3,
+         .max = 12},
+        {.name = "--projection",
+         .type = vkt::OptionType::choice,
+         .help = "perspective (the eye on each last axis) or orthographic (drop it)",
+         .default_value = "perspective",
+         .choices = {"perspective", "orthographic"}},
+        {.name = "--motion",
+         .type = vkt::OptionType::choice,
+         .help = "turn in every plane, or stand still with every angle 0",
+         .default_value = "spin",
+         .choices = {"spin", "still"}},
+        {.name = "--matrix",
+         .type = vkt::OptionType::choice,
+         .help = "build the model matrix from full products (O(n^5)) or row by row (O(n^3))",
+         .default_value = "naive",
+         .choices = {"naive", "rows"}},
+    };
+    // [/spec]
+    return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
+        return std::make_unique<NdimCpu>(context);
+    });
+}
