@@ -238,14 +238,6 @@ private:
         }
         if (!interactive_) return scripted_camera(float(frame.time));
 
-        if (input.cursor_captured != captured_) {
-            captured_ = input.cursor_captured;
-            std::fprintf(stderr, "%s\n",
-                         captured_ ? "11_camera: cursor captured: the mouse looks, W A S D walk, "
-                                     "Q E down and up, Shift runs, Escape releases the cursor"
-                                   : "11_camera: cursor released: click in the window to capture "
-                                     "it again, Escape quits");
-        }
         // Seconds since the last frame, from the runner's clock. Capped, so
         // that after a stall (the window dragged, the machine busy) the camera
         // does not jump through a wall in one step.
@@ -253,6 +245,22 @@ private:
         last_time_ = frame.time;
         const float speed = input.shift() ? 3.0f * speed_ : speed_;
         camera_.update(input, dt, speed, sensitivity_);
+
+        // Say when the cursor changes hands (the window test waits for it),
+        // and where the camera stands then.
+        if (input.cursor_captured != captured_) {
+            captured_ = input.cursor_captured;
+            if (captured_)
+                std::fprintf(stderr,
+                             "11_camera: cursor captured: the mouse looks, W A S D walk, Q E down "
+                             "and up, Shift runs, Escape releases the cursor\n");
+            else
+                std::fprintf(stderr,
+                             "11_camera: cursor released at (%.4f, %.4f, %.4f), yaw %.4f, pitch "
+                             "%.4f: click in the window to capture it again, Escape quits\n",
+                             camera_.position.x, camera_.position.y, camera_.position.z,
+                             camera_.yaw, camera_.pitch);
+        }
         return camera_;
     }
     // [/interactive]

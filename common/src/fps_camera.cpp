@@ -78,7 +78,10 @@ glm::vec3 FpsCamera::move_direction(const Input& input) const {
 }
 
 void FpsCamera::update(const Input& input, float dt, float speed, float sensitivity) {
-    if (input.cursor_captured) look(input.mouse_dx, input.mouse_dy, sensitivity);
+    // Movement made while the cursor was captured counts even if the cursor
+    // was released later in the same frame (Escape): the snapshot holds only
+    // such movement, and it holds it whatever cursor_captured says now.
+    look(input.mouse_dx, input.mouse_dy, sensitivity);
     // Metres per second times seconds: the same walk at 30 or 240 frames/s.
     position += move_direction(input) * speed * std::max(dt, 0.0f);
 }

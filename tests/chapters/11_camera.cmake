@@ -52,8 +52,9 @@ vkt_chapter_test(bad_input.11_camera.speed_text 11_camera EXIT 2 ARGS --speed fa
 vkt_chapter_test(bad_input.11_camera.sensitivity_range 11_camera EXIT 2 ARGS --sensitivity 1
   EXPECT "--sensitivity wants a number from 0.0001 to 0.05, not '1'")
 
-# Escape with a captured cursor: the first releases it, a click captures it
-# again, and only an Escape with the cursor free quits (window_camera.sh).
+# In a real window, driven by events (window_camera.sh): W walks forward and
+# the first Escape only releases the cursor, a click captures it again, the
+# mouse moved right turns right, and only an Escape with the cursor free quits.
 if(XVFB_RUN AND XDOTOOL AND OPENBOX)
   add_test(NAME chapter.11_camera.window_escape
     COMMAND ${XVFB_RUN} -a -s "-screen 0 800x600x24"

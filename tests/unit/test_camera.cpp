@@ -1,6 +1,7 @@
 // The first-person camera of chapter 11 (vkt/fps_camera.hpp), against values
 // worked out by hand and against glm::lookAt.
 #include "vkt/fps_camera.hpp"
+#include "vkt/input.hpp"
 
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
@@ -102,11 +103,6 @@ TEST_CASE("the mouse turns the way it moves, and only while the cursor is captur
     vkt::Input input;
     input.mouse_dx = 100;  // right
     input.mouse_dy = 50;   // down (screen y)
-    vkt::FpsCamera free_cursor;
-    free_cursor.update(input, 1.0f / 60, 3.0f, 0.002f);
-    CHECK(free_cursor.yaw == 0.0f);  // cursor not captured: the mouse is the user's
-    CHECK(free_cursor.pitch == 0.0f);
-
     input.cursor_captured = true;
     vkt::FpsCamera camera;
     camera.update(input, 1.0f / 60, 3.0f, 0.002f);
@@ -114,6 +110,29 @@ TEST_CASE("the mouse turns the way it moves, and only while the cursor is captur
     CHECK(camera.pitch == Approx(-0.1f));  // 50 px down: looking down
     CHECK(camera.forward().x > 0.0f);
     CHECK(camera.forward().y < 0.0f);
+
+    // Through the runner's accumulator (vkt/input.hpp), as in a window. A free
+    // cursor's movement is the user's, not the camera's.
+    vkt::InputAccumulator window;
+    window.cursor(10, 10);
+    window.cursor(300, 200);
+    vkt::FpsCamera free_cursor;
+    free_cursor.update(window.take(), 1.0f / 60, 3.0f, 0.002f);
+    CHECK(free_cursor.yaw == 0.0f);
+    CHECK(free_cursor.pitch == 0.0f);
+    // Captured: 100 px right. Then, in the same frame, Escape releases the
+    // cursor: the movement made while it was captured still turns the camera.
+    window.set_captured(true);
+    window.cursor(400, 300);  // the first position after capture: no movement
+    window.cursor(500, 300);
+    window.set_captured(false);
+    window.cursor(900, 900);  // free again: not counted
+    const vkt::Input frame = window.take();
+    CHECK_FALSE(frame.cursor_captured);
+    vkt::FpsCamera released;
+    released.update(frame, 1.0f / 60, 3.0f, 0.002f);
+    CHECK(released.yaw == Approx(0.2f));
+    CHECK(released.pitch == 0.0f);
 }
 
 TEST_CASE("the view matrix of a known pose, worked by hand", "[camera]") {

@@ -43,9 +43,11 @@ struct FpsCamera {
     // The pitch is clamped, the yaw wrapped into [-pi, pi].
     void look(double mouse_dx, double mouse_dy, float sensitivity);
 
-    // One frame of input: look with the mouse (only while the cursor is
-    // captured), then move `speed` metres per second for `dt` seconds in the
-    // direction of move_direction(input). dt below 0 counts as 0.
+    // One frame of input: look with the mouse movement, then move `speed`
+    // metres per second for `dt` seconds in the direction of
+    // move_direction(input). dt below 0 counts as 0. The runner's snapshot
+    // holds mouse movement only from while the cursor was captured (see
+    // vkt::InputAccumulator), so a free cursor turns nothing.
     void update(const Input& input, float dt, float speed, float sensitivity);
 
     // The direction the held keys ask for, in world space: W and S along
