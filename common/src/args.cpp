@@ -26,7 +26,9 @@ bool is_frame_loop_flag(std::string_view flag) {
 
 std::string format_number(double value) {
     char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
+    // 15 significant digits: every whole number a flag takes prints in full
+    // (plain %g would write 268435456 as 2.68435e+08).
+    std::snprintf(text, sizeof text, "%.15g", value);
     return text;
 }
 
