@@ -130,7 +130,9 @@ public:
             kWorkgroupSize > limits.maxComputeWorkGroupInvocations)
             throw vkt::Error("this chapter's workgroups of " + std::to_string(kWorkgroupSize) +
                              " exceed the device's maxComputeWorkGroupSize[0] (" +
-                             std::to_string(limits.maxComputeWorkGroupSize[0]) + ")");
+                             std::to_string(limits.maxComputeWorkGroupSize[0]) +
+                             ") or maxComputeWorkGroupInvocations (" +
+                             std::to_string(limits.maxComputeWorkGroupInvocations) + ")");
         check_memory_limits(context.physical, count_);
 
         // [chunks]

@@ -23,7 +23,7 @@ vkt_chapter_test(chapter.13_compute.partial_chunks 13_compute ARGS ${headless} -
 # One particle more than lavapipe's 4,194,304 per dispatch (its
 # maxStorageBufferRange of 128 MiB over 32 bytes): a second dispatch of one
 # workgroup with 255 idle invocations. (16,777,216 particles work as well,
-# in 4 dispatches, but drawing them takes lavapipe about 20 s a frame: see
+# in 4 dispatches, but drawing them takes lavapipe about 30 s a frame: see
 # benchmarks/13_compute.md.)
 vkt_chapter_test(chapter.13_compute.limit_split 13_compute
   ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE} --count 4194305
