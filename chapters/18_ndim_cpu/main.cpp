@@ -14,8 +14,10 @@
 #include "vkt/pipeline.hpp"
 #include "vkt/runner.hpp"
 #include "vkt/shader.hpp"
+#include "vkt/stats.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -119,18 +121,28 @@ public:
         layout_ = vkt::create_pipeline_layout(device_);
         vkt::ShaderModule vertex = vkt::load_shader(device_, context.chapter, "lines.vert");
         vkt::ShaderModule fragment = vkt::load_shader(device_, context.chapter, "lines.frag");
-        pipeline_ =
-            vkt::create_graphics_pipeline(device_, {
-                                                       .vertex = vertex,
-                                                       .fragment = fragment,
-                                                       .layout = layout_,
-                                                       .bindings = {&binding, 1},
-                                                       .attributes = attributes,
-                                                       .topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST,
-                                                       .color_formats = {context.color_format},
-                                                   });
+        const vkt::GraphicsPipelineDesc desc{
+            .vertex = vertex,
+            .fragment = fragment,
+            .layout = layout_,
+            .bindings = {&binding, 1},
+            .attributes = attributes,
+            .topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST,
+            .color_formats = {context.color_format},
+        };
+        pipeline_ = vkt::create_graphics_pipeline(device_, desc);
         // [/line-pipeline]
         world_.resize(size_t(n_));
+        benchmark_ = options.benchmark;
+    }
+
+    // With --benchmark, the CPU's share alone: the runner's frame time also
+    // holds the wait for the GPU (and on lavapipe the GPU is the CPU too).
+    ~NdimCpu() override {
+        if (benchmark_)
+            std::fprintf(stderr,
+                         "18_ndim_cpu: CPU transform, project and write per frame, ms: %s\n",
+                         vkt::json_summary(cpu_ms_).c_str());
     }
 
     void record(const vkt::Frame& frame) override {
@@ -144,6 +156,7 @@ public:
                     to_clip_y = -1.0f / view_half_height_;
         auto* out = static_cast<LineVertex*>(vertex_buffers_[frame.slot].mapped);
         size_t written = 0;
+        const auto cpu_start = std::chrono::steady_clock::now();
         for (const Object& object : objects_) {
             // [model-matrix]
             // This frame's transform: the start angles plus spin * time, plus
@@ -156,7 +169,7 @@ public:
             // [/model-matrix]
 
             // [transform-project]
-            // Each vertex once: (n+1)^2 multiply-adds for the matrix, n - 2
+            // Each vertex once: n(n+1) multiply-adds for the matrix, n - 2
             // divisions for the projection. The colour says how near the eye
             // the vertex is along the last axis, the first one dropped.
             const nd::Mesh& mesh = *object.mesh;
@@ -183,6 +196,10 @@ public:
             }
             // [/write-lines]
         }
+        if (benchmark_)
+            cpu_ms_.push_back(std::chrono::duration<double, std::milli>(
+                                  std::chrono::steady_clock::now() - cpu_start)
+                                  .count());
 
         VkRenderingAttachmentInfo colour{
             .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
@@ -303,7 +320,8 @@ private:
 
     VkDevice device_;
     int n_ = 4;
-    bool still_ = false, naive_ = true, paused_ = false;
+    bool still_ = false, naive_ = true, paused_ = false, benchmark_ = false;
+    std::vector<double> cpu_ms_;
     nd::Projection projection_ = nd::Projection::perspective;
     std::vector<nd::Mesh> meshes_;
     std::vector<Object> objects_;

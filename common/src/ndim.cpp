@@ -91,6 +91,7 @@ std::vector<float> Transform::packed() const {
     return out;
 }
 
+// [per-plane]
 void transform_point(const Transform& t, std::span<const float> x, std::span<float> out) {
     const int n = t.dim();
     for (int k = 0; k < n; ++k) out[size_t(k)] = x[size_t(k)] * t.scale[size_t(k)];
@@ -104,6 +105,7 @@ void transform_point(const Transform& t, std::span<const float> x, std::span<flo
         }
     for (int k = 0; k < n; ++k) out[size_t(k)] += t.position[size_t(k)];
 }
+// [/per-plane]
 
 Matrix Matrix::identity(int n) {
     Matrix m(n);
@@ -140,6 +142,7 @@ Matrix rotation_matrix(int n, std::span<const float> angles) {
     return r;
 }
 
+// [rotate-rows]
 // R_ij * M: row i becomes c*row_i - s*row_j, row j becomes s*row_i + c*row_j;
 // every other row stays.
 static void rotate_rows(Matrix& m, int i, int j, float angle) {
@@ -150,6 +153,7 @@ static void rotate_rows(Matrix& m, int i, int j, float angle) {
         m(j, col) = s * a + c * b;
     }
 }
+// [/rotate-rows]
 
 Matrix rotation_matrix_by_rows(int n, std::span<const float> angles) {
     Matrix r = Matrix::identity(n);
@@ -159,6 +163,7 @@ Matrix rotation_matrix_by_rows(int n, std::span<const float> angles) {
     return r;
 }
 
+// [model-naive]
 Matrix model_matrix(const Transform& t) {
     const int n = t.dim();
     Matrix scale = Matrix::identity(n + 1);
@@ -176,6 +181,7 @@ Matrix model_matrix(const Transform& t) {
             m = plane_rotation(n + 1, i, j, t.angles[size_t(p)]) * m;
     return translate * m;
 }
+// [/model-naive]
 
 Matrix model_matrix_by_rows(const Transform& t) {
     const int n = t.dim();
@@ -222,6 +228,7 @@ double determinant(const Matrix& m) {
     return det;
 }
 
+// [project]
 bool project_to_2d(std::span<const float> x, Projection kind, float d, float out[2]) {
     const size_t n = x.size();
     if (n < 2) throw std::invalid_argument("project_to_2d: a point needs at least 2 coordinates");
@@ -239,6 +246,7 @@ bool project_to_2d(std::span<const float> x, Projection kind, float d, float out
     out[1] = f * x[1];
     return true;
 }
+// [/project]
 
 float safe_eye_distance(int n, float r) {
     return r * std::sqrt(float(std::max(n - 2, 0)));
