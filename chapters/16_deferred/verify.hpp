@@ -246,6 +246,5 @@ inline void verify(const std::string& check, const VerifyInputs& in, const Verif
         throw vkt::Error("--verify " + check + ": the difference " + std::to_string(difference) +
                          " is above the tolerance " + std::to_string(tolerance));
 }
-// [/verify]
 
 }  // namespace ch16
