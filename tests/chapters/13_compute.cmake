@@ -4,14 +4,36 @@
 # index (no random numbers), and headless time is frame index / 60, so every
 # frame runs exactly 2 fixed steps of 1/120 s; frame 9 (the screenshot) shows
 # the galaxy after 18 steps.
-vkt_chapter_test(chapter.13_compute 13_compute GOLDEN BLESS ARGS ${headless}
+# The background: the clear colour (0.002, 0.002, 0.008), stored by the _SRGB
+# target as (7, 7, 22).
+set(VKT_13_PIXEL PIXEL 0,0,7,7,22 319,239,7,7,22)
+vkt_chapter_test(chapter.13_compute 13_compute GOLDEN BLESS ${VKT_13_PIXEL} ARGS ${headless}
   EXPECT "13_compute: 65536 particles \\(2 MiB\\), workgroups of 256: 65536 invocations in 1 dispatch\\(es\\) of up to 4194304 particles, 0 idle; step 1/120 s")
-vkt_chapter_test(chapter.13_compute.offscreen 13_compute GOLDEN ARGS ${offscreen})
+vkt_chapter_test(chapter.13_compute.offscreen 13_compute GOLDEN ${VKT_13_PIXEL} ARGS ${offscreen})
 vkt_chapter_window_test(13_compute)
 # Splitting the work into 4 dispatches (each with its own window of the
 # buffer) moves the same particles the same way: the same picture.
 vkt_chapter_test(chapter.13_compute.split 13_compute GOLDEN ARGS ${headless} --dispatch-max 16384
   EXPECT "65536 invocations in 4 dispatch\\(es\\) of up to 16384 particles, 0 idle")
+# One particle, worked out by hand (the page's "One particle by hand"):
+# particle 0's hash is 0, so it starts at radius 0.08 on arm 0, at
+# (0.0788, 0.0253, 0.0137); 18 steps of semi-implicit Euler take it to
+# (-0.0653, -0.0177, 0.0489), which the camera projects to (155.51, 101.46):
+# pixel (155, 101). Its colour (1.0, 0.85, 0.6) at alpha 0.5 over the
+# background is linear (0.501, 0.426, 0.304), stored (188, 174.5, 150): 174
+# or 175, so within 2. Its neighbours, and where it started, (165, 97), are
+# background: a point of size 1 covers one pixel.
+set(one_particle ${VKT_TEST_OUTPUT}/chapter.13_compute.one_particle.png)
+vkt_chapter_test(chapter.13_compute.one_particle 13_compute
+  ARGS ${headless} --count 1 --screenshot ${one_particle})
+add_test(NAME chapter.13_compute.one_particle_pixels
+  COMMAND vkt_chapter_check --png ${one_particle} --pixel 155,101,188,175,150,2
+          --pixel 154,101,7,7,22 --pixel 156,101,7,7,22 --pixel 155,100,7,7,22
+          --pixel 155,102,7,7,22 --pixel 165,97,7,7,22)
+set_tests_properties(chapter.13_compute.one_particle PROPERTIES FIXTURES_SETUP ch13_one_particle)
+set_tests_properties(chapter.13_compute.one_particle_pixels PROPERTIES
+  FIXTURES_REQUIRED ch13_one_particle LABELS chapter)
+
 # A count that is not a multiple of the workgroup: 4 groups, 24 idle
 # invocations that the bounds check keeps off the buffer (validation and the
 # robust exit would catch a write past the end); then the same in two chunks,
