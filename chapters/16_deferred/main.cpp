@@ -41,7 +41,7 @@ using ch12::Vertex;
 using namespace ch16;  // this chapter's blocks, scene and checks
 
 // Our own limit: 65,536 lights of 32 bytes are 2 MiB per frame in flight, far
-// below maxStorageBufferRange (at least 128 MiB on desktop GPUs and lavapipe).
+// below maxStorageBufferRange (the specification promises at least 128 MiB).
 constexpr uint32_t max_lights = 65536;
 
 // [formats]
