@@ -23,11 +23,13 @@ vkt_chapter_test(chapter.16_deferred.forward 16_deferred GOLDEN ${VKT_16_PIXEL}
 # clear values; the depth view's far end). The bottom middle pixel is floor:
 # albedo 0.7, stored sRGB-encoded as 218; normal (0, 1, 0), shown as
 # n / 2 + 1/2 = (128, 255, 128); material specular 26/255 and shininess
-# 16/255, shown as (26, 16, 0).
+# 16/255, shown as (26, 16, 0); that floor point, seen through the pixel's
+# centre (160.5, 239.5), lies at (0.012, 0, 5.329), 7.604 from the eye at
+# (0, 6, 10): the depth view shows 1 - 7.604 / 20 = 0.620 as 158.
 set(VKT_16_VIEW_PIXELS_albedo 160,239,218,218,218)
 set(VKT_16_VIEW_PIXELS_normal 160,239,128,255,128)
 set(VKT_16_VIEW_PIXELS_material 160,239,26,16,0)
-set(VKT_16_VIEW_PIXELS_depth)
+set(VKT_16_VIEW_PIXELS_depth 160,239,158,158,158)
 foreach(view albedo normal material depth)
   set(test chapter.16_deferred.view_${view})
   set(pixels --pixel 0,0,0,0,0)
