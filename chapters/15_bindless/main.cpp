@@ -21,11 +21,13 @@
 #include "vkt/procedural_texture.hpp"
 #include "vkt/runner.hpp"
 #include "vkt/shader.hpp"
+#include "vkt/stats.hpp"
 #include "vkt/texture.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -239,6 +241,7 @@ public:
         const auto grid = uint32_t(context.options.integer("--grid"));
         const auto texture_count = uint32_t(context.options.integer("--textures"));
         loop_ = context.options.text("--draw") == "loop";
+        benchmark_ = context.options.benchmark;
 
         // The scene: a floor, then grid x grid objects, each with a random
         // mesh, two random textures (slots 1..texture_count), a turn and a size.
@@ -424,6 +427,15 @@ public:
             loop_ ? "one vkCmdDrawIndexed per object" : "one vkCmdDrawIndexedIndirect for all");
     }
 
+    ~Bindless() override {
+        if (record_ms_.empty()) return;
+        const vkt::Summary cpu = vkt::summarize(record_ms_);
+        std::fprintf(stderr,
+                     "15_bindless: recording the draws took %.4f ms median, %.4f ms p95 on the CPU "
+                     "(%zu frames)\n",
+                     cpu.median, cpu.p95, record_ms_.size());
+    }
+
     void resize(VkExtent2D extent) override {
         depth_ = vkt::create_depth_image(physical_, device_, depth_format_, extent);
     }
@@ -487,6 +499,7 @@ public:
         vkCmdBindIndexBuffer(frame.cmd, index_buffer_.buffer, 0, VK_INDEX_TYPE_UINT16);
         {
             auto scope = frame.gpu_scope("draw");
+            const auto start = std::chrono::steady_clock::now();
             // [draw]
             if (!loop_) {
                 // Every object in one call: the device reads draws_.size()
@@ -501,6 +514,11 @@ public:
                                      d.vertexOffset, d.firstInstance);
             }
             // [/draw]
+            // --benchmark: the CPU's side, the time to record these commands.
+            if (benchmark_)
+                record_ms_.push_back(std::chrono::duration<double, std::milli>(
+                                         std::chrono::steady_clock::now() - start)
+                                         .count());
         }
         vkCmdEndRendering(frame.cmd);
     }
@@ -531,6 +549,8 @@ private:
     VkPhysicalDevice physical_;
     VkDevice device_;
     bool loop_ = false;
+    bool benchmark_ = false;
+    std::vector<double> record_ms_;  // --benchmark: CPU time to record the draws, per frame
     float half_width_ = 1.0f;
     std::vector<VkDrawIndexedIndirectCommand> draws_;
     vkt::Buffer indirect_;
