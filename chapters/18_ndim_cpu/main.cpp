@@ -293,6 +293,7 @@ private:
     // empty and the picture depends on the frame index alone.
     void steer(const vkt::Input& input, float dt) {
         const float sign = input.shift() ? -1.0f : 1.0f;
+        const char* backwards = input.shift() ? " backwards" : "";
         const int planes = nd::plane_count(n_), pages = (planes + 9) / 10;
         if (input.went_down(key_right_bracket) || input.went_down(key_left_bracket)) {
             page_ = (page_ + (input.went_down(key_right_bracket) ? 1 : pages - 1)) % pages;
@@ -301,17 +302,36 @@ private:
                          page_ * 10 + 1, i, j);
         }
         for (int key = 0; key < 10; ++key) {
-            const int plane = page_ * 10 + key;
-            if (plane < planes && input.down(key == 9 ? key_0 : key_1 + key))
-                user_angles_[size_t(plane)] += sign * 1.0f * dt;
+            const int plane = page_ * 10 + key, code = key == 9 ? key_0 : key_1 + key;
+            if (plane >= planes || !input.down(code)) continue;
+            user_angles_[size_t(plane)] += sign * 1.0f * dt;  // 1 radian per second
+            if (input.went_down(code)) {
+                const auto [i, j] = nd::plane_axes(n_, plane);
+                std::fprintf(stderr, "18_ndim_cpu: turning in plane (%d,%d)%s\n", i, j, backwards);
+            }
         }
-        for (int axis = 0; axis < std::min(n_, 12); ++axis)
-            if (input.down(key_f1 + axis)) user_offset_[size_t(axis)] += sign * 1.5f * dt;
-        if (input.went_down(vkt::key::space)) paused_ = !paused_;
-        if (input.went_down(key_o))
-            projection_ = projection_ == nd::Projection::perspective ? nd::Projection::orthographic
-                                                                     : nd::Projection::perspective;
+        for (int axis = 0; axis < std::min(n_, 12); ++axis) {
+            if (!input.down(key_f1 + axis)) continue;
+            user_offset_[size_t(axis)] += sign * 1.5f * dt;  // 1.5 units per second
+            if (input.went_down(key_f1 + axis))
+                std::fprintf(stderr, "18_ndim_cpu: moving along axis %d%s\n", axis, backwards);
+        }
+        if (input.went_down(vkt::key::space)) {
+            paused_ = !paused_;
+            std::fprintf(stderr, "18_ndim_cpu: spin %s\n", paused_ ? "paused" : "resumed");
+        }
+        if (input.went_down(key_o)) {
+            const bool ortho = projection_ == nd::Projection::perspective;
+            projection_ = ortho ? nd::Projection::orthographic : nd::Projection::perspective;
+            std::fprintf(stderr, "18_ndim_cpu: %s projection\n",
+                         ortho ? "orthographic" : "perspective");
+        }
         if (input.went_down(key_r)) {
+            const auto moved = [](const std::vector<float>& v) {
+                return std::count_if(v.begin(), v.end(), [](float x) { return x != 0.0f; });
+            };
+            std::fprintf(stderr, "18_ndim_cpu: reset %td turned planes and %td moved axes\n",
+                         moved(user_angles_), moved(user_offset_));
             std::fill(user_angles_.begin(), user_angles_.end(), 0.0f);
             std::fill(user_offset_.begin(), user_offset_.end(), 0.0f);
         }

@@ -56,3 +56,15 @@ vkt_chapter_test(bad_input.18_ndim_cpu.scene 18_ndim_cpu EXIT 2 ARGS --scene hyp
 vkt_chapter_test(bad_input.18_ndim_cpu.dim_default_scene 18_ndim_cpu EXIT 1
   ARGS --headless --frames 1 --dim 5
   EXPECT "--dim 5: the default scene is 4-dimensional; use --scene cube or --scene many")
+
+# The keys, in a real window driven by events (window_ndim_keys.sh): a digit
+# turns its plane, an F key moves along its axis, Shift reverses, R resets,
+# O and Space switch the projection and pause the spin, Escape quits.
+if(XVFB_RUN AND XDOTOOL AND OPENBOX)
+  add_test(NAME chapter.18_ndim_cpu.window_keys
+    COMMAND ${XVFB_RUN} -a -s "-screen 0 800x600x24"
+            ${CMAKE_CURRENT_SOURCE_DIR}/window_ndim_keys.sh $<TARGET_FILE:18_ndim_cpu>
+            ${VKT_TEST_OUTPUT} "18 - ndim_cpu")
+  set_tests_properties(chapter.18_ndim_cpu.window_keys PROPERTIES RESOURCE_LOCK xvfb
+    ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS "chapter;window")
+endif()
