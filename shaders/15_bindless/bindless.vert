@@ -53,7 +53,7 @@ void main() {
     // Rotation and uniform scale only: the model matrix's 3x3 part keeps
     // normals perpendicular (the fragment shader normalises).
     out_normal = mat3(object.model) * vertex.normal_v.xyz;
-    out_uv = vec2(vertex.position_u.w, vertex.normal_v.w);
+    out_uv = vec2(vertex.position_u.w, vertex.normal_v.w) * object.tint.w;  // w: repeats
     out_side_texture = object.side_texture;
     out_top_texture = object.top_texture;
     out_tint = object.tint.rgb;
