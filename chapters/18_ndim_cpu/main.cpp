@@ -38,26 +38,6 @@ struct LineVertex {
 static_assert(sizeof(LineVertex) == 12);
 // [/line-vertex]
 
-// An object: a mesh, where it starts, and how fast each plane's angle turns.
-struct Object {
-    const nd::Mesh* mesh;
-    float radius;  // of the mesh: scales the depth colour
-    nd::Transform start;
-    std::vector<float> spin;  // radians per second, one per plane
-};
-
-// A reproducible generator, the same on every machine (the standard
-// distributions are not): 24 random bits of a 32-bit xorshift as a float.
-struct Random {
-    uint32_t state;
-    float uniform(float lo, float hi) {
-        state ^= state << 13;
-        state ^= state >> 17;
-        state ^= state << 5;
-        return lo + (hi - lo) * float(state >> 8) * (1.0f / 16777216.0f);
-    }
-};
-
 // Linear colour (the _SRGB target encodes it) from the depth in the dropped
 // dimensions: t = -1 (far from the eye on the last axis) blue, t = 1 (near)
 // orange.
@@ -86,14 +66,18 @@ public:
         projection_ = options.text("--projection") == "orthographic" ? nd::Projection::orthographic
                                                                      : nd::Projection::perspective;
         naive_ = options.text("--matrix") == "naive";
-        build_scene(scene);
+        // The objects, their poses and spins, the eye distance and the view:
+        // vkt::ndim::make_scene, shared with chapters 19 and 20.
+        scene_ = nd::make_scene(scene, n_, still_);
+        for (const nd::Mesh& mesh : scene_.meshes) radii_.push_back(mesh.radius());
+        user_angles_.assign(size_t(nd::plane_count(n_)), 0.0f);
+        user_offset_.assign(size_t(n_), 0.0f);
 
         // [vertex-buffers]
         // Every visible edge becomes two LineVertex, rewritten every frame: one
         // host-visible buffer per frame in flight, sized for every edge of
         // every object (edges behind the eye are left out, never added).
-        size_t edges = 0;
-        for (const Object& object : objects_) edges += object.mesh->edges.size();
+        const size_t edges = scene_.line_count();
         for (uint32_t i = 0; i < context.frames_in_flight; ++i)
             vertex_buffers_.push_back(vkt::create_host_buffer(
                 context.gpu(), edges * 2 * sizeof(LineVertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT));
@@ -101,7 +85,7 @@ public:
         std::fprintf(
             stderr,
             "18_ndim_cpu: %s scene, n = %d, %zu objects, %zu lines per frame, eye at %.3g\n",
-            scene.c_str(), n_, objects_.size(), edges, eye_);
+            scene.c_str(), n_, scene_.objects.size(), edges, scene_.eye);
 
         // [line-pipeline]
         // The points arrive projected: the vertex shader only passes them on.
@@ -152,18 +136,17 @@ public:
         if (!still_ && !paused_) spin_time_ += dt;
 
         const float aspect = float(frame.extent.width) / float(frame.extent.height);
-        const float to_clip_x = 1.0f / (view_half_height_ * aspect),
-                    to_clip_y = -1.0f / view_half_height_;
+        const float to_clip_x = 1.0f / (scene_.view_half_height * aspect),
+                    to_clip_y = -1.0f / scene_.view_half_height;
         auto* out = static_cast<LineVertex*>(vertex_buffers_[frame.slot].mapped);
         size_t written = 0;
         const auto cpu_start = std::chrono::steady_clock::now();
-        for (const Object& object : objects_) {
+        for (const nd::SceneObject& object : scene_.objects) {
             // [model-matrix]
             // This frame's transform: the start angles plus spin * time, plus
             // what the keys added; then the (n+1)x(n+1) matrix T * R * S.
-            nd::Transform t = object.start;
-            for (size_t p = 0; p < t.angles.size(); ++p)
-                t.angles[p] += object.spin[p] * spin_time_ + user_angles_[p];
+            nd::Transform t = object.at(spin_time_);
+            for (size_t p = 0; p < t.angles.size(); ++p) t.angles[p] += user_angles_[p];
             for (int k = 0; k < n_; ++k) t.position[size_t(k)] += user_offset_[size_t(k)];
             const nd::Matrix model = naive_ ? nd::model_matrix(t) : nd::model_matrix_by_rows(t);
             // [/model-matrix]
@@ -172,16 +155,17 @@ public:
             // Each vertex once: n(n+1) multiply-adds for the matrix, n - 2
             // divisions for the projection. The colour says how near the eye
             // the vertex is along the last axis, the first one dropped.
-            const nd::Mesh& mesh = *object.mesh;
+            const nd::Mesh& mesh = scene_.meshes[size_t(object.mesh)];
             projected_.resize(mesh.vertex_count());
             for (size_t i = 0; i < mesh.vertex_count(); ++i) {
                 nd::transform_point(model, mesh.vertex(i), world_);
                 Projected& p = projected_[i];
                 float xy[2] = {0.0f, 0.0f};
-                p.visible = nd::project_to_2d(world_, projection_, eye_, xy);
+                p.visible = nd::project_to_2d(world_, projection_, scene_.eye, xy);
                 p.x = xy[0] * to_clip_x;
                 p.y = xy[1] * to_clip_y;
-                p.colour = depth_colour((world_.back() - t.position.back()) / object.radius);
+                p.colour =
+                    depth_colour((world_.back() - t.position.back()) / radii_[size_t(object.mesh)]);
             }
             // [/transform-project]
 
@@ -235,55 +219,6 @@ private:
         uint32_t colour;
         bool visible;
     };
-
-    // [scenes]
-    // Object radii r and the eye distance: with d > r sqrt(n - 2) no vertex
-    // can reach the eye (the appendix derives it); twice that keeps a clear
-    // perspective without clipping. Objects sit side by side along axes 0
-    // and 1, the two that reach the screen.
-    void build_scene(const std::string& scene) {
-        Random random{18u};
-        const int planes = nd::plane_count(n_);
-        auto object_at = [&](const nd::Mesh& mesh, float x, float y) {
-            Object object{&mesh, mesh.radius(), nd::Transform::identity(n_),
-                          std::vector<float>(size_t(planes))};
-            object.start.position[0] = x;
-            object.start.position[1] = y;
-            for (int p = 0; p < planes; ++p) {
-                object.start.angles[size_t(p)] = still_ ? 0.0f : random.uniform(-0.6f, 0.6f);
-                object.spin[size_t(p)] = still_ ? 0.0f : random.uniform(-0.5f, 0.5f);
-            }
-            return object;
-        };
-        if (scene == "default") {
-            meshes_ = {nd::make_cube(4, 1.0f), nd::make_24_cell(2.0f)};  // both of radius 2
-            objects_ = {object_at(meshes_[0], -3.0f, 0.0f), object_at(meshes_[1], 3.0f, 0.0f)};
-            eye_ = 2.0f * nd::safe_eye_distance(4, 2.0f);
-            view_half_height_ = 4.3f;
-        } else if (scene == "cube") {
-            meshes_ = {nd::make_cube(n_, 1.0f)};
-            objects_ = {object_at(meshes_[0], 0.0f, 0.0f)};
-            const float r = std::sqrt(float(n_));
-            eye_ = 2.0f * nd::safe_eye_distance(n_, r);
-            view_half_height_ = 1.5f * r;
-        } else {  // many: 250 n-cubes scattered over a 4:3 field
-            meshes_ = {nd::make_cube(n_, 1.0f)};
-            const float r = std::sqrt(float(n_)), field = 9.0f * r;
-            for (int i = 0; i < 250; ++i) {
-                const float x = random.uniform(-field * 4.0f / 3.0f, field * 4.0f / 3.0f);
-                const float y = random.uniform(-field, field);
-                objects_.push_back(object_at(meshes_[0], x, y));
-            }
-            // A cube far off the axis is stretched by about its offset times
-            // its depth over d, as in a wide-angle lens: the eye stands
-            // further back here.
-            eye_ = std::max(2.0f * nd::safe_eye_distance(n_, r), 3.0f * field);
-            view_half_height_ = field + 1.5f * r;
-        }
-        user_angles_.assign(size_t(planes), 0.0f);
-        user_offset_.assign(size_t(n_), 0.0f);
-    }
-    // [/scenes]
 
     // [controls]
     // In a window: keys 1..9, 0 turn the ten planes of the current page
@@ -343,9 +278,8 @@ private:
     bool still_ = false, naive_ = true, paused_ = false, benchmark_ = false;
     std::vector<double> cpu_ms_;
     nd::Projection projection_ = nd::Projection::perspective;
-    std::vector<nd::Mesh> meshes_;
-    std::vector<Object> objects_;
-    float eye_ = 4.0f, view_half_height_ = 1.0f;
+    nd::Scene scene_;
+    std::vector<float> radii_;  // of each mesh: scales the depth colour
     std::vector<float> user_angles_, user_offset_;
     int page_ = 0;
     double last_time_ = 0.0;

@@ -252,4 +252,86 @@ float safe_eye_distance(int n, float r) {
     return r * std::sqrt(float(std::max(n - 2, 0)));
 }
 
+Transform SceneObject::at(float time) const {
+    Transform t = start;
+    for (size_t p = 0; p < t.angles.size(); ++p) t.angles[p] += spin[p] * time;
+    return t;
+}
+
+size_t Scene::line_count() const {
+    size_t lines = 0;
+    for (const SceneObject& object : objects) lines += meshes[size_t(object.mesh)].edges.size();
+    return lines;
+}
+
+namespace {
+
+// A reproducible generator, the same on every machine (the standard
+// distributions are not): 24 random bits of a 32-bit xorshift as a float.
+struct Random {
+    uint32_t state;
+    float uniform(float lo, float hi) {
+        state ^= state << 13;
+        state ^= state >> 17;
+        state ^= state << 5;
+        return lo + (hi - lo) * float(state >> 8) * (1.0f / 16777216.0f);
+    }
+};
+
+}  // namespace
+
+// [scenes]
+// Object radii r and the eye distance: with d > r sqrt(n - 2) no vertex can
+// reach the eye (the appendix derives it); twice that keeps a clear
+// perspective without clipping. Objects sit side by side along axes 0 and 1,
+// the two that reach the screen.
+Scene make_scene(std::string_view name, int n, bool still) {
+    if (n < 2 || n > 20)
+        throw std::invalid_argument("make_scene: n must be from 2 to 20, not " + std::to_string(n));
+    if (name == "default" && n != 4)
+        throw std::invalid_argument("make_scene: the default scene is 4-dimensional");
+    Scene scene;
+    scene.dim = n;
+    Random random{18u};
+    const int planes = plane_count(n);
+    auto object_at = [&](int mesh, float x, float y) {
+        SceneObject object{mesh, Transform::identity(n), std::vector<float>(size_t(planes))};
+        object.start.position[0] = x;
+        object.start.position[1] = y;
+        for (int p = 0; p < planes; ++p) {
+            object.start.angles[size_t(p)] = still ? 0.0f : random.uniform(-0.6f, 0.6f);
+            object.spin[size_t(p)] = still ? 0.0f : random.uniform(-0.5f, 0.5f);
+        }
+        return object;
+    };
+    if (name == "default") {
+        scene.meshes = {make_cube(4, 1.0f), make_24_cell(2.0f)};  // both of radius 2
+        scene.objects = {object_at(0, -3.0f, 0.0f), object_at(1, 3.0f, 0.0f)};
+        scene.eye = 2.0f * safe_eye_distance(4, 2.0f);
+        scene.view_half_height = 4.3f;
+    } else if (name == "cube") {
+        scene.meshes = {make_cube(n, 1.0f)};
+        scene.objects = {object_at(0, 0.0f, 0.0f)};
+        const float r = std::sqrt(float(n));
+        scene.eye = 2.0f * safe_eye_distance(n, r);
+        scene.view_half_height = 1.5f * r;
+    } else if (name == "many") {  // 250 n-cubes scattered over a 4:3 field
+        scene.meshes = {make_cube(n, 1.0f)};
+        const float r = std::sqrt(float(n)), field = 9.0f * r;
+        for (int i = 0; i < 250; ++i) {
+            const float x = random.uniform(-field * 4.0f / 3.0f, field * 4.0f / 3.0f);
+            const float y = random.uniform(-field, field);
+            scene.objects.push_back(object_at(0, x, y));
+        }
+        // A cube far off the axis is stretched by about its offset times its
+        // depth over d, as in a wide-angle lens: the eye stands further back.
+        scene.eye = std::max(2.0f * safe_eye_distance(n, r), 3.0f * field);
+        scene.view_half_height = field + 1.5f * r;
+    } else {
+        throw std::invalid_argument("make_scene: no scene called '" + std::string(name) + "'");
+    }
+    return scene;
+}
+// [/scenes]
+
 }  // namespace vkt::ndim

@@ -338,3 +338,58 @@ TEST_CASE("make_cube refuses impossible dimensions", "[ndim]") {
     CHECK_THROWS_AS(nd::make_cube(0, 1.0f), std::invalid_argument);
     CHECK_THROWS_AS(nd::make_cube(21, 1.0f), std::invalid_argument);
 }
+
+TEST_CASE("the scenes of chapters 18-20", "[ndim]") {
+    const nd::Scene pair = nd::make_scene("default", 4, false);
+    CHECK(pair.objects.size() == 2);
+    CHECK(pair.line_count() == 32 + 96);
+    const nd::Scene one = nd::make_scene("cube", 12, false);
+    CHECK(one.objects.size() == 1);
+    CHECK(one.line_count() == 24576);
+    const nd::Scene many = nd::make_scene("many", 8, false);
+    CHECK(many.objects.size() == 250);
+    CHECK(many.line_count() == 250u * 1024u);
+    // The same seed, the same scene: every number equal.
+    const nd::Scene again = nd::make_scene("many", 8, false);
+    bool same = true;
+    for (size_t i = 0; i < many.objects.size(); ++i)
+        same = same && many.objects[i].start.packed() == again.objects[i].start.packed() &&
+               many.objects[i].spin == again.objects[i].spin;
+    CHECK(same);
+    // Still: every angle and spin 0.
+    const nd::Scene still = nd::make_scene("cube", 3, true);
+    CHECK(still.objects[0].start.packed() == std::vector<float>{0, 0, 0, 1, 1, 1, 0, 0, 0});
+    CHECK(still.objects[0].spin == std::vector<float>{0, 0, 0});
+    // at(): start + spin * time.
+    const nd::SceneObject& o = pair.objects[0];
+    const nd::Transform t = o.at(2.0f);
+    for (size_t p = 0; p < t.angles.size(); ++p)
+        CHECK(t.angles[p] == Approx(o.start.angles[p] + 2.0f * o.spin[p]));
+    CHECK_THROWS_AS(nd::make_scene("default", 5, false), std::invalid_argument);
+    CHECK_THROWS_AS(nd::make_scene("hypersphere", 4, false), std::invalid_argument);
+}
+
+TEST_CASE("no vertex of any scene is ever clipped", "[ndim]") {
+    for (const auto& [name, n] : std::vector<std::pair<const char*, int>>{
+             {"default", 4}, {"cube", 3}, {"cube", 12}, {"many", 4}, {"many", 12}}) {
+        const nd::Scene scene = nd::make_scene(name, n, false);
+        int clipped = 0;
+        std::vector<float> world(static_cast<size_t>(n));
+        for (float time : {0.0f, 1.7f, 25.0f, 400.0f})
+            for (size_t i = 0; i < scene.objects.size();
+                 i += name == std::string("many") ? 25 : 1) {
+                const nd::SceneObject& object = scene.objects[i];
+                const nd::Mesh& mesh = scene.meshes[size_t(object.mesh)];
+                const nd::Matrix model = nd::model_matrix_by_rows(object.at(time));
+                for (size_t v = 0; v < mesh.vertex_count(); ++v) {
+                    nd::transform_point(model, mesh.vertex(v), world);
+                    float xy[2];
+                    clipped += nd::project_to_2d(world, nd::Projection::perspective, scene.eye, xy)
+                                   ? 0
+                                   : 1;
+                }
+            }
+        INFO(name << " n = " << n);
+        CHECK(clipped == 0);
+    }
+}

@@ -19,6 +19,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -149,5 +150,38 @@ bool project_to_2d(std::span<const float> x, Projection kind, float d, float out
 // appendix derives it: each step can push the remaining coordinates outward,
 // and in the worst case 1 / (r/d)^2 drops by exactly 1 per step.
 float safe_eye_distance(int n, float r);
+
+// ---- Scenes -------------------------------------------------------------------
+// The scenes chapters 18, 19 and 20 all draw, built here so that the three
+// draw exactly the same objects and can be compared picture for picture.
+
+struct SceneObject {
+    int mesh = 0;             // index into Scene::meshes
+    Transform start;          // the pose at time 0
+    std::vector<float> spin;  // radians per second, one per plane
+
+    // The pose at `time` seconds: the start angles plus spin * time.
+    Transform at(float time) const;
+};
+
+struct Scene {
+    int dim = 0;
+    std::vector<Mesh> meshes;
+    std::vector<SceneObject> objects;
+    float eye = 0;               // the eye distance d of the projection
+    float view_half_height = 0;  // projected units from the centre to the top edge
+
+    size_t line_count() const;  // the edges of every object
+};
+
+// "default" (n = 4 only): a tesseract of half side 1 at x = -3 and a 24-cell of
+// radius 2 at x = +3. "cube": one n-cube of half side 1 at the origin.
+// "many": 250 n-cubes of half side 1 at random places over a 4:3 field. Start
+// angles (within +-0.6 rad) and spins (within +-0.5 rad/s) are random too,
+// from a fixed seed, unless `still` (all zero). Objects are placed along
+// axes 0 and 1 only, and the eye is at least twice safe_eye_distance for their
+// radius, so no vertex is ever clipped. Throws std::invalid_argument for an
+// unknown name or n outside 2..20 (4 for "default").
+Scene make_scene(std::string_view name, int n, bool still);
 
 }  // namespace vkt::ndim
