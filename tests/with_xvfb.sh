@@ -3,15 +3,22 @@
 #
 #   tests/with_xvfb.sh [-a] [-s "SERVER ARGS"] COMMAND [ARGS...]
 #
-# The window tests use this instead of xvfb-run. xvfb-run -a picks a display
-# number by looking for lock files, and the server of the test before may not
-# have let go of that display yet: about one run in fifteen under load, the
-# command then found no X server behind its DISPLAY. Here the server picks its
-# own number (-displayfd: the first one it can really listen on) and writes it
-# to us once it accepts connections; reading that is the event we wait for, not
-# a guess of how long the server takes to start. Afterwards the server is
-# stopped and waited for, so the next test never meets it. The -a and -s
-# options are xvfb-run's, so the two are interchangeable.
+# The window tests use this instead of xvfb-run, for two reasons.
+#
+# -noreset: by default an X server resets itself whenever its last client
+# disconnects, and a client that connects during that reset is turned away.
+# A test asks `wmctrl -m` whether the window manager is up yet; when wmctrl
+# came and went before openbox had connected, openbox now and then failed with
+# "Failed to open the display": 3 of 286 starts in parallel loops without
+# -noreset, 0 of 300 with it. xvfb-run does not pass it.
+#
+# -displayfd: the server picks its own display number (the first one it can
+# really listen on) and writes it to us once it accepts connections; reading
+# that is the event we wait for, not a guess of how long it takes to start,
+# and two tests starting at once can never pick the same display (xvfb-run -a
+# guesses from lock files). Afterwards the server is stopped and waited for,
+# also when the test is killed. The -a and -s options are xvfb-run's, so the
+# two are interchangeable.
 set -u
 server_args="-screen 0 640x480x24"
 while [ $# -gt 0 ]; do
@@ -27,16 +34,20 @@ command -v Xvfb >/dev/null || { echo "with_xvfb.sh: Xvfb is not installed (apt i
 
 dir=$(mktemp -d -t with_xvfb.XXXXXX)
 xvfb=""
+command_pid=""
 stop_server() {
+  if [ -n "$command_pid" ]; then kill "$command_pid" 2>/dev/null; wait "$command_pid" 2>/dev/null; fi
   if [ -n "$xvfb" ]; then kill "$xvfb" 2>/dev/null; wait "$xvfb" 2>/dev/null; fi
   rm -rf "$dir"
 }
 trap stop_server EXIT
+# Killed (CTest's timeout, Ctrl-C): stop the command and the server too, so no
+# X server outlives its test.
 trap 'exit 143' TERM INT
 
 mkfifo "$dir/displayfd"
 # shellcheck disable=SC2086  # the server arguments are words
-Xvfb -displayfd 3 -nolisten tcp $server_args 3>"$dir/displayfd" 2>"$dir/xvfb.log" &
+Xvfb -displayfd 3 -nolisten tcp -noreset $server_args 3>"$dir/displayfd" 2>"$dir/xvfb.log" &
 xvfb=$!
 # The server writes its display number when it is ready, or exits (closing the
 # pipe) when it cannot start. The bound only matters if it hangs.
@@ -46,4 +57,10 @@ if ! read -r -t 120 number <"$dir/displayfd" || [ -z "$number" ]; then
   exit 1
 fi
 
-DISPLAY=":$number" "$@"
+# In the background and waited for, so that a signal reaches the trap at once.
+DISPLAY=":$number" "$@" &
+command_pid=$!
+wait "$command_pid"
+status=$?
+command_pid=""
+exit "$status"
