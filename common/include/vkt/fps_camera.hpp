@@ -15,6 +15,7 @@
 
 namespace vkt {
 
+// [state]
 struct FpsCamera {
     glm::vec3 position{0.0f};
     float yaw = 0.0f;    // radians
@@ -22,6 +23,7 @@ struct FpsCamera {
 
     // 89 degrees.
     static constexpr float max_pitch = 89.0f * std::numbers::pi_v<float> / 180.0f;
+    // [/state]
 
     // Unit vectors in world space. forward: where the camera looks,
     // (cos p sin y, sin p, -cos p cos y). right: horizontal,
