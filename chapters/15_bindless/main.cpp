@@ -53,8 +53,9 @@ static_assert(offsetof(Push, vertices) == 64 && offsetof(Push, resident_textures
 // [/push]
 
 // The largest texture array the layout allows; the set allocates only what it
-// uses (a variable descriptor count). Far below the limit for update-after-bind
-// sampled images that descriptor indexing guarantees (500,000 per stage).
+// uses (a variable descriptor count). Far below the limits: a device with the
+// descriptorIndexing feature allows at least 500,000 update-after-bind
+// sampled images per shader stage.
 constexpr uint32_t kMaxTextures = 1024;
 // Descriptor writes per frame while the textures "stream in" (see record()).
 constexpr uint32_t kTexturesPerFrame = 8;
@@ -178,6 +179,7 @@ public:
                                                object_address_);
 
         // The textures: slot 0 the grey checker, slots 1.. the procedural ones.
+        // (create_texture gives each its own sampler; the set uses one shared.)
         textures_.push_back(vkt::create_texture(gpu, grey_checker(), true, 0.0f));
         for (uint32_t i = 0; i < texture_count; ++i)
             textures_.push_back(
