@@ -44,8 +44,8 @@ struct Mesh {
 
 // Appends a flat convex face (corners in either order: it is turned to face
 // away from the origin) as a fan of triangles, counter-clockwise from outside.
-void add_face(std::vector<Vertex>& vertices, std::vector<uint16_t>& indices, const Mesh& mesh,
-              std::vector<glm::vec3> corners, std::vector<glm::vec2> uvs) {
+inline void add_face(std::vector<Vertex>& vertices, std::vector<uint16_t>& indices,
+                     const Mesh& mesh, std::vector<glm::vec3> corners, std::vector<glm::vec2> uvs) {
     glm::vec3 n = glm::normalize(glm::cross(corners[1] - corners[0], corners[2] - corners[0]));
     if (glm::dot(n, corners[0] + corners[1] + corners[2]) < 0.0f) {
         std::reverse(corners.begin(), corners.end());
@@ -61,7 +61,8 @@ void add_face(std::vector<Vertex>& vertices, std::vector<uint16_t>& indices, con
 }
 
 // Three meshes, each within -0.5..0.5: a cube, a square pyramid, an octahedron.
-std::vector<Mesh> make_meshes(std::vector<Vertex>& vertices, std::vector<uint16_t>& indices) {
+inline std::vector<Mesh> make_meshes(std::vector<Vertex>& vertices,
+                                     std::vector<uint16_t>& indices) {
     std::vector<Mesh> meshes;
     auto begin = [&] {
         meshes.push_back({uint32_t(indices.size()), 0, int32_t(vertices.size())});
@@ -107,7 +108,7 @@ std::vector<Mesh> make_meshes(std::vector<Vertex>& vertices, std::vector<uint16_
 }
 
 // A small integer hash: the same scene on every machine.
-uint32_t hash(uint32_t x) {
+inline uint32_t hash(uint32_t x) {
     x ^= x >> 16;
     x *= 0x7feb352du;
     x ^= x >> 15;
@@ -125,7 +126,7 @@ struct Scene {
     float half_width = 1.0f;        // of the floor
 };
 
-Scene make_scene(uint32_t grid, uint32_t texture_count) {
+inline Scene make_scene(uint32_t grid, uint32_t texture_count) {
     Scene scene;
     scene.meshes = make_meshes(scene.vertices, scene.indices);
     const float spacing = 2.0f, half_width = 0.5f * spacing * float(grid);
@@ -156,7 +157,7 @@ Scene make_scene(uint32_t grid, uint32_t texture_count) {
 
 // Slot 0 of the texture array: a grey checker, the floor's texture and what
 // an object shows while its own texture is still "loading".
-vkt::RgbaImage grey_checker() {
+inline vkt::RgbaImage grey_checker() {
     vkt::RgbaImage image{64, 64, std::vector<uint8_t>(64 * 64 * 4, 255)};
     for (uint32_t y = 0; y < 64; ++y)
         for (uint32_t x = 0; x < 64; ++x)
