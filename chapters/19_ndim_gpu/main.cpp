@@ -1,0 +1,482 @@
+// Chapter 19: objects of n dimensions, on the GPU.
+//
+// The same scenes as chapter 18 (vkt::ndim::make_scene: a tesseract and a
+// 24-cell, one n-cube, or 250 of them), but the CPU no longer touches a
+// vertex. The meshes go to the GPU once, into a storage buffer of n floats
+// per vertex and an index buffer of edge pairs; each frame the CPU writes only
+// each object's raw transform, n(n+3)/2 floats, into a second storage buffer.
+// The vertex shader pulls its vertex by gl_VertexIndex, scales it, turns it in
+// every plane and projects it, O(n^2) per vertex and no matrix anywhere. The
+// dimension n is a specialization constant: one SPIR-V file for every n.
+// --verify cpu captures the projected vertices in a storage buffer and checks
+// them against the CPU.
+
+#include "vkt/compute.hpp"
+#include "vkt/descriptors.hpp"
+#include "vkt/ndim.hpp"
+#include "vkt/pipeline.hpp"
+#include "vkt/runner.hpp"
+#include "vkt/shader.hpp"
+#include "vkt/stats.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace nd = vkt::ndim;
+
+// [push]
+// The push constants, laid out as ndim.glsl's Push block (std430-like
+// offsets: every member 4 bytes, the vec2 first). Pushed whole before each
+// draw; what changes from draw to draw are integers: which object (which
+// transform), and the mesh's radius for the colour.
+struct Push {
+    float to_clip[2];
+    float eye;
+    int32_t orthographic;
+    int32_t vertex_count;
+    float inverse_radius;
+    int32_t object;
+};
+static_assert(sizeof(Push) == 28);
+// [/push]
+
+// The largest error --verify accepts, in clip units (the screen is 2 wide):
+// 1e-4 is a twentieth of a pixel at 1080 rows.
+constexpr double verify_tolerance = 1e-4;
+
+// GLFW key codes for the controls (vkt/input.hpp has the common ones).
+constexpr int key_0 = 48, key_1 = 49, key_o = 79, key_r = 82, key_left_bracket = 91,
+              key_right_bracket = 93, key_f1 = 290;
+
+class NdimGpu : public vkt::Renderer {
+public:
+    explicit NdimGpu(const vkt::Context& context) : gpu_(context.gpu()), device_(context.device) {
+        const auto& options = context.options;
+        const std::string scene = options.text("--scene");
+        if (scene == "default" && options.has("--dim"))
+            throw std::runtime_error("--dim " + options.text("--dim") +
+                                     ": the default scene is 4-dimensional; use --scene cube or "
+                                     "--scene many to choose n");
+        n_ = options.has("--dim") ? int(options.integer("--dim")) : 4;
+        still_ = options.text("--motion") == "still";
+        projection_ = options.text("--projection") == "orthographic" ? nd::Projection::orthographic
+                                                                     : nd::Projection::perspective;
+        verify_ = options.has("--verify");
+        verify_frame_ = options.frames.value_or(1) - 1;
+        if (verify_ && !context.features.has(VKT_FEATURE_10(vertexPipelineStoresAndAtomics)))
+            throw std::runtime_error(
+                "--verify writes from the vertex shader, which needs the "
+                "vertexPipelineStoresAndAtomics feature; this device does not have it");
+        benchmark_ = options.benchmark;
+        scene_ = nd::make_scene(scene, n_, still_);
+        user_angles_.assign(size_t(nd::plane_count(n_)), 0.0f);
+        user_offset_.assign(size_t(n_), 0.0f);
+
+        // [meshes]
+        // Every mesh once, for the whole run: all vertices in one storage
+        // buffer (n floats each), all edges in one index buffer (two vertex
+        // numbers each, counted from the mesh's first vertex). A draw finds
+        // its mesh by firstIndex and vertexOffset.
+        std::vector<float> coords;
+        std::vector<uint32_t> indices;
+        for (const nd::Mesh& mesh : scene_.meshes) {
+            meshes_.push_back({.first_vertex = int32_t(coords.size() / size_t(n_)),
+                               .first_index = uint32_t(indices.size()),
+                               .index_count = uint32_t(mesh.edges.size() * 2),
+                               .vertex_count = uint32_t(mesh.vertex_count()),
+                               .inverse_radius = 1.0f / mesh.radius()});
+            coords.insert(coords.end(), mesh.coords.begin(), mesh.coords.end());
+            for (const nd::Edge& edge : mesh.edges) indices.insert(indices.end(), {edge.a, edge.b});
+        }
+        vertex_count_ = uint32_t(coords.size() / size_t(n_));
+        vertices_ = vkt::create_device_buffer(gpu_, coords.data(), coords.size() * sizeof(float),
+                                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        indices_ = vkt::create_device_buffer(gpu_, indices.data(),
+                                             indices.size() * sizeof(uint32_t),
+                                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+        // [/meshes]
+
+        // [transform-buffers]
+        // The raw transforms, rewritten every frame: n(n+3)/2 floats per
+        // object, one host-visible buffer per frame in flight (250 12-cubes:
+        // 250 x 90 x 4 = 90 KB, where chapter 18 wrote 141 MiB of lines).
+        floats_per_object_ = size_t(n_) * size_t(n_ + 3) / 2;
+        const VkDeviceSize transform_bytes =
+            scene_.objects.size() * floats_per_object_ * sizeof(float);
+        for (uint32_t i = 0; i < context.frames_in_flight; ++i)
+            transforms_.push_back(vkt::create_host_buffer(gpu_, transform_bytes,
+                                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+        // [/transform-buffers]
+        if (verify_)  // one vec4 per vertex of the pool per object: see capture.vert
+            capture_ = vkt::create_host_buffer(
+                gpu_, VkDeviceSize(scene_.objects.size()) * vertex_count_ * 4 * sizeof(float),
+                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        std::fprintf(stderr,
+                     "19_ndim_gpu: %s scene, n = %d, %zu objects, %zu lines per frame, eye at %.3g; "
+                     "%u vertices and %zu indices on the GPU, %llu bytes of transforms per frame\n",
+                     scene.c_str(), n_, scene_.objects.size(), scene_.line_count(), scene_.eye,
+                     vertex_count_, indices.size(), static_cast<unsigned long long>(transform_bytes));
+
+        // [descriptors]
+        // Set 0: binding 0 the vertices, 1 this frame's transforms, 2 the
+        // capture buffer (--verify only; the drawing shader never reads it, so
+        // it may stay unwritten). One set per frame in flight.
+        const VkDescriptorSetLayoutBinding bindings[] = {
+            {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+            {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+            {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+        };
+        set_layout_ = vkt::create_descriptor_set_layout(device_, bindings);
+        const VkDescriptorPoolSize pool_size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                             3 * context.frames_in_flight};
+        pool_ = vkt::create_descriptor_pool(device_, context.frames_in_flight, {&pool_size, 1});
+        for (uint32_t i = 0; i < context.frames_in_flight; ++i) {
+            const VkDescriptorSet set = vkt::allocate_descriptor_set(device_, pool_, set_layout_);
+            vkt::write_buffer_descriptor(device_, set, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                         vertices_.buffer, 0, VK_WHOLE_SIZE);
+            vkt::write_buffer_descriptor(device_, set, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                         transforms_[i].buffer, 0, VK_WHOLE_SIZE);
+            if (verify_)
+                vkt::write_buffer_descriptor(device_, set, 2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                             capture_.buffer, 0, VK_WHOLE_SIZE);
+            sets_.push_back(set);
+        }
+        const VkPushConstantRange push_range{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(Push)};
+        const VkDescriptorSetLayout set_layout = set_layout_;
+        layout_ = vkt::create_pipeline_layout(device_, {&set_layout, 1}, {&push_range, 1});
+        // [/descriptors]
+
+        // [specialization]
+        // n becomes constant_id 0 of the vertex shader: 4 bytes at offset 0
+        // of `data`. The driver compiles the pipeline with N = n, as if the
+        // shader had been written for that n alone.
+        const int32_t dimension = n_;
+        const VkSpecializationMapEntry entry{
+            .constantID = 0, .offset = 0, .size = sizeof(int32_t)};
+        const VkSpecializationInfo specialization{
+            .mapEntryCount = 1,
+            .pMapEntries = &entry,
+            .dataSize = sizeof(dimension),
+            .pData = &dimension,
+        };
+        // [/specialization]
+
+        // [pipeline]
+        // No vertex bindings, no attributes: the shader pulls what it needs.
+        // LINE_LIST: indices 2k and 2k+1 make line k.
+        vkt::ShaderModule vertex = vkt::load_shader(device_, context.chapter, "lines.vert");
+        vkt::ShaderModule fragment = vkt::load_shader(device_, context.chapter, "lines.frag");
+        pipeline_ = vkt::create_graphics_pipeline(
+            device_, {.vertex = vertex,
+                      .fragment = fragment,
+                      .layout = layout_,
+                      .topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST,
+                      .color_formats = {context.color_format},
+                      .vertex_specialization = &specialization});
+        // [/pipeline]
+        if (verify_) {
+            // The capture pass draws nothing: no fragment shader, no target.
+            vkt::ShaderModule capture = vkt::load_shader(device_, context.chapter, "capture.vert");
+            capture_pipeline_ = vkt::create_graphics_pipeline(
+                device_, {.vertex = capture,
+                          .layout = layout_,
+                          .topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST,
+                          .vertex_specialization = &specialization});
+        }
+    }
+
+    // With --benchmark: the CPU's share of a frame, writing the transforms
+    // and recording the draws.
+    ~NdimGpu() override {
+        if (benchmark_)
+            std::fprintf(stderr, "19_ndim_gpu: CPU transforms and draws per frame, ms: %s\n",
+                         vkt::json_summary(cpu_ms_).c_str());
+    }
+
+    void record(const vkt::Frame& frame) override {
+        const float dt = float(frame.time - last_time_);
+        last_time_ = frame.time;
+        steer(frame.input, dt);
+        if (!still_ && !paused_) spin_time_ += dt;
+        const auto cpu_start = std::chrono::steady_clock::now();
+
+        // [write-transforms]
+        // This frame's pose of each object, packed as the shader reads it:
+        // position, scale, angles. Coherent memory: the submit makes it visible.
+        auto* out = static_cast<float*>(transforms_[frame.slot].mapped);
+        for (size_t o = 0; o < scene_.objects.size(); ++o) {
+            const std::vector<float> packed = pose(o).packed();
+            std::memcpy(out + o * floats_per_object_, packed.data(), packed.size() * sizeof(float));
+        }
+        // [/write-transforms]
+        if (verify_ && frame.index == verify_frame_) verify(frame);
+
+        VkRenderingAttachmentInfo colour{
+            .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+            .imageView = frame.target_view,
+            .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+            .clearValue = {.color = {{0.006f, 0.006f, 0.012f, 1.0f}}},
+        };
+        VkRenderingInfo rendering{
+            .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+            .renderArea = {{0, 0}, frame.extent},
+            .layerCount = 1,
+            .colorAttachmentCount = 1,
+            .pColorAttachments = &colour,
+        };
+        vkCmdBeginRendering(frame.cmd, &rendering);
+        {
+            // The transform happens inside the draws, in the vertex shader:
+            // one scope times transform and rasterisation together.
+            auto scope = frame.gpu_scope("raster");
+            draw_objects(frame.cmd, frame.slot, frame.extent, pipeline_);
+        }
+        vkCmdEndRendering(frame.cmd);
+        if (benchmark_)
+            cpu_ms_.push_back(std::chrono::duration<double, std::milli>(
+                                  std::chrono::steady_clock::now() - cpu_start)
+                                  .count());
+    }
+
+private:
+    struct MeshRange {
+        int32_t first_vertex;  // in the vertex buffer: the draw's vertexOffset
+        uint32_t first_index, index_count;
+        uint32_t vertex_count;
+        float inverse_radius;
+    };
+
+    // Object o's transform this frame: its spin so far and what the keys did.
+    nd::Transform pose(size_t o) const {
+        nd::Transform t = scene_.objects[o].at(spin_time_);
+        for (size_t p = 0; p < t.angles.size(); ++p) t.angles[p] += user_angles_[p];
+        for (int k = 0; k < n_; ++k) t.position[size_t(k)] += user_offset_[size_t(k)];
+        return t;
+    }
+
+    Push frame_push(VkExtent2D extent) const {
+        const float aspect = float(extent.width) / float(extent.height);
+        return {.to_clip = {1.0f / (scene_.view_half_height * aspect),
+                            -1.0f / scene_.view_half_height},
+                .eye = scene_.eye,
+                .orthographic = projection_ == nd::Projection::orthographic ? 1 : 0,
+                .vertex_count = int32_t(vertex_count_),
+                .inverse_radius = 1.0f,
+                .object = 0};
+    }
+
+    // [draw]
+    // One indexed draw per object: its mesh's edges, its transform chosen by
+    // the object index in the push constants. gl_VertexIndex is the index
+    // from the buffer plus vertexOffset: the vertex's place in the pool.
+    void draw_objects(VkCommandBuffer cmd, uint32_t slot, VkExtent2D extent,
+                      VkPipeline pipeline) const {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+        vkt::set_viewport_and_scissor(cmd, extent);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &sets_[slot],
+                                0, nullptr);
+        vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
+        Push push = frame_push(extent);
+        for (size_t o = 0; o < scene_.objects.size(); ++o) {
+            const MeshRange& mesh = meshes_[size_t(scene_.objects[o].mesh)];
+            push.object = int32_t(o);
+            push.inverse_radius = mesh.inverse_radius;
+            vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(Push), &push);
+            vkCmdDrawIndexed(cmd, mesh.index_count, 1, mesh.first_index, mesh.first_vertex, 0);
+        }
+    }
+    // [/draw]
+
+    // [verify]
+    // --verify cpu: the same draws with the capture pipeline, in a pass with
+    // no attachments, on their own submit; then every vertex of every object
+    // the GPU wrote is compared with the CPU's transform and projection, both
+    // the per-plane path and chapter 18's matrix.
+    void verify(const vkt::Frame& frame) {
+        std::memset(capture_.mapped, 0, size_t(capture_.size));
+        vkt::one_time_submit(gpu_, [&](VkCommandBuffer cmd) {
+            const VkRenderingInfo nothing{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                                          .renderArea = {{0, 0}, frame.extent},
+                                          .layerCount = 1};
+            vkCmdBeginRendering(cmd, &nothing);
+            draw_objects(cmd, frame.slot, frame.extent, capture_pipeline_);
+            vkCmdEndRendering(cmd);
+            vkt::buffer_barrier(cmd, capture_.buffer, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
+                                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                                VK_ACCESS_2_HOST_READ_BIT);
+        });
+        const auto* captured = static_cast<const float*>(capture_.mapped);
+        const Push push = frame_push(frame.extent);
+        std::vector<float> world(static_cast<size_t>(n_));
+        double plane_error = 0.0, matrix_error = 0.0;
+        size_t checked = 0, mismatched = 0, missing = 0;
+        for (size_t o = 0; o < scene_.objects.size(); ++o) {
+            const nd::Transform t = pose(o);
+            const nd::Matrix model = nd::model_matrix(t);
+            const MeshRange& range = meshes_[size_t(scene_.objects[o].mesh)];
+            const nd::Mesh& mesh = scene_.meshes[size_t(scene_.objects[o].mesh)];
+            for (size_t v = 0; v < mesh.vertex_count(); ++v) {
+                const float* gpu =
+                    captured + (o * vertex_count_ + size_t(range.first_vertex) + v) * 4;
+                if (gpu[3] != 1.0f) {
+                    ++missing;
+                    continue;
+                }
+                float by_plane[2] = {0, 0}, by_matrix[2] = {0, 0};
+                nd::transform_point(t, mesh.vertex(v), world);
+                const bool visible = nd::project_to_2d(world, projection_, scene_.eye, by_plane);
+                nd::transform_point(model, mesh.vertex(v), world);
+                nd::project_to_2d(world, projection_, scene_.eye, by_matrix);
+                ++checked;
+                if (visible != (gpu[2] == 1.0f)) ++mismatched;
+                if (!visible) continue;
+                for (int c = 0; c < 2; ++c) {
+                    const double g = gpu[c];
+                    plane_error = std::max(plane_error, std::abs(g - by_plane[c] * push.to_clip[c]));
+                    matrix_error =
+                        std::max(matrix_error, std::abs(g - by_matrix[c] * push.to_clip[c]));
+                }
+            }
+        }
+        std::fprintf(stderr,
+                     "19_ndim_gpu: verify cpu: %zu vertices of %zu objects, GPU vs CPU max error "
+                     "%.3g (per-plane path), %.3g (chapter 18's matrix) in clip units, "
+                     "tolerance %.0e; %zu visibility mismatches, %zu not written\n",
+                     checked, scene_.objects.size(), plane_error, matrix_error, verify_tolerance,
+                     mismatched, missing);
+        if (missing > 0 || mismatched > 0 || !(plane_error <= verify_tolerance) ||
+            !(matrix_error <= verify_tolerance))
+            throw std::runtime_error("verify cpu: the GPU's vertices differ from the CPU's");
+    }
+    // [/verify]
+
+    // Chapter 18's keys: 1..9, 0 turn the ten planes of the current page,
+    // [ and ] change the page, F1..F12 move along axes 0..11, Shift
+    // reverses, Space pauses the spin, O switches the projection, R resets.
+    void steer(const vkt::Input& input, float dt) {
+        const float sign = input.shift() ? -1.0f : 1.0f;
+        const char* backwards = input.shift() ? " backwards" : "";
+        const int planes = nd::plane_count(n_), pages = (planes + 9) / 10;
+        if (input.went_down(key_right_bracket) || input.went_down(key_left_bracket)) {
+            page_ = (page_ + (input.went_down(key_right_bracket) ? 1 : pages - 1)) % pages;
+            const auto [i, j] = nd::plane_axes(n_, page_ * 10);
+            std::fprintf(stderr, "19_ndim_gpu: keys 1..0 turn planes %d.. from (%d,%d)\n",
+                         page_ * 10 + 1, i, j);
+        }
+        for (int key = 0; key < 10; ++key) {
+            const int plane = page_ * 10 + key, code = key == 9 ? key_0 : key_1 + key;
+            if (plane >= planes || !input.down(code)) continue;
+            user_angles_[size_t(plane)] += sign * 1.0f * dt;  // 1 radian per second
+            if (input.went_down(code)) {
+                const auto [i, j] = nd::plane_axes(n_, plane);
+                std::fprintf(stderr, "19_ndim_gpu: turning in plane (%d,%d)%s\n", i, j, backwards);
+            }
+        }
+        for (int axis = 0; axis < std::min(n_, 12); ++axis) {
+            if (!input.down(key_f1 + axis)) continue;
+            user_offset_[size_t(axis)] += sign * 1.5f * dt;  // 1.5 units per second
+            if (input.went_down(key_f1 + axis))
+                std::fprintf(stderr, "19_ndim_gpu: moving along axis %d%s\n", axis, backwards);
+        }
+        if (input.went_down(vkt::key::space)) {
+            paused_ = !paused_;
+            std::fprintf(stderr, "19_ndim_gpu: spin %s\n", paused_ ? "paused" : "resumed");
+        }
+        if (input.went_down(key_o)) {
+            const bool ortho = projection_ == nd::Projection::perspective;
+            projection_ = ortho ? nd::Projection::orthographic : nd::Projection::perspective;
+            std::fprintf(stderr, "19_ndim_gpu: %s projection\n",
+                         ortho ? "orthographic" : "perspective");
+        }
+        if (input.went_down(key_r)) {
+            const auto moved = [](const std::vector<float>& v) {
+                return std::count_if(v.begin(), v.end(), [](float x) { return x != 0.0f; });
+            };
+            std::fprintf(stderr, "19_ndim_gpu: reset %td turned planes and %td moved axes\n",
+                         moved(user_angles_), moved(user_offset_));
+            std::fill(user_angles_.begin(), user_angles_.end(), 0.0f);
+            std::fill(user_offset_.begin(), user_offset_.end(), 0.0f);
+        }
+    }
+
+    vkt::Gpu gpu_;
+    VkDevice device_;
+    int n_ = 4;
+    bool still_ = false, paused_ = false, benchmark_ = false, verify_ = false;
+    uint64_t verify_frame_ = 0;
+    std::vector<double> cpu_ms_;
+    nd::Projection projection_ = nd::Projection::perspective;
+    nd::Scene scene_;
+    std::vector<MeshRange> meshes_;
+    uint32_t vertex_count_ = 0;
+    size_t floats_per_object_ = 0;
+    std::vector<float> user_angles_, user_offset_;
+    int page_ = 0;
+    double last_time_ = 0.0;
+    float spin_time_ = 0.0f;
+    vkt::Buffer vertices_, indices_, capture_;
+    std::vector<vkt::Buffer> transforms_;
+    vkt::DescriptorSetLayout set_layout_;
+    vkt::DescriptorPool pool_;
+    std::vector<VkDescriptorSet> sets_;
+    vkt::PipelineLayout layout_;
+    vkt::Pipeline pipeline_, capture_pipeline_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // [spec]
+    vkt::ChapterSpec spec{
+        .name = "19_ndim_gpu", .title = "19 - ndim_gpu", .input = vkt::InputUse::keys};
+    // A clipped vertex cuts its lines away with a clip distance; --verify
+    // writes from the vertex shader when the device allows it.
+    spec.requirements.features = {VKT_FEATURE_10(shaderClipDistance)};
+    spec.requirements.optional_features = {VKT_FEATURE_10(vertexPipelineStoresAndAtomics)};
+    spec.options = {
+        {.name = "--scene",
+         .type = vkt::OptionType::choice,
+         .help = "a tesseract and a 24-cell, one n-cube, or 250 n-cubes",
+         .default_value = "default",
+         .choices = {"default", "cube", "many"}},
+        // 3..12, as chapters 18 and 20, so that all three draw the same
+        // scenes; the shader's arrays of N floats and N(N-1)/2 sin/cos
+        // pairs per vertex grow past that, and 250 13-cubes are 13 million
+        // lines a frame.
+        {.name = "--dim",
+         .type = vkt::OptionType::integer,
+         .value_name = "N",
+         .help = "the dimension n of the cubes of --scene cube and many (default 4)",
+         .min = 3,
+         .max = 12},
+        {.name = "--projection",
+         .type = vkt::OptionType::choice,
+         .help = "perspective (the eye on each last axis) or orthographic (drop it)",
+         .default_value = "perspective",
+         .choices = {"perspective", "orthographic"}},
+        {.name = "--motion",
+         .type = vkt::OptionType::choice,
+         .help = "turn in every plane, or stand still with every angle 0",
+         .default_value = "spin",
+         .choices = {"spin", "still"}},
+        {.name = "--verify",
+         .type = vkt::OptionType::choice,
+         .value_name = "CHECK",
+         .help = "cpu: capture the last frame's projected vertices, compare with the CPU",
+         .choices = {"cpu"}},
+    };
+    // [/spec]
+    return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
+        return std::make_unique<NdimGpu>(context);
+    });
+}
