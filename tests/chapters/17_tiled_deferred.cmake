@@ -1,0 +1,101 @@
+# Chapter 17: tiled deferred shading. Chapter 16's scene under 1,024 moving
+# lights: a compute pass culls the lights per 16 x 16 tile, and the lighting
+# reads only its tile's list (--shade fragment), or one dispatch culls and
+# shades (--shade compute).
+#
+# Hand-worked pixels: the top corners show no geometry, so both paths write
+# the background (0.02, 0.02, 0.04), stored sRGB-encoded as (39, 39, 56).
+set(VKT_17_PIXEL PIXEL 0,0,39,39,56 319,0,39,39,56)
+vkt_chapter_test(chapter.17_tiled_deferred 17_tiled_deferred GOLDEN BLESS ${VKT_17_PIXEL}
+  ARGS ${headless} EXPECT "17_tiled_deferred: 1024 lights, shade fragment, view lit"
+  "tiles overflowed: 0")
+vkt_chapter_test(chapter.17_tiled_deferred.offscreen 17_tiled_deferred GOLDEN ${VKT_17_PIXEL}
+  ARGS ${offscreen})
+vkt_chapter_window_test(17_tiled_deferred PIXEL 0,0,39,39,56)
+# The compute path: the same picture, so the same golden image.
+vkt_chapter_test(chapter.17_tiled_deferred.compute 17_tiled_deferred GOLDEN ${VKT_17_PIXEL}
+  ARGS ${headless} --shade compute EXPECT "shade compute")
+
+# With chapter 16's 32 lights the scene is chapter 16's: both tiled paths
+# against chapter 16's golden image (the golden tests' tolerance).
+foreach(shade fragment compute)
+  set(test chapter.17_tiled_deferred.matches_16_${shade})
+  add_test(NAME ${test} COMMAND vkt_chapter_check --exe $<TARGET_FILE:17_tiled_deferred>
+    --out ${VKT_TEST_OUTPUT} --name ${test} --golden ${VKT_GOLDEN_DIR}/16_deferred.png
+    --pixel 0,0,39,39,56 --expect "32 lights, shade ${shade}"
+    -- ${headless} --lights 32 --shade ${shade})
+  set_tests_properties(${test} PROPERTIES ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}"
+    LABELS "chapter")
+endforeach()
+
+# The heat map: lights per tile, one golden image for both paths. Hand-worked
+# pixel: the top-left tile holds no geometry, so it kept 0 lights: the ramp's
+# (0, 0, 0.5), shown 75% over a black albedo as (0, 0, 0.375), sRGB-encoded
+# (0, 0, 164); its border pixel (0, 0) is half that, 0.1875, encoded 121.
+foreach(shade fragment compute)
+  set(test chapter.17_tiled_deferred.view_heat_${shade})
+  add_test(NAME ${test} COMMAND vkt_chapter_check --exe $<TARGET_FILE:17_tiled_deferred>
+    --out ${VKT_TEST_OUTPUT} --name ${test} --golden ${VKT_GOLDEN_DIR}/17_tiled_deferred_heat.png
+    --pixel 8,8,0,0,164 --pixel 0,0,0,0,121 --expect "view heat"
+    -- ${headless} --view heat --shade ${shade})
+  set_tests_properties(${test} PROPERTIES ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}"
+    LABELS "chapter;bless")
+endforeach()
+
+# --verify brute: the last frame again, into float images: chapter 16's
+# brute-force lighting pass (every light at every pixel), the tiled fragment
+# pass and the tiled compute pass, read back and compared pairwise: the
+# largest difference of any channel of any pixel at most 1e-4 (relative above
+# 1), and no tile's list overflowed. Also at a size that is not a multiple of
+# the tile (partial tiles on the right and bottom), and with 16,384 lights.
+vkt_chapter_test(chapter.17_tiled_deferred.verify_brute 17_tiled_deferred
+  ARGS ${headless} --verify brute
+  EXPECT "verify brute: tiled fragment vs brute force, largest difference"
+  "verify brute: tiled compute vs brute force" "tiles overflowed 0")
+vkt_chapter_test(chapter.17_tiled_deferred.verify_brute_odd_size 17_tiled_deferred
+  ARGS --offscreen --validation --frames 3 --size 250x130 --verify brute --shade compute
+  EXPECT "250x130 pixels")
+vkt_chapter_test(chapter.17_tiled_deferred.verify_brute_many 17_tiled_deferred
+  ARGS --offscreen --no-validation --frames 1 --size ${VKT_TEST_SIZE} --verify brute
+  --lights 16384 EXPECT "16384 lights")
+
+# Overflow is counted, never silent: at 64x48 a tile covers a large part of
+# the floor, and 65,536 lights overflow some lists. The run reports it; the
+# check refuses the picture.
+vkt_chapter_test(chapter.17_tiled_deferred.overflow_reported 17_tiled_deferred
+  ARGS --offscreen --validation --frames 2 --size 64x48 --lights 65536
+  EXPECT "65536 lights" "a list holds 1024\\); tiles overflowed: [1-9]")
+vkt_chapter_test(chapter.17_tiled_deferred.overflow_fails_verify 17_tiled_deferred EXIT 1
+  ARGS --offscreen --no-validation --frames 1 --size 64x48 --lights 65536 --verify brute
+  EXPECT "--verify brute: [0-9]+ tiles had more than 1024 lights; their lists dropped lights")
+
+# --benchmark times the passes as named GPU scopes.
+vkt_chapter_test(chapter.17_tiled_deferred.benchmark 17_tiled_deferred
+  ARGS --offscreen --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark
+  EXPECT "\"gpu_scopes_ms\": \\{\"gbuffer\": \\{\"min\": [0-9.]+.*\"cull\": \\{.*\"lighting\": \\{")
+vkt_chapter_test(chapter.17_tiled_deferred.benchmark_compute 17_tiled_deferred
+  ARGS --offscreen --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark
+  --shade compute
+  EXPECT "\"gpu_scopes_ms\": \\{\"gbuffer\": \\{\"min\": [0-9.]+.*\"shade\": \\{.*\"copy\": \\{")
+vkt_chapter_test(chapter.17_tiled_deferred.help 17_tiled_deferred EXIT 0 ARGS --help
+  EXPECT "usage: 17_tiled_deferred" "--shade PASS" "--view VIEW" "--lights N"
+  "--verify CHECK")
+
+# Bad input: one clear line and a non-zero exit status. The most lights is
+# chapter 16's limit of 65,536 (2 MiB of lights per frame in flight).
+vkt_chapter_test(bad_input.17_tiled_deferred.no_lights 17_tiled_deferred EXIT 2 ARGS --lights 0
+  EXPECT "--lights wants a whole number from 1 to 65536, not '0'")
+vkt_chapter_test(bad_input.17_tiled_deferred.too_many_lights 17_tiled_deferred EXIT 2
+  ARGS --lights 65537 EXPECT "--lights wants a whole number from 1 to 65536, not '65537'")
+vkt_chapter_test(bad_input.17_tiled_deferred.bad_shade 17_tiled_deferred EXIT 2
+  ARGS --shade raster EXPECT "--shade wants one of fragment, compute, not 'raster'")
+vkt_chapter_test(bad_input.17_tiled_deferred.bad_view 17_tiled_deferred EXIT 2
+  ARGS --view normal EXPECT "--view wants one of lit, heat, not 'normal'")
+vkt_chapter_test(bad_input.17_tiled_deferred.bad_verify 17_tiled_deferred EXIT 2
+  ARGS --verify cpu EXPECT "--verify wants one of brute, not 'cpu'")
+# The required features: a device without one is refused with its name.
+foreach(feature maintenance4 separateDepthStencilLayouts)
+  vkt_chapter_test(bad_input.17_tiled_deferred.missing_${feature} 17_tiled_deferred EXIT 1
+    ARGS --headless --frames 1 ENV VKT_HIDE_FEATURES=${feature}
+    EXPECT "no Vulkan device can run this chapter; .* lacks the ${feature} feature")
+endforeach()

@@ -1,0 +1,132 @@
+// Chapter 17's tile maths (vkt/tiles.hpp): tile counts, depth linearisation,
+// and the sphere-against-tile-frustum test, by hand and against brute force.
+
+#include "vkt/camera_math.hpp"
+#include "vkt/tiles.hpp"
+
+#include <catch2/catch_approx.hpp>
+#include <catch2/catch_test_macros.hpp>
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <random>
+
+using Catch::Approx;
+
+TEST_CASE("tile_grid covers the screen, partial tiles included", "[tiles]") {
+    CHECK(vkt::tile_grid(320, 240, 16).x == 20);
+    CHECK(vkt::tile_grid(320, 240, 16).y == 15);
+    CHECK(vkt::tile_grid(320, 240, 16).count() == 300);
+    CHECK(vkt::tile_grid(1920, 1080, 16).x == 120);
+    CHECK(vkt::tile_grid(1920, 1080, 16).y == 68);  // 1080 = 67.5 tiles: a half row
+    CHECK(vkt::tile_grid(250, 130, 16).x == 16);     // 15 full, 1 of 10 pixels
+    CHECK(vkt::tile_grid(250, 130, 16).y == 9);      // 8 full, 1 of 2 pixels
+    CHECK(vkt::tile_grid(1, 1, 16).count() == 1);
+    CHECK(vkt::tile_grid(16, 17, 16).count() == 2);
+}
+
+namespace {
+const glm::mat4 proj = vkt::vulkan_perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f);
+
+// Where a view-space point lands on a width x height screen, in pixels.
+glm::vec2 to_pixels(glm::vec3 p, uint32_t width, uint32_t height) {
+    const glm::vec4 clip = proj * glm::vec4(p, 1.0f);
+    return {(clip.x / clip.w * 0.5f + 0.5f) * float(width),
+            (clip.y / clip.w * 0.5f + 0.5f) * float(height)};
+}
+}  // namespace
+
+TEST_CASE("view_depth undoes the projection's depth", "[tiles]") {
+    for (float t : {0.1f, 0.5f, 3.0f, 42.0f, 100.0f}) {
+        const glm::vec4 clip = proj * glm::vec4(0.0f, 0.0f, -t, 1.0f);
+        CHECK(vkt::view_depth(proj, clip.z / clip.w) == Approx(t).epsilon(1e-4));
+    }
+}
+
+TEST_CASE("tile frustum planes, worked by hand", "[tiles]") {
+    // A 90-degree square view, 32 x 32 pixels, 16-pixel tiles: four tiles,
+    // each a quarter of the view. P[0][0] = 1 and P[1][1] = -1, so tile (0, 0)
+    // (top left on screen) holds x / -z in [-1, 0] and y / -z in [0, 1]
+    // (Vulkan's framebuffer y points down, world y up).
+    const vkt::TileFrustum f = vkt::tile_frustum(proj, 32, 32, 0, 0, 16, 1.0f, 10.0f);
+    const float s = std::sqrt(0.5f);
+    CHECK(f.planes[0].x == Approx(s));   // x - z >= 0: x / -z >= -1
+    CHECK(f.planes[0].z == Approx(-s));
+    CHECK(f.planes[1].x == Approx(-1.0f));  // -x >= 0: x / -z <= 0
+    CHECK(f.planes[1].z == Approx(0.0f).margin(1e-6));
+    CHECK(f.planes[2].y == Approx(1.0f));  // y >= 0
+    CHECK(f.planes[3].y == Approx(-s));    // -y - z >= 0: y / -z <= 1
+    CHECK(f.planes[3].z == Approx(-s));
+
+    // A sphere of radius 1 at (-2, 2, -5): inside the top-left quarter.
+    CHECK(vkt::sphere_touches_tile(f, {-2.0f, 2.0f, -5.0f}, 1.0f));
+    // At (1.5, 2, -5) it is 1.5 right of the plane x = 0: culled; radius 2 reaches.
+    CHECK_FALSE(vkt::sphere_touches_tile(f, {1.5f, 2.0f, -5.0f}, 1.0f));
+    CHECK(vkt::sphere_touches_tile(f, {1.5f, 2.0f, -5.0f}, 2.0f));
+    // Depth range [1, 10]: centre at distance 12 with radius 1.5 is beyond
+    // (12 - 1.5 > 10), radius 2.5 reaches back to 9.5.
+    CHECK_FALSE(vkt::sphere_touches_tile(f, {-2.0f, 2.0f, -12.0f}, 1.5f));
+    CHECK(vkt::sphere_touches_tile(f, {-2.0f, 2.0f, -12.0f}, 2.5f));
+    // In front of the near end: distance 0.5, radius 0.4 ends at 0.9 < 1.
+    CHECK_FALSE(vkt::sphere_touches_tile(f, {-0.1f, 0.1f, -0.5f}, 0.4f));
+    CHECK(vkt::sphere_touches_tile(f, {-0.1f, 0.1f, -0.5f}, 0.6f));
+    // Below the bottom plane y = 0 by 0.5 with radius 0.4: culled.
+    CHECK_FALSE(vkt::sphere_touches_tile(f, {-2.0f, -0.5f, -5.0f}, 0.4f));
+}
+
+TEST_CASE("a partial tile's frustum ends at the screen's edge", "[tiles]") {
+    // 40 pixels wide: tile 2 spans pixels 32..40, not 32..48.
+    const vkt::TileFrustum f = vkt::tile_frustum(proj, 40, 40, 2, 0, 16, 0.1f, 100.0f);
+    // The right plane is the screen's edge: x / -z <= 1.
+    const glm::vec3 n = f.planes[1];
+    CHECK(n.x == Approx(-std::sqrt(0.5f)));
+    CHECK(n.z == Approx(-std::sqrt(0.5f)));
+}
+
+// Brute force: a sphere touches the tile if some point of the tile's volume
+// (pixels of the tile, depths in range) lies within it. Sample the volume
+// densely; every sampled hit must be kept by the test (conservative).
+TEST_CASE("culling never drops a light that touches the tile", "[tiles]") {
+    std::mt19937 random(17);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const uint32_t width = 64, height = 48, tile = 16;
+    int touching = 0, kept_not_touching = 0, culled = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        const uint32_t tx = uint32_t(unit(random) * 4) % 4, ty = uint32_t(unit(random) * 3) % 3;
+        const float near = 1.0f + 5.0f * unit(random), far = near + 6.0f * unit(random);
+        const vkt::TileFrustum f = vkt::tile_frustum(proj, width, height, tx, ty, tile, near, far);
+        const glm::vec3 centre(-8.0f + 16.0f * unit(random), -8.0f + 16.0f * unit(random),
+                               -(12.0f * unit(random)));
+        const float radius = 0.2f + 2.0f * unit(random);
+        bool touches = false;
+        for (int i = 0; i <= 16 && !touches; ++i)
+            for (int j = 0; j <= 16 && !touches; ++j)
+                for (int k = 0; k <= 16 && !touches; ++k) {
+                    // A point of the tile's volume: a pixel position and a depth.
+                    const float px = float(tx * tile) + float(tile) * float(i) / 16.0f;
+                    const float py = float(ty * tile) + float(tile) * float(j) / 16.0f;
+                    const float t = near + (far - near) * float(k) / 16.0f;
+                    const float ndc_x = px / float(width) * 2.0f - 1.0f;
+                    const float ndc_y = py / float(height) * 2.0f - 1.0f;
+                    const glm::vec3 p(ndc_x * t / proj[0][0], ndc_y * t / proj[1][1], -t);
+                    const glm::vec2 back = to_pixels(p, width, height);  // the sample is inside
+                    REQUIRE(back.x == Approx(px).margin(1e-3));
+                    REQUIRE(back.y == Approx(py).margin(1e-3));
+                    touches = glm::distance(p, centre) < radius;
+                }
+        const bool kept = vkt::sphere_touches_tile(f, centre, radius);
+        if (touches) {
+            ++touching;
+            CHECK(kept);
+        } else if (kept) {
+            ++kept_not_touching;
+        } else {
+            ++culled;
+        }
+    }
+    // The random cases exercise all three outcomes.
+    CHECK(touching > 20);
+    CHECK(culled > 20);
+    CHECK(kept_not_touching >= 0);
+}
