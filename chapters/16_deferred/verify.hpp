@@ -222,7 +222,12 @@ inline void verify(const std::string& check, const VerifyInputs& in, const Verif
         difference = max_linear_difference(
             pictures[lit], vkt::shade_gbuffer(texels, in.inverse_view_proj, in.eye, in.ambient,
                                               in.lights, background));
-        tolerance = 1e-4f;
+        // GPUs may evaluate pow, exp2, log2 and inversesqrt approximately (the
+        // precision rules of the Vulkan environment for SPIR-V), and pow's
+        // error grows with the shininess exponent: lavapipe comes within 6e-6,
+        // an NVIDIA H100 within 9e-4. 2e-3 is half a step of an 8-bit value,
+        // too small to show in a screenshot; a wrong term costs 1e-2 or more.
+        tolerance = 2e-3f;
         what = "GPU lighting pass vs CPU reference (vkt::shade_gbuffer), largest difference";
     } else if (check == "additivity") {
         std::vector<glm::vec3> sum(pictures[lit].size());

@@ -46,7 +46,8 @@ endforeach()
 # --verify: the last frame again, into float targets, read back and checked
 # (chapters/16_deferred/verify.hpp):
 #   cpu         the lighting pass against vkt::shade_gbuffer on the read-back
-#               G-buffer: largest difference at most 1e-4 (relative above 1)
+#               G-buffer: largest difference at most 2e-3 (relative above 1;
+#               lavapipe 6e-6, an H100 9e-4: GPUs may approximate pow)
 #   additivity  lights A + lights B against A and B in one pass: at most 1e-5;
 #               the lights lifted out of reach add exactly 0
 #   forward     forward against deferred: at most 1.5 sRGB levels of 255 on
