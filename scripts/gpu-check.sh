@@ -2,10 +2,10 @@
 # What we run on a real GPU (see ../shared/DEVICE.md for the machine): every
 # chapter with validation, every drawing chapter's picture against the lavapipe
 # golden image, then the benchmarks. Results go to OUT_DIR.
-#   scripts/gpu-check.sh OUT_DIR
+#   scripts/gpu-check.sh OUT_DIR [BIN_DIR]   (BIN_DIR defaults to build/release/bin)
 set -u
-out=${1:?usage: scripts/gpu-check.sh OUT_DIR}
-bin=build/release/bin
+out=${1:?usage: scripts/gpu-check.sh OUT_DIR [BIN_DIR]}
+bin=${2:-build/release/bin}
 mkdir -p "$out"
 status=0
 vulkaninfo --summary 2>/dev/null | grep -E 'deviceName|apiVersion|driverInfo' | tee "$out/device.txt"
@@ -14,16 +14,41 @@ for c in 01_instance 02_device; do
   echo "$c --validation: exit $rc, $(grep -h 'validation:' "$out/$c.txt" | tail -n 1)"
   [ $rc -eq 0 ] || status=1
 done
-# Every drawing chapter that has a reference picture, with its own defaults.
-for golden in tests/golden/[0-9][0-9]_*.png; do
-  c=$(basename "$golden" .png)
+# Every blessed golden test, run exactly as CTest runs it (the same arguments
+# and hand-worked pixels; the build writes them to bin/golden_tests.txt).
+manifest=$bin/golden_tests.txt
+[ -f "$manifest" ] || { echo "no $manifest: build with CMake first"; exit 1; }
+while IFS='|' read -r c pixels args; do
   [ -x "$bin/$c" ] || continue
+  # shellcheck disable=SC2086  # pixels and args are words
   "$bin/vkt_chapter_check" --exe "$bin/$c" --out "$out" --name "gpu.$c" --golden "tests/golden/$c.png" \
-    -- --headless --validation --frames 10 --size 320x240 >"$out/gpu.$c.check.txt" 2>&1; rc=$?
-  echo "$c picture vs lavapipe golden: exit $rc; $(grep -h -E '^picture|^FAIL' "$out/gpu.$c.check.txt")"
+    $pixels -- $args >"$out/gpu.$c.check.txt" 2>&1; rc=$?
+  echo "$c picture vs lavapipe golden ($args): exit $rc; $(grep -h -E '^picture|^FAIL' "$out/gpu.$c.check.txt" | tr '\n' ' ')"
   grep -h -E "^$c: " "$out/gpu.$c.stderr" | head -n 1
   [ $rc -eq 0 ] || status=1
-done
+done <"$manifest"
+# Chapters that check themselves against a CPU reference do so on the GPU too.
+if [ -x "$bin/16_deferred" ]; then
+  for v in cpu additivity forward; do
+    "$bin/16_deferred" --offscreen --validation --frames 10 --size 320x240 --verify $v \
+      >"$out/16_deferred.verify_$v.txt" 2>&1; rc=$?
+    echo "16_deferred --verify $v: exit $rc; $(grep -h -i -E 'verify|differ|error' "$out/16_deferred.verify_$v.txt" | tail -n 2 | tr '\n' ' ')"
+    [ $rc -eq 0 ] || status=1
+  done
+fi
 echo "benchmarks (1280x720, 2000 frames, validation off):"
 benchmarks/run.sh "$bin" 2000 1280x720 | tee "$out/benchmarks.jsonl"
+# The chapters' own sweeps (each explained in benchmarks/NN_name.md), bounded
+# so that one slow sweep cannot eat the others' time.
+sweep() {
+  local name=$1; shift
+  echo "== $name: $*"
+  timeout 240 "$@" >"$out/sweep.$name.txt" 2>&1
+  echo "exit $?"
+  cat "$out/sweep.$name.txt"
+}
+[ -x "$bin/13_compute" ] && sweep 13_compute scripts/bench-13.sh "$bin/13_compute" 100
+[ -x "$bin/15_bindless" ] && sweep 15_bindless benchmarks/15_bindless.sh "$bin" 200
+[ -x "$bin/16_deferred" ] && sweep 16_deferred scripts/bench-lights.sh "$bin/16_deferred" --size 1920x1080 --frames 20
+[ -x "$bin/18_ndim_cpu" ] && sweep 18_ndim_cpu benchmarks/18_ndim_cpu.sh "$bin"
 exit $status
