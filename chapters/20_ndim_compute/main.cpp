@@ -1,0 +1,549 @@
+// Chapter 20: objects of n dimensions, transformed by a compute pass.
+//
+// The scenes of chapter 18 (vkt::ndim::make_scene: a tesseract and a 24-cell,
+// one n-cube, or 250 of them), drawn another way. Each frame the CPU builds
+// one n x n matrix per object (the sines and cosines, once per object); a
+// compute pass then transforms and projects every unique vertex of every
+// object once, into a storage buffer; and one indexed LINE_LIST draw reads
+// that buffer as its vertex buffer and draws every line of every object.
+// With --raster compute, a second compute pass draws the lines itself into a
+// storage image (one invocation per line, atomicMax per pixel) laid out as
+// the colour target's pixels, and a copy moves it onto the colour target.
+
+#include "vkt/barrier.hpp"
+#include "vkt/compute.hpp"
+#include "vkt/descriptors.hpp"
+#include "vkt/ndim.hpp"
+#include "vkt/pipeline.hpp"
+#include "vkt/runner.hpp"
+#include "vkt/shader.hpp"
+#include "vkt/upload.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace nd = vkt::ndim;
+
+// The C++ side of shaders/20_ndim_compute/ndim.glsl.
+struct Push {
+    float to_clip[2];
+    float eye;
+    uint32_t orthographic, object_count, line_count;
+    uint32_t size[2];
+};
+struct Projected {
+    float x, y;
+    uint32_t colour;
+    float depth;
+};
+struct ObjectInfo {
+    uint32_t first_vertex, vertex_count, first_out;
+    float inv_radius;
+};
+static_assert(sizeof(Projected) == 16 && sizeof(ObjectInfo) == 16 && sizeof(Push) == 32);
+
+constexpr uint32_t group = 64;  // local_size_x of both compute shaders
+
+// GLFW key codes for the controls (vkt/input.hpp has the common ones).
+constexpr int key_0 = 48, key_1 = 49, key_o = 79, key_r = 82, key_left_bracket = 91,
+              key_right_bracket = 93, key_f1 = 290;
+
+class NdimCompute : public vkt::Renderer {
+public:
+    explicit NdimCompute(const vkt::Context& context)
+        : gpu_(context.gpu()), device_(context.device) {
+        const auto& options = context.options;
+        const std::string scene = options.text("--scene");
+        if (scene == "default" && options.has("--dim"))
+            throw std::runtime_error("--dim " + options.text("--dim") +
+                                     ": the default scene is 4-dimensional; use --scene cube or "
+                                     "--scene many to choose n");
+        n_ = options.has("--dim") ? int(options.integer("--dim")) : 4;
+        still_ = options.text("--motion") == "still";
+        orthographic_ = options.text("--projection") == "orthographic";
+        compute_raster_ = options.text("--raster") == "compute";
+        verify_ = options.has("--verify");
+        verify_frame_ = options.frames.value_or(1) - 1;
+        scene_ = nd::make_scene(scene, n_, still_);
+        user_angles_.assign(size_t(nd::plane_count(n_)), 0.0f);
+        user_offset_.assign(size_t(n_), 0.0f);
+
+        // [static-buffers]
+        // Built once: each mesh's coordinates (shared by all its objects),
+        // a table saying where each object's mesh and output vertices are,
+        // and the index buffer of every line of every object. Object k's
+        // indices point at its own output vertices (first_out + edge end), so
+        // one draw covers the whole scene.
+        std::vector<float> coords;
+        std::vector<uint32_t> mesh_first;
+        for (const nd::Mesh& mesh : scene_.meshes) {
+            mesh_first.push_back(uint32_t(coords.size() / size_t(n_)));
+            coords.insert(coords.end(), mesh.coords.begin(), mesh.coords.end());
+        }
+        std::vector<ObjectInfo> objects;
+        std::vector<uint32_t> ends;
+        for (const nd::SceneObject& object : scene_.objects) {
+            const nd::Mesh& mesh = scene_.meshes[size_t(object.mesh)];
+            const ObjectInfo info{mesh_first[size_t(object.mesh)], uint32_t(mesh.vertex_count()),
+                                  vertex_total_, 1.0f / mesh.radius()};
+            for (const nd::Edge& e : mesh.edges) {
+                ends.push_back(info.first_out + e.a);
+                ends.push_back(info.first_out + e.b);
+            }
+            objects.push_back(info);
+            vertex_total_ += info.vertex_count;
+            max_vertices_ = std::max(max_vertices_, info.vertex_count);
+        }
+        line_total_ = uint32_t(ends.size() / 2);
+        coords_ = vkt::create_device_buffer(gpu_, coords.data(), coords.size() * sizeof(float),
+                                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        objects_ = vkt::create_device_buffer(gpu_, objects.data(),
+                                             objects.size() * sizeof(ObjectInfo),
+                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        ends_ = vkt::create_device_buffer(
+            gpu_, ends.data(), ends.size() * sizeof(uint32_t),
+            VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        // [/static-buffers]
+
+        // [frame-buffers]
+        // Per frame in flight: the poses the CPU writes (host-visible), and
+        // the projected vertices the transform pass writes (device-local: the
+        // draw reads them as a vertex buffer, the rasteriser as storage).
+        pose_floats_ = size_t(n_ * n_ + n_);
+        const VkDeviceSize pose_bytes = scene_.objects.size() * pose_floats_ * sizeof(float);
+        for (uint32_t i = 0; i < context.frames_in_flight; ++i) {
+            poses_.push_back(vkt::create_host_buffer(gpu_, pose_bytes,
+                                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+            projected_.push_back(vkt::create_buffer(
+                context.physical, device_, vertex_total_ * sizeof(Projected),
+                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
+                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT));
+        }
+        // [/frame-buffers]
+        std::fprintf(stderr,
+                     "20_ndim_compute: %s scene, n = %d, %zu objects, %u vertices, %u lines per "
+                     "frame, raster %s, eye at %.3g\n",
+                     scene.c_str(), n_, scene_.objects.size(), vertex_total_, line_total_,
+                     compute_raster_ ? "compute" : "graphics", scene_.eye);
+
+        // [descriptors]
+        // One set layout for all the passes: 0 coordinates, 1 object table,
+        // 2 poses, 3 projected vertices, 4 line ends, 5 the rasteriser's image.
+        VkDescriptorSetLayoutBinding bindings[6];
+        for (uint32_t b = 0; b < 6; ++b)
+            bindings[b] = {.binding = b,
+                           .descriptorType = b == 5 ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
+                                                    : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                           .descriptorCount = 1,
+                           .stageFlags = VK_SHADER_STAGE_COMPUTE_BIT};
+        set_layout_ = vkt::create_descriptor_set_layout(device_, bindings);
+        const VkDescriptorPoolSize sizes[] = {
+            {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * context.frames_in_flight},
+            {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, context.frames_in_flight}};
+        pool_ = vkt::create_descriptor_pool(device_, context.frames_in_flight, sizes);
+        for (uint32_t i = 0; i < context.frames_in_flight; ++i) {
+            const VkDescriptorSet set = vkt::allocate_descriptor_set(device_, pool_, set_layout_);
+            const VkBuffer buffers[] = {coords_.buffer, objects_.buffer, poses_[i].buffer,
+                                        projected_[i].buffer, ends_.buffer};
+            for (uint32_t b = 0; b < 5; ++b)
+                vkt::write_buffer_descriptor(device_, set, b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                             buffers[b], 0, VK_WHOLE_SIZE);
+            sets_.push_back(set);
+        }
+        const VkPushConstantRange push_range{
+            .stageFlags = push_stages, .offset = 0, .size = sizeof(Push)};
+        const VkDescriptorSetLayout set_layout = set_layout_;
+        layout_ = vkt::create_pipeline_layout(device_, {&set_layout, 1}, {&push_range, 1});
+        // [/descriptors]
+
+        // [transform-pipeline]
+        // n as a specialization constant: the shader's point is float x[N].
+        const VkSpecializationMapEntry entry{.constantID = 0, .offset = 0, .size = sizeof(int)};
+        const VkSpecializationInfo specialization{
+            .mapEntryCount = 1, .pMapEntries = &entry, .dataSize = sizeof(int), .pData = &n_};
+        vkt::ShaderModule transform = vkt::load_shader(device_, context.chapter, "transform.comp");
+        transform_ = vkt::create_compute_pipeline(device_, transform, layout_, &specialization);
+        // [/transform-pipeline]
+
+        // [line-pipeline]
+        // The projected vertices, 16 bytes each, straight from the storage
+        // buffer the transform pass wrote.
+        const VkVertexInputBindingDescription binding{
+            .binding = 0, .stride = sizeof(Projected), .inputRate = VK_VERTEX_INPUT_RATE_VERTEX};
+        const VkVertexInputAttributeDescription attributes[] = {
+            {.location = 0, .binding = 0, .format = VK_FORMAT_R32G32_SFLOAT, .offset = 0},
+            {.location = 1,
+             .binding = 0,
+             .format = VK_FORMAT_R8G8B8A8_UNORM,
+             .offset = offsetof(Projected, colour)},
+        };
+        vkt::ShaderModule vertex = vkt::load_shader(device_, context.chapter, "lines.vert");
+        vkt::ShaderModule fragment = vkt::load_shader(device_, context.chapter, "lines.frag");
+        lines_ = vkt::create_graphics_pipeline(device_, {.vertex = vertex,
+                                                         .fragment = fragment,
+                                                         .layout = layout_,
+                                                         .bindings = {&binding, 1},
+                                                         .attributes = attributes,
+                                                         .topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST,
+                                                         .color_formats = {context.color_format}});
+        // [/line-pipeline]
+        if (compute_raster_) {
+            // [raster-pipeline]
+            // The rasteriser writes the target's own pixel layout, so it must
+            // know the byte order: a specialization constant.
+            if (context.color_format != VK_FORMAT_B8G8R8A8_SRGB &&
+                context.color_format != VK_FORMAT_R8G8B8A8_SRGB)
+                throw std::runtime_error("--raster compute: the colour target is neither "
+                                         "B8G8R8A8_SRGB nor R8G8B8A8_SRGB");
+            const int bgra = context.color_format == VK_FORMAT_B8G8R8A8_SRGB ? 1 : 0;
+            const VkSpecializationInfo order{
+                .mapEntryCount = 1, .pMapEntries = &entry, .dataSize = sizeof(int), .pData = &bgra};
+            vkt::ShaderModule raster = vkt::load_shader(device_, context.chapter, "raster.comp");
+            raster_ = vkt::create_compute_pipeline(device_, raster, layout_, &order);
+            // The background, as the target stores it: (0.006, 0.006, 0.012)
+            // sRGB-encoded is (18, 18, 29), depth byte 0 below every line's.
+            background_ = bgra ? 29u | 18u << 8 | 18u << 16 : 18u | 18u << 8 | 29u << 16;
+            // [/raster-pipeline]
+            resize(context.extent);
+        }
+    }
+
+    // [storage-image]
+    // The compute rasteriser's target: one 32-bit word per pixel, written
+    // with atomics (STORAGE), cleared each frame (TRANSFER_DST) and copied to
+    // the colour target (TRANSFER_SRC), the same size.
+    void resize(VkExtent2D extent) override {
+        if (!compute_raster_) return;
+        image_ = vkt::create_image_2d(gpu_.physical, device_, VK_FORMAT_R32_UINT, extent,
+                                      VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                          VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                      VK_IMAGE_ASPECT_COLOR_BIT);
+        for (VkDescriptorSet set : sets_) {
+            const VkDescriptorImageInfo info{.imageView = image_.view,
+                                             .imageLayout = VK_IMAGE_LAYOUT_GENERAL};
+            const VkWriteDescriptorSet write{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                             .dstSet = set,
+                                             .dstBinding = 5,
+                                             .descriptorCount = 1,
+                                             .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                                             .pImageInfo = &info};
+            vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+        }
+    }
+    // [/storage-image]
+
+    void record(const vkt::Frame& frame) override {
+        const float dt = float(frame.time - last_time_);
+        last_time_ = frame.time;
+        steer(frame.input, dt);
+        if (!still_ && !paused_) spin_time_ += dt;
+        write_poses(frame.slot);
+
+        const float aspect = float(frame.extent.width) / float(frame.extent.height);
+        const Push push{{1.0f / (scene_.view_half_height * aspect), -1.0f / scene_.view_half_height},
+                        scene_.eye,
+                        orthographic_ ? 1u : 0u,
+                        uint32_t(scene_.objects.size()),
+                        line_total_,
+                        {frame.extent.width, frame.extent.height}};
+        if (verify_ && frame.index == verify_frame_) verify(frame.slot, push);
+
+        const VkCommandBuffer cmd = frame.cmd;
+        const VkBuffer projected = projected_[frame.slot].buffer;
+        {
+            auto scope = frame.gpu_scope("transform");
+            record_transform(cmd, frame.slot, push);
+        }
+        if (compute_raster_) {
+            auto scope = frame.gpu_scope("raster");
+            record_compute_raster(frame);
+            return;
+        }
+        // [draw]
+        // The transform pass's writes, made visible to the vertex input; then
+        // one indexed draw for every line of every object.
+        vkt::buffer_barrier(cmd, projected, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT,
+                            VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT);
+        auto scope = frame.gpu_scope("raster");
+        begin_rendering(frame);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, lines_);
+        vkt::set_viewport_and_scissor(cmd, frame.extent);
+        const VkDeviceSize offset = 0;
+        vkCmdBindVertexBuffers(cmd, 0, 1, &projected, &offset);
+        vkCmdBindIndexBuffer(cmd, ends_.buffer, 0, VK_INDEX_TYPE_UINT32);
+        vkCmdDrawIndexed(cmd, 2 * line_total_, 1, 0, 0, 0);
+        vkCmdEndRendering(cmd);
+        // [/draw]
+    }
+
+private:
+    static constexpr VkShaderStageFlags push_stages =
+        VK_SHADER_STAGE_COMPUTE_BIT | VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+
+    // [poses]
+    // Once per object per frame on the CPU: the angles at this time, the
+    // rotation built row by row (O(n^3): vkt::ndim::rotation_matrix_by_rows),
+    // the scale folded into its columns. The shader gets M and p and needs
+    // no sine or cosine at all.
+    void write_poses(uint32_t slot) {
+        auto* out = static_cast<float*>(poses_[slot].mapped);
+        for (const nd::SceneObject& object : scene_.objects) {
+            nd::Transform t = object.at(spin_time_);
+            for (size_t p = 0; p < t.angles.size(); ++p) t.angles[p] += user_angles_[p];
+            for (int k = 0; k < n_; ++k) t.position[size_t(k)] += user_offset_[size_t(k)];
+            const nd::Matrix r = nd::rotation_matrix_by_rows(n_, t.angles);
+            for (int row = 0; row < n_; ++row)
+                for (int col = 0; col < n_; ++col)
+                    *out++ = r(row, col) * t.scale[size_t(col)];
+            for (int k = 0; k < n_; ++k) *out++ = t.position[size_t(k)];
+        }
+    }
+    // [/poses]
+
+    // [dispatch]
+    // One invocation per vertex: x runs over the largest mesh's vertices in
+    // workgroups of 64, y over the objects.
+    void record_transform(VkCommandBuffer cmd, uint32_t slot, const Push& push) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, transform_);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &sets_[slot],
+                                0, nullptr);
+        vkCmdPushConstants(cmd, layout_, push_stages, 0, sizeof(Push), &push);
+        vkCmdDispatch(cmd, uint32_t(vkt::dispatch_count(max_vertices_, group)),
+                      uint32_t(scene_.objects.size()), 1);
+    }
+    // [/dispatch]
+
+    void begin_rendering(const vkt::Frame& frame) {
+        VkRenderingAttachmentInfo colour{
+            .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+            .imageView = frame.target_view,
+            .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+            .clearValue = {.color = {{0.006f, 0.006f, 0.012f, 1.0f}}},
+        };
+        VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                                  .renderArea = {{0, 0}, frame.extent},
+                                  .layerCount = 1,
+                                  .colorAttachmentCount = 1,
+                                  .pColorAttachments = &colour};
+        vkCmdBeginRendering(frame.cmd, &rendering);
+    }
+
+    // [compute-raster]
+    // Clear the image to the background (after the previous frame's copy has
+    // read it), rasterise every line into it, copy it onto the colour target.
+    void record_compute_raster(const vkt::Frame& frame) {
+        const VkCommandBuffer cmd = frame.cmd;
+        const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        vkt::image_barrier(cmd, image_.image, VK_IMAGE_LAYOUT_UNDEFINED,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                           VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                           VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        const VkClearColorValue background{.uint32 = {background_, 0, 0, 0}};
+        vkCmdClearColorImage(cmd, image_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &background,
+                             1, &all);
+        vkt::image_barrier(cmd, image_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                           VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
+                               VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        vkt::buffer_barrier(cmd, projected_[frame.slot].buffer,
+                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, raster_);
+        vkCmdDispatch(cmd, uint32_t(vkt::dispatch_count(line_total_, group)), 1, 1);
+
+        // The words are the target's pixels already: a plain copy between
+        // two formats of the same size (R32_UINT and the 8-bit sRGB target),
+        // with both images in their transfer layouts, then the target back
+        // in the layout the runner expects after record().
+        vkt::image_barrier(cmd, image_.image, VK_IMAGE_LAYOUT_GENERAL,
+                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                           VK_ACCESS_2_TRANSFER_READ_BIT);
+        vkt::image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_NONE,
+                           VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        const VkImageCopy region{.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                                 .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                                 .extent = {frame.extent.width, frame.extent.height, 1}};
+        vkCmdCopyImage(cmd, image_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, frame.target,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        vkt::image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                           VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
+                               VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
+    }
+    // [/compute-raster]
+
+    // [verify]
+    // --verify: run the transform pass alone on the last frame's poses, read
+    // the projected vertices back and compare each with the CPU reference
+    // (vkt::ndim's per-plane transform_point and project_to_2d, a different
+    // path from the matrix the GPU uses). Throws above the tolerance.
+    void verify(uint32_t slot, const Push& push) {
+        const VkDeviceSize bytes = vertex_total_ * sizeof(Projected);
+        vkt::Buffer host =
+            vkt::create_host_buffer(gpu_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+        vkt::one_time_submit(gpu_, [&](VkCommandBuffer cmd) {
+            record_transform(cmd, slot, push);
+            vkt::buffer_barrier(cmd, projected_[slot].buffer, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                                VK_ACCESS_2_TRANSFER_READ_BIT);
+            const VkBufferCopy region{0, 0, bytes};
+            vkCmdCopyBuffer(cmd, projected_[slot].buffer, host.buffer, 1, &region);
+            vkt::buffer_barrier(cmd, host.buffer, VK_PIPELINE_STAGE_2_COPY_BIT,
+                                VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                                VK_ACCESS_2_HOST_READ_BIT);
+        });
+        const auto* gpu = static_cast<const Projected*>(host.mapped);
+        std::vector<float> world(static_cast<size_t>(n_));
+        double position_error = 0.0, depth_error = 0.0;
+        size_t hidden = 0, mismatched = 0, v = 0;
+        const auto kind = orthographic_ ? nd::Projection::orthographic : nd::Projection::perspective;
+        for (const nd::SceneObject& object : scene_.objects) {
+            nd::Transform t = object.at(spin_time_);
+            for (size_t p = 0; p < t.angles.size(); ++p) t.angles[p] += user_angles_[p];
+            for (int k = 0; k < n_; ++k) t.position[size_t(k)] += user_offset_[size_t(k)];
+            const nd::Mesh& mesh = scene_.meshes[size_t(object.mesh)];
+            for (size_t i = 0; i < mesh.vertex_count(); ++i, ++v) {
+                nd::transform_point(t, mesh.vertex(i), world);
+                float xy[2];
+                const bool visible = nd::project_to_2d(world, kind, scene_.eye, xy);
+                const double depth = (world.back() - t.position.back()) / mesh.radius();
+                depth_error = std::max(depth_error, std::abs(depth - gpu[v].depth));
+                if (visible != (gpu[v].colour >> 24 != 0)) ++mismatched;
+                if (!visible) {
+                    ++hidden;
+                    continue;
+                }
+                position_error = std::max({position_error,
+                                           std::abs(double(xy[0] * push.to_clip[0]) - gpu[v].x),
+                                           std::abs(double(xy[1] * push.to_clip[1]) - gpu[v].y)});
+            }
+        }
+        constexpr double tolerance = 1e-4;  // clip units: 0.1 pixel across 1920
+        std::fprintf(stderr,
+                     "20_ndim_compute: verify: %zu vertices (%zu behind the eye), largest "
+                     "difference from the CPU: position %.3g (clip units), depth %.3g; "
+                     "tolerance %g, %zu visibility mismatches\n",
+                     v, hidden, position_error, depth_error, tolerance, mismatched);
+        if (!(position_error <= tolerance && depth_error <= tolerance) || mismatched != 0)
+            throw std::runtime_error("verify: the GPU's projected vertices differ from the CPU's");
+    }
+    // [/verify]
+
+    // [controls]
+    // The keys of chapter 18: 1..9, 0 turn the planes of the current page,
+    // [ and ] change the page, F1..F12 move along the axes, Shift reverses,
+    // Space pauses, O switches the projection, R resets.
+    void steer(const vkt::Input& input, float dt) {
+        const float sign = input.shift() ? -1.0f : 1.0f;
+        const int planes = nd::plane_count(n_), pages = (planes + 9) / 10;
+        if (input.went_down(key_right_bracket) || input.went_down(key_left_bracket))
+            page_ = (page_ + (input.went_down(key_right_bracket) ? 1 : pages - 1)) % pages;
+        for (int key = 0; key < 10; ++key) {
+            const int plane = page_ * 10 + key, code = key == 9 ? key_0 : key_1 + key;
+            if (plane < planes && input.down(code)) user_angles_[size_t(plane)] += sign * dt;
+        }
+        for (int axis = 0; axis < std::min(n_, 12); ++axis)
+            if (input.down(key_f1 + axis)) user_offset_[size_t(axis)] += sign * 1.5f * dt;
+        if (input.went_down(vkt::key::space)) paused_ = !paused_;
+        if (input.went_down(key_o)) orthographic_ = !orthographic_;
+        if (input.went_down(key_r)) {
+            std::fill(user_angles_.begin(), user_angles_.end(), 0.0f);
+            std::fill(user_offset_.begin(), user_offset_.end(), 0.0f);
+        }
+    }
+    // [/controls]
+
+    vkt::Gpu gpu_;
+    VkDevice device_;
+    int n_ = 4;
+    bool still_ = false, orthographic_ = false, compute_raster_ = false, paused_ = false;
+    bool verify_ = false;
+    uint64_t verify_frame_ = 0;
+    nd::Scene scene_;
+    std::vector<float> user_angles_, user_offset_;
+    int page_ = 0;
+    double last_time_ = 0.0;
+    float spin_time_ = 0.0f;
+    uint32_t vertex_total_ = 0, line_total_ = 0, max_vertices_ = 0;
+    size_t pose_floats_ = 0;
+    vkt::Buffer coords_, objects_, ends_;
+    std::vector<vkt::Buffer> poses_, projected_;  // [slot]
+    vkt::Image image_;                            // --raster compute
+    vkt::DescriptorSetLayout set_layout_;
+    vkt::DescriptorPool pool_;
+    std::vector<VkDescriptorSet> sets_;  // [slot]
+    vkt::PipelineLayout layout_;
+    vkt::Pipeline transform_, lines_, raster_;
+    uint32_t background_ = 0;  // --raster compute: the clear value, as the target stores it
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // [spec]
+    vkt::ChapterSpec spec{
+        .name = "20_ndim_compute", .title = "20 - ndim_compute", .input = vkt::InputUse::keys};
+    // The build's SPIR-V gives compute shaders their workgroup size as
+    // LocalSizeId, which needs maintenance4 (as in chapter 13).
+    spec.requirements.features = {VKT_FEATURE_13(maintenance4)};
+    spec.options = {
+        {.name = "--scene",
+         .type = vkt::OptionType::choice,
+         .help = "a tesseract and a 24-cell, one n-cube, or 250 n-cubes",
+         .default_value = "default",
+         .choices = {"default", "cube", "many"}},
+        // 12, as chapter 18: 250 12-cubes are 6.1 million lines, a 49 MiB
+        // index buffer and 16 MiB of projected vertices per frame in flight;
+        // the shader's point (float x[N]) lives in registers up to there.
+        {.name = "--dim",
+         .type = vkt::OptionType::integer,
+         .value_name = "N",
+         .help = "the dimension n of the cubes of --scene cube and many (default 4)",
+         .min = 3,
+         .max = 12},
+        {.name = "--projection",
+         .type = vkt::OptionType::choice,
+         .help = "perspective (the eye on each last axis) or orthographic (drop it)",
+         .default_value = "perspective",
+         .choices = {"perspective", "orthographic"}},
+        {.name = "--motion",
+         .type = vkt::OptionType::choice,
+         .help = "turn in every plane, or stand still with every angle 0",
+         .default_value = "spin",
+         .choices = {"spin", "still"}},
+        {.name = "--raster",
+         .type = vkt::OptionType::choice,
+         .help = "draw the lines with the graphics pipeline, or with a compute pass",
+         .default_value = "graphics",
+         .choices = {"graphics", "compute"}},
+        {.name = "--verify",
+         .type = vkt::OptionType::choice,
+         .help = "on the last frame, check the GPU's projected vertices against the CPU's",
+         .choices = {"cpu"}},
+    };
+    // [/spec]
+    return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
+        return std::make_unique<NdimCompute>(context);
+    });
+}

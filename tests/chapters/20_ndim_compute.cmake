@@ -1,0 +1,69 @@
+# Chapter 20: n-dimensional objects transformed and projected by a compute
+# pass, the lines drawn by the graphics pipeline or by a compute rasteriser.
+#
+# The golden picture: the default scene (a tesseract and a 24-cell) after 10
+# frames, the same poses as chapter 18 (headless time is frame index / 60).
+vkt_chapter_test(chapter.20_ndim_compute 20_ndim_compute GOLDEN BLESS
+  PIXEL 0,0,18,18,29 319,239,18,18,29 ARGS ${headless}
+  EXPECT "20_ndim_compute: default scene, n = 4, 2 objects, 40 vertices, 128 lines per frame, raster graphics")
+vkt_chapter_test(chapter.20_ndim_compute.offscreen 20_ndim_compute GOLDEN ARGS ${offscreen})
+vkt_chapter_window_test(20_ndim_compute)
+
+# The same picture as chapter 18's golden image (within vkt::Tolerance): the
+# compute pass and one indexed draw give what the CPU path gave. VKT_BLESS=0:
+# blessing never rewrites chapter 18's image from here.
+add_test(NAME chapter.20_ndim_compute.same_as_18 COMMAND vkt_chapter_check
+  --exe $<TARGET_FILE:20_ndim_compute> --out ${VKT_TEST_OUTPUT} --name chapter.20_ndim_compute.same_as_18
+  --golden ${VKT_GOLDEN_DIR}/18_ndim_cpu.png -- ${headless})
+set_tests_properties(chapter.20_ndim_compute.same_as_18 PROPERTIES
+  ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD};VKT_BLESS=0" LABELS chapter)
+
+# The compute rasteriser's picture, with its own golden image (the checker is
+# called directly to name it, as chapter 16 does for its debug views). Its
+# lines step one pixel per column or row like the hardware's, but the pixels
+# chosen differ here and there, and where lines cross the nearer one wins.
+foreach(mode headless offscreen)
+  set(test chapter.20_ndim_compute.compute_raster.${mode})
+  add_test(NAME ${test} COMMAND vkt_chapter_check --exe $<TARGET_FILE:20_ndim_compute>
+    --out ${VKT_TEST_OUTPUT} --name ${test}
+    --golden ${VKT_GOLDEN_DIR}/20_ndim_compute_compute_raster.png
+    --pixel 0,0,18,18,29 --pixel 319,239,18,18,29 --expect "raster compute"
+    -- ${${mode}} --raster compute)
+  set_tests_properties(${test} PROPERTIES ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}"
+    LABELS "chapter;bless")
+endforeach()
+
+# --verify cpu: the transform pass's projected vertices read back and
+# compared with vkt::ndim (per-plane transform_point, project_to_2d): at most
+# 1e-4 clip units in position (0.1 pixel across 1920) and 1e-4 in depth.
+set(VKT_20_VERIFY "verify: [0-9]+ vertices .*tolerance 0.0001, 0 visibility mismatches")
+vkt_chapter_test(chapter.20_ndim_compute.verify 20_ndim_compute ARGS ${headless} --verify cpu
+  EXPECT "verify: 40 vertices" "${VKT_20_VERIFY}")
+foreach(dim 4 8 12)
+  vkt_chapter_test(chapter.20_ndim_compute.verify_cube${dim} 20_ndim_compute
+    ARGS ${offscreen} --scene cube --dim ${dim} --verify cpu --raster compute
+    EXPECT "cube scene, n = ${dim}, 1 objects" "${VKT_20_VERIFY}")
+endforeach()
+vkt_chapter_test(chapter.20_ndim_compute.verify_many 20_ndim_compute
+  ARGS ${offscreen} --scene many --dim 6 --verify cpu
+  EXPECT "many scene, n = 6, 250 objects, 16000 vertices, 48000 lines per frame" "verify: 16000 vertices"
+  "${VKT_20_VERIFY}")
+vkt_chapter_test(chapter.20_ndim_compute.verify_ortho 20_ndim_compute
+  ARGS ${headless} --scene many --dim 5 --projection orthographic --verify cpu --raster compute
+  EXPECT "${VKT_20_VERIFY}")
+vkt_chapter_test(chapter.20_ndim_compute.help 20_ndim_compute EXIT 0 ARGS --help
+  EXPECT "usage: 20_ndim_compute" "--raster graphics\\|compute" "--verify cpu")
+
+# Bad input: a dimension outside 3..12, a scene or a rasteriser that does
+# not exist, --dim on the 4D scene.
+foreach(dim 2 13)
+  vkt_chapter_test(bad_input.20_ndim_compute.dim_${dim} 20_ndim_compute EXIT 2
+    ARGS --scene cube --dim ${dim} EXPECT "--dim wants a whole number from 3 to 12, not '${dim}'")
+endforeach()
+vkt_chapter_test(bad_input.20_ndim_compute.scene 20_ndim_compute EXIT 2 ARGS --scene hypersphere
+  EXPECT "--scene wants one of default, cube, many, not 'hypersphere'")
+vkt_chapter_test(bad_input.20_ndim_compute.raster 20_ndim_compute EXIT 2 ARGS --raster magic
+  EXPECT "--raster wants one of graphics, compute, not 'magic'")
+vkt_chapter_test(bad_input.20_ndim_compute.dim_default_scene 20_ndim_compute EXIT 1
+  ARGS --headless --frames 1 --dim 5
+  EXPECT "--dim 5: the default scene is 4-dimensional; use --scene cube or --scene many")
