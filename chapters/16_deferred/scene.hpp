@@ -89,8 +89,12 @@ inline std::vector<vkt::PointLight> make_lights(uint32_t count, float t) {
         const float r = 5.5f * std::sqrt((k + 0.5f) / float(count));
         const float angle = 2.399963f * k;
         const float spin = (0.6f + 0.6f * golden) * (i % 2 ? 1.0f : -1.0f) * t + k;
-        // Low enough to light the floor: a light higher than its radius would not.
-        const float height = 0.15f + level * std::min(1.5f, 0.6f * radius);
+        // Low enough to light the floor: a light higher than its radius would
+        // not. Below 2,000 lights or so (radius 0.3 and more) the lowest are
+        // 0.15 up; smaller lights hang at half their radius, so that 65,536
+        // of them (radius 0.05) still light the floor.
+        const float height =
+            std::min(0.15f, 0.5f * radius) + level * std::min(1.5f, 0.6f * radius);
         const glm::vec3 home(r * std::cos(angle), height, r * std::sin(angle));
         lights[i] = {
             .position = home + 0.6f * glm::vec3(std::cos(spin), 0.0f, std::sin(spin)),
