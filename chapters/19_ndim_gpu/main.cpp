@@ -48,8 +48,9 @@ struct Push {
 static_assert(sizeof(Push) == 28);
 // [/push]
 
-// The largest error --verify accepts, in clip units (the screen is 2 wide):
-// 1e-4 is a twentieth of a pixel at 1080 rows.
+// The largest error --verify accepts, relative to the coordinate or, on the
+// screen, to the half screen (1 in clip units): 1e-4 is a twentieth of a
+// pixel at 1080 rows.
 constexpr double verify_tolerance = 1e-4;
 
 // GLFW key codes for the controls (vkt/input.hpp has the common ones).
@@ -77,6 +78,9 @@ public:
                 "vertexPipelineStoresAndAtomics feature; this device does not have it");
         benchmark_ = options.benchmark;
         scene_ = nd::make_scene(scene, n_, still_);
+        // --eye moves the eye nearer than the scene's safe distance, so that
+        // vertices reach it and are clipped (the tests use it).
+        if (options.has("--eye")) scene_.eye = float(options.number("--eye"));
         user_angles_.assign(size_t(nd::plane_count(n_)), 0.0f);
         user_offset_.assign(size_t(n_), 0.0f);
 
@@ -319,7 +323,7 @@ private:
         const Push push = frame_push(frame.extent);
         std::vector<float> world(static_cast<size_t>(n_));
         double plane_error = 0.0, matrix_error = 0.0;
-        size_t checked = 0, mismatched = 0, missing = 0;
+        size_t checked = 0, mismatched = 0, missing = 0, clipped = 0;
         for (size_t o = 0; o < scene_.objects.size(); ++o) {
             const nd::Transform t = pose(o);
             const nd::Matrix model = nd::model_matrix(t);
@@ -339,21 +343,27 @@ private:
                 nd::project_to_2d(world, projection_, scene_.eye, by_matrix);
                 ++checked;
                 if (visible != (gpu[2] == 1.0f)) ++mismatched;
-                if (!visible) continue;
+                if (!visible) {
+                    ++clipped;
+                    continue;
+                }
+                // Relative to the coordinate, or to the half screen (1 in clip
+                // units) for a point on the screen: a point near an eye lands
+                // far outside, where a float has fewer digits to spare.
                 for (int c = 0; c < 2; ++c) {
-                    const double g = gpu[c];
-                    plane_error = std::max(plane_error, std::abs(g - by_plane[c] * push.to_clip[c]));
-                    matrix_error =
-                        std::max(matrix_error, std::abs(g - by_matrix[c] * push.to_clip[c]));
+                    const double g = gpu[c], p = by_plane[c] * push.to_clip[c],
+                                 m = by_matrix[c] * push.to_clip[c];
+                    plane_error = std::max(plane_error, std::abs(g - p) / std::max(1.0, std::abs(p)));
+                    matrix_error = std::max(matrix_error, std::abs(g - m) / std::max(1.0, std::abs(m)));
                 }
             }
         }
         std::fprintf(stderr,
                      "19_ndim_gpu: verify cpu: %zu vertices of %zu objects, GPU vs CPU max error "
-                     "%.3g (per-plane path), %.3g (chapter 18's matrix) in clip units, "
-                     "tolerance %.0e; %zu visibility mismatches, %zu not written\n",
+                     "%.3g (per-plane path), %.3g (chapter 18's matrix), relative, "
+                     "tolerance %.0e; %zu clipped, %zu visibility mismatches, %zu not written\n",
                      checked, scene_.objects.size(), plane_error, matrix_error, verify_tolerance,
-                     mismatched, missing);
+                     clipped, mismatched, missing);
         if (missing > 0 || mismatched > 0 || !(plane_error <= verify_tolerance) ||
             !(matrix_error <= verify_tolerance))
             throw std::runtime_error("verify cpu: the GPU's vertices differ from the CPU's");
@@ -469,6 +479,12 @@ int main(int argc, char** argv) {
          .help = "turn in every plane, or stand still with every angle 0",
          .default_value = "spin",
          .choices = {"spin", "still"}},
+        {.name = "--eye",
+         .type = vkt::OptionType::number,
+         .value_name = "D",
+         .help = "the eye distance on each last axis (default: the scene's, far enough for no clipping)",
+         .min = 0.1,
+         .max = 1000},
         {.name = "--verify",
          .type = vkt::OptionType::choice,
          .value_name = "CHECK",

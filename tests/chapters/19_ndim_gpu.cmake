@@ -31,8 +31,9 @@ vkt_chapter_test(chapter.19_ndim_gpu.still_cube 19_ndim_gpu
 
 # --verify cpu: the last frame's vertices captured from the vertex shader
 # and compared with vkt::ndim's per-plane transform and chapter 18's matrix,
-# within 1e-4 in clip units, every vertex written, the same ones clipped.
-set(VKT_19_VERIFIED "verify cpu: .* max error [0-9.e-]+ \\(per-plane path\\), [0-9.e-]+ \\(chapter 18's matrix\\) in clip units, tolerance 1e-04; 0 visibility mismatches, 0 not written")
+# within 1e-4 relative (to the half screen on the screen), every vertex
+# written, the same ones clipped.
+set(VKT_19_VERIFIED "verify cpu: .* max error [0-9.e-]+ \\(per-plane path\\), [0-9.e-]+ \\(chapter 18's matrix\\), relative, tolerance 1e-04; [0-9]+ clipped, 0 visibility mismatches, 0 not written")
 vkt_chapter_test(chapter.19_ndim_gpu.verify_default 19_ndim_gpu ARGS ${headless} --verify cpu
   EXPECT "verify cpu: 40 vertices of 2 objects" "${VKT_19_VERIFIED}")
 foreach(dim 4 8 12)
@@ -49,11 +50,44 @@ vkt_chapter_test(chapter.19_ndim_gpu.verify_many8 19_ndim_gpu
        --verify cpu --projection orthographic
   EXPECT "verify cpu: 64000 vertices of 250 objects" "${VKT_19_VERIFIED}")
 
+# Clipping. With the eye at d = 1 instead of 3.46, the still 3-cube's near
+# face (x2 = +1) lies exactly at the eye: its 4 vertices are clipped (the
+# distance d - x2 is exactly 0, on the CPU and the GPU alike), and so are the
+# 8 edges that touch them. What is left is the far face alone, scaled by
+# d / (d + 1) = 0.5: 120 * 0.5 / 2.5981 = 23.09 pixels from the centre, on
+# rows 96.91 and 143.09 and columns 136.91 and 183.09, which light rows 96
+# and 143 and columns 136 and 183 (pixel centres within half a pixel), in
+# the far face's colour (147, 156, 233). Where the near face and the
+# edges towards it were, at (160, 55) and on the diagonal at (120, 80), and
+# just inside the square, only the background remains.
+vkt_chapter_test(chapter.19_ndim_gpu.clipped 19_ndim_gpu
+  ARGS ${headless} --scene cube --dim 3 --motion still --eye 1
+  PIXEL 160,96,147,156,233 160,143,147,156,233 136,120,147,156,233 183,120,147,156,233
+        160,55,18,18,29 120,80,18,18,29 95,120,18,18,29 160,98,18,18,29 0,0,18,18,29)
+vkt_chapter_test(chapter.19_ndim_gpu.verify_clipped 19_ndim_gpu
+  ARGS ${headless} --scene cube --dim 3 --motion still --eye 1 --verify cpu
+  EXPECT "verify cpu: 8 vertices of 1 objects.* 4 clipped, 0 visibility mismatches")
+# Spinning, with the eye in the middle of a 5-cube: vertices come and go.
+vkt_chapter_test(chapter.19_ndim_gpu.verify_clipped5 19_ndim_gpu
+  ARGS ${offscreen} --scene cube --dim 5 --eye 1.5 --verify cpu
+  EXPECT "verify cpu: 32 vertices of 1 objects.* [1-9][0-9]* clipped" "${VKT_19_VERIFIED}")
+
+# The keys, in a real window (chapter 18's script: the same keys, the same
+# lines on the terminal, each prefixed with the chapter's name).
+if(XVFB_RUN AND XDOTOOL AND OPENBOX)
+  add_test(NAME chapter.19_ndim_gpu.window_keys
+    COMMAND ${XVFB_RUN} -a -s "-screen 0 800x600x24"
+            ${CMAKE_CURRENT_SOURCE_DIR}/window_ndim_keys.sh $<TARGET_FILE:19_ndim_gpu>
+            ${VKT_TEST_OUTPUT}/19_ndim_gpu.window_keys "19 - ndim_gpu")
+  set_tests_properties(chapter.19_ndim_gpu.window_keys PROPERTIES RESOURCE_LOCK xvfb
+    ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS "chapter;window")
+endif()
+
 vkt_chapter_test(chapter.19_ndim_gpu.help 19_ndim_gpu EXIT 0 ARGS --help
   EXPECT "usage: 19_ndim_gpu" "--scene default\\|cube\\|many" "--dim N" "--verify CHECK")
 
 # Bad input: a dimension outside 3..12, a scene that does not exist, --dim
-# on the 4D scene, a --verify check that does not exist.
+# on the 4D scene, a --verify check that does not exist, an eye at 0.
 foreach(dim 0 2 13 100)
   vkt_chapter_test(bad_input.19_ndim_gpu.dim_${dim} 19_ndim_gpu EXIT 2 ARGS --scene cube --dim ${dim}
     EXPECT "--dim wants a whole number from 3 to 12, not '${dim}'")
@@ -65,3 +99,5 @@ vkt_chapter_test(bad_input.19_ndim_gpu.dim_default_scene 19_ndim_gpu EXIT 1
   EXPECT "--dim 5: the default scene is 4-dimensional; use --scene cube or --scene many")
 vkt_chapter_test(bad_input.19_ndim_gpu.verify 19_ndim_gpu EXIT 2 ARGS --verify gpu
   EXPECT "--verify wants one of cpu, not 'gpu'")
+vkt_chapter_test(bad_input.19_ndim_gpu.eye 19_ndim_gpu EXIT 2 ARGS --eye 0
+  EXPECT "--eye wants a number from 0.1 to 1000, not '0'")
