@@ -51,6 +51,27 @@ static_assert(sizeof(Projected) == 16 && sizeof(ObjectInfo) == 16 && sizeof(Push
 
 constexpr uint32_t group = 64;  // local_size_x of both compute shaders
 
+// [palette]
+// The compute rasteriser's colours: word `level` (1..255, the depth
+// t = (level - 1) / 127 - 1) is chapter 18's depth colour, sRGB-encoded as an
+// _SRGB target stores it, in the target's byte order, with the level in the
+// top byte (the target's alpha), so that atomicMax keeps the nearest line.
+std::vector<uint32_t> palette(bool bgra) {
+    const auto byte = [](float c) {  // linear to sRGB-encoded, 0..255
+        c = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+        return uint32_t(std::clamp(c, 0.0f, 1.0f) * 255.0f + 0.5f);
+    };
+    std::vector<uint32_t> words(256, 0u);  // level 0: no line
+    for (uint32_t level = 1; level < 256; ++level) {
+        const float t = float(level - 1) / 254.0f;  // 0 far .. 1 near
+        const uint32_t r = byte(0.10f + 0.90f * t), g = byte(0.30f + 0.15f * t),
+                       b = byte(1.00f - 0.90f * t);
+        words[level] = (bgra ? b | g << 8 | r << 16 : r | g << 8 | b << 16) | level << 24;
+    }
+    return words;
+}
+// [/palette]
+
 // GLFW key codes for the controls (vkt/input.hpp has the common ones).
 constexpr int key_0 = 48, key_1 = 49, key_o = 79, key_r = 82, key_left_bracket = 91,
               key_right_bracket = 93, key_f1 = 290;
@@ -136,9 +157,10 @@ public:
 
         // [descriptors]
         // One set layout for all the passes: 0 coordinates, 1 object table,
-        // 2 poses, 3 projected vertices, 4 line ends, 5 the rasteriser's image.
-        VkDescriptorSetLayoutBinding bindings[6];
-        for (uint32_t b = 0; b < 6; ++b)
+        // 2 poses, 3 projected vertices, 4 line ends, 5 the rasteriser's
+        // image, 6 its palette (5 and 6 written for --raster compute only).
+        VkDescriptorSetLayoutBinding bindings[7];
+        for (uint32_t b = 0; b < 7; ++b)
             bindings[b] = {.binding = b,
                            .descriptorType = b == 5 ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
                                                     : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
@@ -146,7 +168,7 @@ public:
                            .stageFlags = VK_SHADER_STAGE_COMPUTE_BIT};
         set_layout_ = vkt::create_descriptor_set_layout(device_, bindings);
         const VkDescriptorPoolSize sizes[] = {
-            {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * context.frames_in_flight},
+            {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 6 * context.frames_in_flight},
             {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, context.frames_in_flight}};
         pool_ = vkt::create_descriptor_pool(device_, context.frames_in_flight, sizes);
         for (uint32_t i = 0; i < context.frames_in_flight; ++i) {
@@ -197,20 +219,31 @@ public:
         // [/line-pipeline]
         if (compute_raster_) {
             // [raster-pipeline]
-            // The rasteriser writes the target's own pixel layout, so it must
-            // know the byte order: a specialization constant.
+            // The rasteriser writes the target's own pixel layout, so the
+            // palette (raster.comp) is built in the target's byte order.
             if (context.color_format != VK_FORMAT_B8G8R8A8_SRGB &&
                 context.color_format != VK_FORMAT_R8G8B8A8_SRGB)
                 throw std::runtime_error("--raster compute: the colour target is neither "
                                          "B8G8R8A8_SRGB nor R8G8B8A8_SRGB");
-            const int bgra = context.color_format == VK_FORMAT_B8G8R8A8_SRGB ? 1 : 0;
-            const VkSpecializationInfo order{
-                .mapEntryCount = 1, .pMapEntries = &entry, .dataSize = sizeof(int), .pData = &bgra};
-            vkt::ShaderModule raster = vkt::load_shader(device_, context.chapter, "raster.comp");
-            raster_ = vkt::create_compute_pipeline(device_, raster, layout_, &order);
+            const bool bgra = context.color_format == VK_FORMAT_B8G8R8A8_SRGB;
+            const std::vector<uint32_t> words = palette(bgra);
+            palette_ = vkt::create_device_buffer(gpu_, words.data(), words.size() * sizeof(uint32_t),
+                                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+            for (VkDescriptorSet set : sets_)
+                vkt::write_buffer_descriptor(device_, set, 6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                             palette_.buffer, 0, VK_WHOLE_SIZE);
             // The background, as the target stores it: (0.006, 0.006, 0.012)
-            // sRGB-encoded is (18, 18, 29), depth byte 0 below every line's.
+            // sRGB-encoded is (18, 18, 29), level 0 below every line's.
             background_ = bgra ? 29u | 18u << 8 | 18u << 16 : 18u | 18u << 8 | 29u << 16;
+            // Invocations per line: enough for about 2^18 invocations in all
+            // (a few per GPU core), from 1 (250 n-cubes) to 32 (one 4-cube).
+            lanes_ = 1;
+            while (lanes_ < 32 && uint64_t(line_total_) * lanes_ * 2 <= (1u << 18)) lanes_ *= 2;
+            const VkSpecializationInfo lanes{
+                .mapEntryCount = 1, .pMapEntries = &entry, .dataSize = sizeof(int), .pData = &lanes_};
+            vkt::ShaderModule raster = vkt::load_shader(device_, context.chapter, "raster.comp");
+            raster_ = vkt::create_compute_pipeline(device_, raster, layout_, &lanes);
+            max_groups_x_ = context.properties.limits.maxComputeWorkGroupCount[0];
             // [/raster-pipeline]
             resize(context.extent);
         }
@@ -363,8 +396,12 @@ private:
                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+        // lanes_ invocations per line (raster.comp), the workgroups laid
+        // out in rows of at most max_groups_x_.
+        const uint64_t groups = vkt::dispatch_count(uint64_t(line_total_) * lanes_, group);
+        const uint64_t rows = vkt::dispatch_count(groups, max_groups_x_);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, raster_);
-        vkCmdDispatch(cmd, uint32_t(vkt::dispatch_count(line_total_, group)), 1, 1);
+        vkCmdDispatch(cmd, uint32_t(rows == 1 ? groups : max_groups_x_), uint32_t(rows), 1);
 
         // The words are the target's pixels already: a plain copy between
         // two formats of the same size (R32_UINT and the 8-bit sRGB target),
@@ -487,7 +524,7 @@ private:
     float spin_time_ = 0.0f;
     uint32_t vertex_total_ = 0, line_total_ = 0, max_vertices_ = 0;
     size_t pose_floats_ = 0;
-    vkt::Buffer coords_, objects_, ends_;
+    vkt::Buffer coords_, objects_, ends_, palette_;
     std::vector<vkt::Buffer> poses_, projected_;  // [slot]
     vkt::Image image_;                            // --raster compute
     vkt::DescriptorSetLayout set_layout_;
@@ -495,6 +532,8 @@ private:
     std::vector<VkDescriptorSet> sets_;  // [slot]
     vkt::PipelineLayout layout_;
     vkt::Pipeline transform_, lines_, raster_;
+    uint32_t max_groups_x_ = 65535;  // maxComputeWorkGroupCount[0]
+    int lanes_ = 1;                  // raster.comp's LANES
     uint32_t background_ = 0;  // --raster compute: the clear value, as the target stores it
 };
 

@@ -22,3 +22,10 @@ struct Projected {
     float depth;
 };
 // [/projected]
+
+// The colour of chapter 18: depth t = -1 (far along the last axis) blue,
+// t = 1 (near the eye) orange; linear values the _SRGB target encodes.
+vec3 depth_colour(float t) {
+    t = clamp(0.5 + 0.5 * t, 0.0, 1.0);
+    return vec3(0.10 + 0.90 * t, 0.30 + 0.15 * t, 1.00 - 0.90 * t);
+}

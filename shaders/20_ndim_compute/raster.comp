@@ -1,29 +1,38 @@
 #version 450
-// Chapter 20: the compute rasteriser. One invocation per line walks its
-// pixels and keeps, in each, the nearest line's colour. Each pixel is one
+// Chapter 20: the compute rasteriser. One or more invocations per line walk
+// its pixels and keep, in each, the nearest line's colour. Each pixel is one
 // 32-bit word laid out as the colour target's pixel: three sRGB-encoded
-// colour bytes in the target's order, and in the top byte, the target's
-// alpha, which the screen does not show, the depth. atomicMax keeps the largest word, the nearest line,
-// whatever order the invocations run in; a copy then moves the words to the
-// colour target unchanged.
+// colour bytes in the target's order, and in the top byte (the target's
+// alpha, which the screen does not show) the depth. atomicMax keeps the
+// largest word, the nearest line, whatever order the invocations run in; a
+// copy then moves the words to the colour target unchanged.
 #extension GL_GOOGLE_include_directive : require
 #include "ndim.glsl"
 
 layout(local_size_x = 64) in;
-// 1: the target is B8G8R8A8 (blue in the lowest byte), 0: R8G8B8A8.
-layout(constant_id = 0) const int BGRA = 1;
+// How many invocations share a line (1 to 32, a power of two): chosen when
+// the pipeline is built, from the number of lines.
+layout(constant_id = 0) const uint LANES = 1;
 layout(std430, set = 0, binding = 3) readonly buffer In { Projected projected[]; };
 layout(std430, set = 0, binding = 4) readonly buffer Lines { uint ends[]; };
 layout(r32ui, set = 0, binding = 5) uniform uimage2D raster;
+// The colour is chapter 18's depth colour, a function of the depth alone, so
+// each of the 255 depth levels has one word, built once on the CPU: the
+// colour sRGB-encoded in the target's byte order, the level in the top byte.
+layout(std430, set = 0, binding = 6) readonly buffer Palette { uint palette[256]; };
 
-// What an _SRGB target does on a write: linear to sRGB-encoded.
-vec3 srgb_encode(vec3 c) {
-    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
-}
-
+// [lanes]
+// LANES invocations share a line, each taking every LANES-th pixel: with few
+// lines (one n-cube) a long line is walked by many lanes at once, and the
+// GPU has enough invocations to fill its compute units. The dispatch is
+// two-dimensional (x has a limit of 65,535 workgroups on some devices), so
+// the flat index is rebuilt from both.
 void main() {
-    const uint line = gl_GlobalInvocationID.x;
+    const uint index = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) *
+                           gl_WorkGroupSize.x + gl_LocalInvocationID.x;
+    const uint line = index / LANES, lane = index % LANES;
     if (line >= push.line_count) return;
+    // [/lanes]
     const Projected a = projected[ends[2u * line]], b = projected[ends[2u * line + 1u]];
     if ((a.colour >> 24) == 0u || (b.colour >> 24) == 0u) return;  // an end behind the eye
 
@@ -40,18 +49,14 @@ void main() {
     const float start = forward ? p0[major] : p1[major], end = forward ? p1[major] : p0[major];
     const int first = max(int(ceil(start - 0.5)), 0);
     const int last = min(int(ceil(end - 0.5)), int(push.size[major])) - 1;
-    const vec4 ca = unpackUnorm4x8(a.colour), cb = unpackUnorm4x8(b.colour);
-    for (int i = first; i <= last; ++i) {
+    for (int i = first + int(lane); i <= last; i += int(LANES)) {
         const float t = (float(i) + 0.5 - p0[major]) / d[major];  // 0 at a, 1 at b
         const int j = int(floor(p0[minor] + t * d[minor]));
         if (j < 0 || j >= int(push.size[minor])) continue;
-        // Depth 1..255 (0 is the background) in the alpha byte; the colour
-        // interpolated in linear values, then encoded, as the hardware does.
+        // The depth t = -1..1 as level 1..255 (0 is the background).
         const float depth = clamp(0.5 + 0.5 * mix(a.depth, b.depth, t), 0.0, 1.0);
-        const vec3 c = srgb_encode(mix(ca.rgb, cb.rgb, t));
-        const uint packed = packUnorm4x8(vec4(BGRA == 1 ? c.bgr : c, 0.0)) & 0xffffffu;
         imageAtomicMax(raster, major == 0 ? ivec2(i, j) : ivec2(j, i),
-                       packed | (1u + uint(depth * 254.0 + 0.5)) << 24);
+                       palette[1u + uint(depth * 254.0 + 0.5)]);
     }
     // [/walk]
 }

@@ -22,29 +22,31 @@ layout(std430, set = 0, binding = 1) readonly buffer Objects { Object objects[];
 layout(std430, set = 0, binding = 2) readonly buffer Poses { float poses[]; };
 layout(std430, set = 0, binding = 3) writeonly buffer Out { Projected projected[]; };
 
-// The colour of chapter 18: depth t = -1 (far along the last axis) blue,
-// t = 1 (near the eye) orange; linear values the _SRGB target encodes.
-vec3 depth_colour(float t) {
-    t = clamp(0.5 + 0.5 * t, 0.0, 1.0);
-    return vec3(0.10 + 0.90 * t, 0.30 + 0.15 * t, 1.00 - 0.90 * t);
-}
+// This workgroup's object's pose, read from memory once per workgroup.
+shared float pose[N * N + N];
 
 void main() {
     const uint object = gl_WorkGroupID.y, v = gl_GlobalInvocationID.x;
     const Object o = objects[object];
-    if (v >= o.vertex_count) return;
 
     // [transform]
+    // Every invocation of a workgroup works on the same object: they copy its
+    // M and p into shared memory together, then wait for each other (before
+    // any of them may leave: barrier() must be reached by all).
+    for (uint i = gl_LocalInvocationID.x; i < uint(N * N + N); i += gl_WorkGroupSize.x)
+        pose[i] = poses[object * uint(N * N + N) + i];
+    barrier();
+    if (v >= o.vertex_count) return;
     // x' = p + M x: N * N multiply-adds with the matrix the CPU built once
     // for the whole object. No sine, no cosine, no plane loop per vertex.
-    const uint pose = object * uint(N * N + N), source = (o.first_vertex + v) * uint(N);
+    const uint source = (o.first_vertex + v) * uint(N);
     float x[N];
     for (int r = 0; r < N; ++r) {
-        float sum = poses[pose + uint(N * N + r)];
-        for (int c = 0; c < N; ++c) sum += poses[pose + uint(r * N + c)] * coords[source + uint(c)];
+        float sum = pose[N * N + r];
+        for (int c = 0; c < N; ++c) sum += pose[r * N + c] * coords[source + uint(c)];
         x[r] = sum;
     }
-    const float depth = (x[N - 1] - poses[pose + uint(N * N + N - 1)]) * o.inv_radius;
+    const float depth = (x[N - 1] - pose[N * N + N - 1]) * o.inv_radius;
     // [/transform]
 
     // [project]

@@ -33,6 +33,28 @@ foreach(mode headless offscreen)
     LABELS "chapter;bless")
 endforeach()
 
+# Hand-worked pixels, chapter 18's still 3-cube (its tests file has the
+# arithmetic): the near square's edges on rows 55 and 184 and columns 95 and
+# 224 in (233, 173, 147), the far square's on row 84 and columns 124 and 195
+# in (147, 156, 233), background (18, 18, 29). Both rasterisers, within 2
+# levels: the compute rasteriser quantises the depth colour to 255 levels.
+foreach(raster graphics compute)
+  set(png ${VKT_TEST_OUTPUT}/chapter.20_ndim_compute.still_cube_${raster}.png)
+  vkt_chapter_test(chapter.20_ndim_compute.still_cube_${raster} 20_ndim_compute
+    ARGS ${headless} --scene cube --dim 3 --motion still --raster ${raster} --screenshot ${png}
+    EXPECT "cube scene, n = 3, 1 objects, 8 vertices, 12 lines per frame, raster ${raster}")
+  add_test(NAME chapter.20_ndim_compute.still_cube_${raster}_pixels
+    COMMAND vkt_chapter_check --png ${png}
+            --pixel 0,0,18,18,29,2 --pixel 160,55,233,173,147,2 --pixel 160,184,233,173,147,2
+            --pixel 95,120,233,173,147,2 --pixel 224,120,233,173,147,2
+            --pixel 160,84,147,156,233,2 --pixel 124,120,147,156,233,2
+            --pixel 195,120,147,156,233,2 --pixel 160,57,18,18,29,2 --pixel 160,120,18,18,29,2)
+  set_tests_properties(chapter.20_ndim_compute.still_cube_${raster} PROPERTIES
+    FIXTURES_SETUP ndim20_still_${raster})
+  set_tests_properties(chapter.20_ndim_compute.still_cube_${raster}_pixels PROPERTIES
+    FIXTURES_REQUIRED ndim20_still_${raster} LABELS chapter)
+endforeach()
+
 # --verify cpu: the transform pass's projected vertices read back and
 # compared with vkt::ndim (per-plane transform_point, project_to_2d): at most
 # 1e-4 clip units in position (0.1 pixel across 1920) and 1e-4 in depth.
