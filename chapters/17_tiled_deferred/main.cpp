@@ -263,7 +263,6 @@ private:
         }
     }
 
-    // [update]
     // Chapter 16's frame: the same camera, materials, shapes and lights.
     void update(uint32_t slot, VkExtent2D extent, float t) {
         FrameUniforms frame{};
@@ -283,7 +282,6 @@ private:
                     lights_now_.size() * sizeof(vkt::PointLight));
         objects_ = ch16::make_objects(t);
     }
-    // [/update]
 
     // What the slot's last frame counted (it is finished), then zeroed.
     void read_stats(uint32_t slot) {
