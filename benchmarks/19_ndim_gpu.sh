@@ -3,8 +3,9 @@
 # n-cube and 250 n-cubes at n = 4, 8, 12, at 1920x1080, validation off; one
 # JSON line per run, each preceded by a line naming its arguments and followed
 # by the chapter's CPU time per frame (writing the transforms, recording the
-# draws). Fewer frames where a frame takes long (the median of a few frames is
-# still a median).
+# draws). The largest cases also with the edges in chapter 18's order
+# (--edge-order axis), where a vertex's edges lie far apart. Fewer frames
+# where a frame takes long (the median of a few frames is still a median).
 #   benchmarks/19_ndim_gpu.sh [BIN_DIR] [FRAME_SCALE] [PATH]
 # FRAME_SCALE (default 1) multiplies every frame count: a fast GPU wants more.
 # PATH: headless (default) or offscreen (a GPU driver without
@@ -31,6 +32,8 @@ run 300 --scene default
 run 300 --scene cube --dim 4
 run 300 --scene cube --dim 8
 run 30 --scene cube --dim 12
+run 30 --scene cube --dim 12 --edge-order axis
 run 100 --scene many --dim 4
 run 10 --scene many --dim 8
 run 3 --scene many --dim 12
+run 3 --scene many --dim 12 --edge-order axis

@@ -13,7 +13,7 @@ for args in "300 --scene default" "300 --scene cube --dim 4" "300 --scene cube -
     $bin/$ch --headless --no-validation --size 1920x1080 --benchmark --frames $f "$@" 2>/dev/null
   done
 done
-for ch in 18_ndim_cpu 19_ndim_gpu; do
+for ch in 18_ndim_cpu 19_ndim_gpu "19_ndim_gpu --edge-order axis"; do
   echo "# $ch --scene many --dim 12 --frames 3 64x48"
   $bin/$ch --headless --no-validation --size 64x48 --benchmark --frames 3 --scene many --dim 12 2>/dev/null
   echo "# $ch --scene cube --dim 12 --frames 30 64x48"

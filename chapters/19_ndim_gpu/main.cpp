@@ -89,6 +89,7 @@ public:
         // buffer (n floats each), all edges in one index buffer (two vertex
         // numbers each, counted from the mesh's first vertex). A draw finds
         // its mesh by firstIndex and vertexOffset.
+        const bool by_vertex = options.text("--edge-order") == "vertex";
         std::vector<float> coords;
         std::vector<uint32_t> indices;
         for (const nd::Mesh& mesh : scene_.meshes) {
@@ -98,7 +99,14 @@ public:
                                .vertex_count = uint32_t(mesh.vertex_count()),
                                .inverse_radius = 1.0f / mesh.radius()});
             coords.insert(coords.end(), mesh.coords.begin(), mesh.coords.end());
-            for (const nd::Edge& edge : mesh.edges) indices.insert(indices.end(), {edge.a, edge.b});
+            // By vertex: the edges from vertex 0 first, then those from 1, ...
+            // so that a vertex's edges lie close together and the GPU can
+            // reuse its shaded result instead of shading it once per edge.
+            std::vector<nd::Edge> edges = mesh.edges;  // by axis, as make_cube lists them
+            if (by_vertex)
+                std::stable_sort(edges.begin(), edges.end(),
+                                 [](const nd::Edge& x, const nd::Edge& y) { return x.a < y.a; });
+            for (const nd::Edge& edge : edges) indices.insert(indices.end(), {edge.a, edge.b});
         }
         vertex_count_ = uint32_t(coords.size() / size_t(n_));
         vertices_ = vkt::create_device_buffer(gpu_, coords.data(), coords.size() * sizeof(float),
@@ -479,6 +487,11 @@ int main(int argc, char** argv) {
          .help = "turn in every plane, or stand still with every angle 0",
          .default_value = "spin",
          .choices = {"spin", "still"}},
+        {.name = "--edge-order",
+         .type = vkt::OptionType::choice,
+         .help = "the index buffer's edges by vertex (reused shading) or by axis (chapter 18's order)",
+         .default_value = "vertex",
+         .choices = {"vertex", "axis"}},
         {.name = "--eye",
          .type = vkt::OptionType::number,
          .value_name = "D",
