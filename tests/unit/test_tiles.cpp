@@ -125,8 +125,9 @@ TEST_CASE("culling never drops a light that touches the tile", "[tiles]") {
             ++culled;
         }
     }
-    // The random cases exercise all three outcomes.
+    // The random cases exercise all three outcomes; the last is the price of
+    // testing plane by plane (and, rarely, a touch the 17^3 samples miss).
     CHECK(touching > 20);
     CHECK(culled > 20);
-    CHECK(kept_not_touching >= 0);
+    CHECK(kept_not_touching > 0);  // near corners: kept, though missing (conservative)
 }
