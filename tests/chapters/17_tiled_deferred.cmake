@@ -12,9 +12,22 @@ vkt_chapter_test(chapter.17_tiled_deferred 17_tiled_deferred GOLDEN BLESS ${VKT_
 vkt_chapter_test(chapter.17_tiled_deferred.offscreen 17_tiled_deferred GOLDEN ${VKT_17_PIXEL}
   ARGS ${offscreen})
 vkt_chapter_window_test(17_tiled_deferred PIXEL 0,0,39,39,56)
-# The compute path: the same picture, so the same golden image.
+# The compute path: the same picture, so the same golden image; in a window
+# too, where the blit's target is then copied to the swapchain image.
 vkt_chapter_test(chapter.17_tiled_deferred.compute 17_tiled_deferred GOLDEN ${VKT_17_PIXEL}
   ARGS ${headless} --shade compute EXPECT "shade compute")
+if(XVFB_RUN)
+  set(test chapter.17_tiled_deferred.window_compute)
+  add_test(NAME ${test}
+    COMMAND ${XVFB_RUN} -a -s "-screen 0 640x480x24"
+            $<TARGET_FILE:vkt_chapter_check> --exe $<TARGET_FILE:17_tiled_deferred>
+            --out ${VKT_TEST_OUTPUT} --name ${test}
+            --golden ${VKT_GOLDEN_DIR}/17_tiled_deferred.png --pixel 0,0,39,39,56
+            --expect "17_tiled_deferred: .*, window B8G8R8A8_" --expect "shade compute" --
+            --validation --frames ${VKT_TEST_FRAMES} --size ${VKT_TEST_SIZE} --shade compute)
+  set_tests_properties(${test} PROPERTIES
+    ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS "chapter;window")
+endif()
 
 # With chapter 16's 32 lights the scene is chapter 16's: both tiled paths
 # against chapter 16's golden image (the golden tests' tolerance).
