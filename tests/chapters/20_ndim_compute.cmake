@@ -89,3 +89,17 @@ vkt_chapter_test(bad_input.20_ndim_compute.raster 20_ndim_compute EXIT 2 ARGS --
 vkt_chapter_test(bad_input.20_ndim_compute.dim_default_scene 20_ndim_compute EXIT 1
   ARGS --headless --frames 1 --dim 5
   EXPECT "--dim 5: the default scene is 4-dimensional; use --scene cube or --scene many")
+
+# The compute rasteriser in a real window (B8G8R8A8 there too; the golden
+# image is the compute rasteriser's own).
+if(XVFB_RUN)
+  add_test(NAME chapter.20_ndim_compute.compute_raster.window
+    COMMAND ${XVFB_RUN} -a -s "-screen 0 640x480x24"
+            $<TARGET_FILE:vkt_chapter_check> --exe $<TARGET_FILE:20_ndim_compute>
+            --out ${VKT_TEST_OUTPUT} --name chapter.20_ndim_compute.compute_raster.window
+            --golden ${VKT_GOLDEN_DIR}/20_ndim_compute_compute_raster.png
+            --expect "20_ndim_compute: .*, window B8G8R8A8_" --
+            --validation --frames ${VKT_TEST_FRAMES} --size ${VKT_TEST_SIZE} --raster compute)
+  set_tests_properties(chapter.20_ndim_compute.compute_raster.window PROPERTIES
+    ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS "chapter;window")
+endif()
