@@ -3,8 +3,9 @@
 # n-cubes at n = 4, 8, 12, at 1920x1080, validation off, with the lines drawn
 # by the graphics pipeline and by the compute rasteriser; one JSON line per
 # run (--benchmark: frame times and the GPU scopes "transform" and "raster"),
-# each preceded by a line naming its arguments. Fewer frames where a frame
-# takes long (the median of a few frames is still a median).
+# each preceded by a line naming its arguments and followed by the chapter's
+# CPU time per frame (building the poses). Fewer frames where a frame takes
+# long (the median of a few frames is still a median).
 #   benchmarks/20_ndim_compute.sh [BIN_DIR] [FRAME_SCALE] [PATH]
 # FRAME_SCALE (default 1) multiplies every frame count: a fast GPU wants more.
 # PATH: headless (default) or offscreen (a GPU driver without
@@ -20,9 +21,12 @@ run() {
   for raster in graphics compute; do
     echo "# 20_ndim_compute $* --raster $raster --frames $frames"
     "$bin/20_ndim_compute" "$path" --no-validation --size "$size" --benchmark \
-      --frames "$frames" "$@" --raster "$raster" 2>/dev/null
+      --frames "$frames" "$@" --raster "$raster" 2>"$log"
+    grep -h "CPU poses" "$log" || true
   done
 }
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
 echo "# 03_swapchain (an empty frame) --frames $((300 * scale))"
 "$bin/03_swapchain" "$path" --no-validation --size "$size" --benchmark --frames $((300 * scale)) \
   2>/dev/null

@@ -17,9 +17,11 @@
 #include "vkt/pipeline.hpp"
 #include "vkt/runner.hpp"
 #include "vkt/shader.hpp"
+#include "vkt/stats.hpp"
 #include "vkt/upload.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -92,6 +94,7 @@ public:
         compute_raster_ = options.text("--raster") == "compute";
         verify_ = options.has("--verify");
         verify_frame_ = options.frames.value_or(1) - 1;
+        benchmark_ = options.benchmark;
         scene_ = nd::make_scene(scene, n_, still_);
         user_angles_.assign(size_t(nd::plane_count(n_)), 0.0f);
         user_offset_.assign(size_t(n_), 0.0f);
@@ -273,12 +276,24 @@ public:
     }
     // [/storage-image]
 
+    // With --benchmark, the CPU's share: building the poses each frame.
+    ~NdimCompute() override {
+        if (benchmark_)
+            std::fprintf(stderr, "20_ndim_compute: CPU poses per frame, ms: %s\n",
+                         vkt::json_summary(cpu_ms_).c_str());
+    }
+
     void record(const vkt::Frame& frame) override {
         const float dt = float(frame.time - last_time_);
         last_time_ = frame.time;
         steer(frame.input, dt);
         if (!still_ && !paused_) spin_time_ += dt;
+        const auto cpu_start = std::chrono::steady_clock::now();
         write_poses(frame.slot);
+        if (benchmark_)
+            cpu_ms_.push_back(std::chrono::duration<double, std::milli>(
+                                  std::chrono::steady_clock::now() - cpu_start)
+                                  .count());
 
         const float aspect = float(frame.extent.width) / float(frame.extent.height);
         const Push push{{1.0f / (scene_.view_half_height * aspect), -1.0f / scene_.view_half_height},
@@ -515,7 +530,8 @@ private:
     VkDevice device_;
     int n_ = 4;
     bool still_ = false, orthographic_ = false, compute_raster_ = false, paused_ = false;
-    bool verify_ = false;
+    bool verify_ = false, benchmark_ = false;
+    std::vector<double> cpu_ms_;
     uint64_t verify_frame_ = 0;
     nd::Scene scene_;
     std::vector<float> user_angles_, user_offset_;
