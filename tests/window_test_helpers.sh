@@ -7,9 +7,15 @@
 # has a bound, and only a failure ever reaches it; it then says which event
 # did not come. Nothing depends on how fast lavapipe draws or X answers.
 
-# Bounds for single events, in tenths of a second. Generous: they only decide
-# how long a broken run takes to fail, never whether a working one passes.
-VKT_EVENT_BOUND=${VKT_EVENT_BOUND:-1200}   # 120 s
+# The bound on a single event, in seconds of wall-clock time. Generous: it
+# only decides how long a broken run takes to fail, never whether a working
+# one passes. It is a deadline, not a number of polls: on a loaded machine one
+# poll can take far longer than its 0.1 s pause, and a bound counted in polls
+# then outlasted CTest's own timeout, which kills the test before it can say
+# which event did not come.
+VKT_EVENT_SECONDS=${VKT_EVENT_SECONDS:-120}
+# in_time DEADLINE: true until the wall clock reaches DEADLINE ($SECONDS).
+in_time() { [ "$SECONDS" -lt "$1" ]; }
 
 err=""   # the chapter's stderr, set by start_chapter
 pid=""   # the chapter's process id
@@ -29,7 +35,8 @@ start_wm() {
   local log; log=$(mktemp -t openbox.XXXXXX)
   openbox --sm-disable >/dev/null 2>"$log" &
   local wm=$!
-  for _ in $(seq "$VKT_EVENT_BOUND"); do
+  local deadline=$((SECONDS + VKT_EVENT_SECONDS))
+  while in_time "$deadline"; do
     wmctrl -m >/dev/null 2>&1 && { rm -f "$log"; return 0; }
     kill -0 "$wm" 2>/dev/null || fail "the window manager exited: $(cat "$log")"
     sleep 0.1
@@ -49,7 +56,8 @@ start_chapter() {
 # for it to be mapped.
 find_window() {
   local window
-  for _ in $(seq "$VKT_EVENT_BOUND"); do
+  local deadline=$((SECONDS + VKT_EVENT_SECONDS))
+  while in_time "$deadline"; do
     window=$(xdotool search --onlyvisible --name "$1" 2>/dev/null | head -n 1)
     [ -n "$window" ] && { echo "$window"; return 0; }
     kill -0 "$pid" 2>/dev/null || return 1
@@ -63,7 +71,8 @@ find_window() {
 mark() { wc -l <"$err"; }
 wait_line() {
   local from=$(($1 + 1)) what=$2
-  for _ in $(seq "$VKT_EVENT_BOUND"); do
+  local deadline=$((SECONDS + VKT_EVENT_SECONDS))
+  while in_time "$deadline"; do
     tail -n "+$from" "$err" | grep -qE "$what" && return 0
     kill -0 "$pid" 2>/dev/null || { tail -n "+$from" "$err" | grep -qE "$what" && return 0; fail "the chapter exited before it said: $what"; }
     sleep 0.1
@@ -82,7 +91,8 @@ resize() {
 
 # wait_exit: waits for the chapter to exit and sets $status.
 wait_exit() {
-  for _ in $(seq "$VKT_EVENT_BOUND"); do
+  local deadline=$((SECONDS + VKT_EVENT_SECONDS))
+  while in_time "$deadline"; do
     kill -0 "$pid" 2>/dev/null || break
     sleep 0.1
   done
