@@ -10,6 +10,7 @@
 // storage image (one invocation per line, atomicMax per pixel) laid out as
 // the colour target's pixels, and a copy moves it onto the colour target.
 
+#include "scene_state.hpp"
 #include "vkt/barrier.hpp"
 #include "vkt/compute.hpp"
 #include "vkt/descriptors.hpp"
@@ -33,50 +34,9 @@ namespace {
 
 namespace nd = vkt::ndim;
 
-// The C++ side of shaders/20_ndim_compute/ndim.glsl.
-struct Push {
-    float to_clip[2];
-    float eye;
-    uint32_t orthographic, object_count, line_count;
-    uint32_t size[2];
-};
-struct Projected {
-    float x, y;
-    uint32_t colour;
-    float depth;
-};
-struct ObjectInfo {
-    uint32_t first_vertex, vertex_count, first_out;
-    float inv_radius;
-};
-static_assert(sizeof(Projected) == 16 && sizeof(ObjectInfo) == 16 && sizeof(Push) == 32);
+using ch20::ObjectInfo, ch20::Projected, ch20::Push;
 
 constexpr uint32_t group = 64;  // local_size_x of both compute shaders
-
-// [palette]
-// The compute rasteriser's colours: word `level` (1..255, the depth
-// t = (level - 1) / 127 - 1) is chapter 18's depth colour, sRGB-encoded as an
-// _SRGB target stores it, in the target's byte order, with the level in the
-// top byte (the target's alpha), so that atomicMax keeps the nearest line.
-std::vector<uint32_t> palette(bool bgra) {
-    const auto byte = [](float c) {  // linear to sRGB-encoded, 0..255
-        c = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-        return uint32_t(std::clamp(c, 0.0f, 1.0f) * 255.0f + 0.5f);
-    };
-    std::vector<uint32_t> words(256, 0u);  // level 0: no line
-    for (uint32_t level = 1; level < 256; ++level) {
-        const float t = float(level - 1) / 254.0f;  // 0 far .. 1 near
-        const uint32_t r = byte(0.10f + 0.90f * t), g = byte(0.30f + 0.15f * t),
-                       b = byte(1.00f - 0.90f * t);
-        words[level] = (bgra ? b | g << 8 | r << 16 : r | g << 8 | b << 16) | level << 24;
-    }
-    return words;
-}
-// [/palette]
-
-// GLFW key codes for the controls (vkt/input.hpp has the common ones).
-constexpr int key_0 = 48, key_1 = 49, key_o = 79, key_r = 82, key_left_bracket = 91,
-              key_right_bracket = 93, key_f1 = 290;
 
 class NdimCompute : public vkt::Renderer {
 public:
@@ -90,14 +50,12 @@ public:
                                      "--scene many to choose n");
         n_ = options.has("--dim") ? int(options.integer("--dim")) : 4;
         still_ = options.text("--motion") == "still";
-        orthographic_ = options.text("--projection") == "orthographic";
         compute_raster_ = options.text("--raster") == "compute";
         verify_ = options.has("--verify");
         verify_frame_ = options.frames.value_or(1) - 1;
         benchmark_ = options.benchmark;
         scene_ = nd::make_scene(scene, n_, still_);
-        user_angles_.assign(size_t(nd::plane_count(n_)), 0.0f);
-        user_offset_.assign(size_t(n_), 0.0f);
+        keys_ = ch20::Keys(n_, options.text("--projection") == "orthographic");
 
         // [static-buffers]
         // Built once: each mesh's coordinates (shared by all its objects),
@@ -128,9 +86,9 @@ public:
         line_total_ = uint32_t(ends.size() / 2);
         coords_ = vkt::create_device_buffer(gpu_, coords.data(), coords.size() * sizeof(float),
                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-        objects_ = vkt::create_device_buffer(gpu_, objects.data(),
-                                             objects.size() * sizeof(ObjectInfo),
-                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        objects_ =
+            vkt::create_device_buffer(gpu_, objects.data(), objects.size() * sizeof(ObjectInfo),
+                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
         ends_ = vkt::create_device_buffer(
             gpu_, ends.data(), ends.size() * sizeof(uint32_t),
             VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
@@ -143,8 +101,8 @@ public:
         pose_floats_ = size_t(n_ * n_ + n_);
         const VkDeviceSize pose_bytes = scene_.objects.size() * pose_floats_ * sizeof(float);
         for (uint32_t i = 0; i < context.frames_in_flight; ++i) {
-            poses_.push_back(vkt::create_host_buffer(gpu_, pose_bytes,
-                                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+            poses_.push_back(
+                vkt::create_host_buffer(gpu_, pose_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
             projected_.push_back(vkt::create_buffer(
                 context.physical, device_, vertex_total_ * sizeof(Projected),
                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
@@ -212,13 +170,14 @@ public:
         };
         vkt::ShaderModule vertex = vkt::load_shader(device_, context.chapter, "lines.vert");
         vkt::ShaderModule fragment = vkt::load_shader(device_, context.chapter, "lines.frag");
-        lines_ = vkt::create_graphics_pipeline(device_, {.vertex = vertex,
-                                                         .fragment = fragment,
-                                                         .layout = layout_,
-                                                         .bindings = {&binding, 1},
-                                                         .attributes = attributes,
-                                                         .topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST,
-                                                         .color_formats = {context.color_format}});
+        lines_ =
+            vkt::create_graphics_pipeline(device_, {.vertex = vertex,
+                                                    .fragment = fragment,
+                                                    .layout = layout_,
+                                                    .bindings = {&binding, 1},
+                                                    .attributes = attributes,
+                                                    .topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST,
+                                                    .color_formats = {context.color_format}});
         // [/line-pipeline]
         if (compute_raster_) {
             // [raster-pipeline]
@@ -226,12 +185,14 @@ public:
             // palette (raster.comp) is built in the target's byte order.
             if (context.color_format != VK_FORMAT_B8G8R8A8_SRGB &&
                 context.color_format != VK_FORMAT_R8G8B8A8_SRGB)
-                throw std::runtime_error("--raster compute: the colour target is neither "
-                                         "B8G8R8A8_SRGB nor R8G8B8A8_SRGB");
+                throw std::runtime_error(
+                    "--raster compute: the colour target is neither "
+                    "B8G8R8A8_SRGB nor R8G8B8A8_SRGB");
             const bool bgra = context.color_format == VK_FORMAT_B8G8R8A8_SRGB;
-            const std::vector<uint32_t> words = palette(bgra);
-            palette_ = vkt::create_device_buffer(gpu_, words.data(), words.size() * sizeof(uint32_t),
-                                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+            const std::vector<uint32_t> words = ch20::palette(bgra);
+            palette_ =
+                vkt::create_device_buffer(gpu_, words.data(), words.size() * sizeof(uint32_t),
+                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
             for (VkDescriptorSet set : sets_)
                 vkt::write_buffer_descriptor(device_, set, 6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                              palette_.buffer, 0, VK_WHOLE_SIZE);
@@ -242,8 +203,10 @@ public:
             // (a few per GPU core), from 1 (250 n-cubes) to 32 (one 4-cube).
             lanes_ = 1;
             while (lanes_ < 32 && uint64_t(line_total_) * lanes_ * 2 <= (1u << 18)) lanes_ *= 2;
-            const VkSpecializationInfo lanes{
-                .mapEntryCount = 1, .pMapEntries = &entry, .dataSize = sizeof(int), .pData = &lanes_};
+            const VkSpecializationInfo lanes{.mapEntryCount = 1,
+                                             .pMapEntries = &entry,
+                                             .dataSize = sizeof(int),
+                                             .pData = &lanes_};
             vkt::ShaderModule raster = vkt::load_shader(device_, context.chapter, "raster.comp");
             raster_ = vkt::create_compute_pipeline(device_, raster, layout_, &lanes);
             max_groups_x_ = context.properties.limits.maxComputeWorkGroupCount[0];
@@ -286,8 +249,8 @@ public:
     void record(const vkt::Frame& frame) override {
         const float dt = float(frame.time - last_time_);
         last_time_ = frame.time;
-        steer(frame.input, dt);
-        if (!still_ && !paused_) spin_time_ += dt;
+        keys_.steer(frame.input, dt);
+        if (!still_ && !keys_.paused) spin_time_ += dt;
         const auto cpu_start = std::chrono::steady_clock::now();
         write_poses(frame.slot);
         if (benchmark_)
@@ -296,12 +259,13 @@ public:
                                   .count());
 
         const float aspect = float(frame.extent.width) / float(frame.extent.height);
-        const Push push{{1.0f / (scene_.view_half_height * aspect), -1.0f / scene_.view_half_height},
-                        scene_.eye,
-                        orthographic_ ? 1u : 0u,
-                        uint32_t(scene_.objects.size()),
-                        line_total_,
-                        {frame.extent.width, frame.extent.height}};
+        const Push push{
+            {1.0f / (scene_.view_half_height * aspect), -1.0f / scene_.view_half_height},
+            scene_.eye,
+            keys_.orthographic ? 1u : 0u,
+            uint32_t(scene_.objects.size()),
+            line_total_,
+            {frame.extent.width, frame.extent.height}};
         if (verify_ && frame.index == verify_frame_) verify(frame.slot, push);
 
         const VkCommandBuffer cmd = frame.cmd;
@@ -346,13 +310,10 @@ private:
     void write_poses(uint32_t slot) {
         auto* out = static_cast<float*>(poses_[slot].mapped);
         for (const nd::SceneObject& object : scene_.objects) {
-            nd::Transform t = object.at(spin_time_);
-            for (size_t p = 0; p < t.angles.size(); ++p) t.angles[p] += user_angles_[p];
-            for (int k = 0; k < n_; ++k) t.position[size_t(k)] += user_offset_[size_t(k)];
+            const nd::Transform t = keys_.pose(object, spin_time_);
             const nd::Matrix r = nd::rotation_matrix_by_rows(n_, t.angles);
             for (int row = 0; row < n_; ++row)
-                for (int col = 0; col < n_; ++col)
-                    *out++ = r(row, col) * t.scale[size_t(col)];
+                for (int col = 0; col < n_; ++col) *out++ = r(row, col) * t.scale[size_t(col)];
             for (int k = 0; k < n_; ++k) *out++ = t.position[size_t(k)];
         }
     }
@@ -363,8 +324,8 @@ private:
     // workgroups of 64, y over the objects.
     void record_transform(VkCommandBuffer cmd, uint32_t slot, const Push& push) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, transform_);
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &sets_[slot],
-                                0, nullptr);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &sets_[slot], 0,
+                                nullptr);
         vkCmdPushConstants(cmd, layout_, push_stages, 0, sizeof(Push), &push);
         vkCmdDispatch(cmd, uint32_t(vkt::dispatch_count(max_vertices_, group)),
                       uint32_t(scene_.objects.size()), 1);
@@ -401,16 +362,15 @@ private:
         const VkClearColorValue background{.uint32 = {background_, 0, 0, 0}};
         vkCmdClearColorImage(cmd, image_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &background,
                              1, &all);
-        vkt::image_barrier(cmd, image_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
-                           VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                           VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
-                               VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-        vkt::buffer_barrier(cmd, projected_[frame.slot].buffer,
-                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+        vkt::image_barrier(
+            cmd, image_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+            VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        vkt::buffer_barrier(
+            cmd, projected_[frame.slot].buffer, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+            VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
         // lanes_ invocations per line (raster.comp), the workgroups laid
         // out in rows of at most max_groups_x_.
         const uint64_t groups = vkt::dispatch_count(uint64_t(line_total_) * lanes_, group);
@@ -422,11 +382,10 @@ private:
         // two formats of the same size (R32_UINT and the 8-bit sRGB target),
         // with both images in their transfer layouts, then the target back
         // in the layout the runner expects after record().
-        vkt::image_barrier(cmd, image_.image, VK_IMAGE_LAYOUT_GENERAL,
-                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
-                           VK_ACCESS_2_TRANSFER_READ_BIT);
+        vkt::image_barrier(
+            cmd, image_.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+            VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
         vkt::image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_NONE,
@@ -436,27 +395,27 @@ private:
                                  .extent = {frame.extent.width, frame.extent.height, 1}};
         vkCmdCopyImage(cmd, image_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, frame.target,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        vkt::image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
-                           VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
-                               VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
+        vkt::image_barrier(
+            cmd, frame.target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
     }
     // [/compute-raster]
 
     // [verify]
     // --verify: run the transform pass alone on the last frame's poses, read
     // the projected vertices back and compare each with the CPU reference
-    // (vkt::ndim's per-plane transform_point and project_to_2d, a different
-    // path from the matrix the GPU uses). Throws above the tolerance.
+    // (scene_state.hpp: vkt::ndim's per-plane transform_point and
+    // project_to_2d, a different path from the matrix the GPU uses). Throws
+    // above the tolerance.
     void verify(uint32_t slot, const Push& push) {
         const VkDeviceSize bytes = vertex_total_ * sizeof(Projected);
-        vkt::Buffer host =
-            vkt::create_host_buffer(gpu_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+        vkt::Buffer host = vkt::create_host_buffer(gpu_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
         vkt::one_time_submit(gpu_, [&](VkCommandBuffer cmd) {
             record_transform(cmd, slot, push);
-            vkt::buffer_barrier(cmd, projected_[slot].buffer, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+            vkt::buffer_barrier(cmd, projected_[slot].buffer,
+                                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                                 VK_ACCESS_2_TRANSFER_READ_BIT);
             const VkBufferCopy region{0, 0, bytes};
@@ -465,77 +424,28 @@ private:
                                 VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
                                 VK_ACCESS_2_HOST_READ_BIT);
         });
-        const auto* gpu = static_cast<const Projected*>(host.mapped);
-        std::vector<float> world(static_cast<size_t>(n_));
-        double position_error = 0.0, depth_error = 0.0;
-        size_t hidden = 0, mismatched = 0, v = 0;
-        const auto kind = orthographic_ ? nd::Projection::orthographic : nd::Projection::perspective;
-        for (const nd::SceneObject& object : scene_.objects) {
-            nd::Transform t = object.at(spin_time_);
-            for (size_t p = 0; p < t.angles.size(); ++p) t.angles[p] += user_angles_[p];
-            for (int k = 0; k < n_; ++k) t.position[size_t(k)] += user_offset_[size_t(k)];
-            const nd::Mesh& mesh = scene_.meshes[size_t(object.mesh)];
-            for (size_t i = 0; i < mesh.vertex_count(); ++i, ++v) {
-                nd::transform_point(t, mesh.vertex(i), world);
-                float xy[2];
-                const bool visible = nd::project_to_2d(world, kind, scene_.eye, xy);
-                const double depth = (world.back() - t.position.back()) / mesh.radius();
-                depth_error = std::max(depth_error, std::abs(depth - gpu[v].depth));
-                if (visible != (gpu[v].colour >> 24 != 0)) ++mismatched;
-                if (!visible) {
-                    ++hidden;
-                    continue;
-                }
-                position_error = std::max({position_error,
-                                           std::abs(double(xy[0] * push.to_clip[0]) - gpu[v].x),
-                                           std::abs(double(xy[1] * push.to_clip[1]) - gpu[v].y)});
-            }
-        }
+        const ch20::Comparison c = ch20::compare_with_cpu(
+            scene_, keys_, spin_time_, push, static_cast<const Projected*>(host.mapped));
         constexpr double tolerance = 1e-4;  // clip units: 0.1 pixel across 1920
         std::fprintf(stderr,
                      "20_ndim_compute: verify: %zu vertices (%zu behind the eye), largest "
                      "difference from the CPU: position %.3g (clip units), depth %.3g; "
                      "tolerance %g, %zu visibility mismatches\n",
-                     v, hidden, position_error, depth_error, tolerance, mismatched);
-        if (!(position_error <= tolerance && depth_error <= tolerance) || mismatched != 0)
+                     c.vertices, c.hidden, c.position, c.depth, tolerance, c.mismatched);
+        if (!(c.position <= tolerance && c.depth <= tolerance) || c.mismatched != 0)
             throw std::runtime_error("verify: the GPU's projected vertices differ from the CPU's");
     }
     // [/verify]
 
-    // [controls]
-    // The keys of chapter 18: 1..9, 0 turn the planes of the current page,
-    // [ and ] change the page, F1..F12 move along the axes, Shift reverses,
-    // Space pauses, O switches the projection, R resets.
-    void steer(const vkt::Input& input, float dt) {
-        const float sign = input.shift() ? -1.0f : 1.0f;
-        const int planes = nd::plane_count(n_), pages = (planes + 9) / 10;
-        if (input.went_down(key_right_bracket) || input.went_down(key_left_bracket))
-            page_ = (page_ + (input.went_down(key_right_bracket) ? 1 : pages - 1)) % pages;
-        for (int key = 0; key < 10; ++key) {
-            const int plane = page_ * 10 + key, code = key == 9 ? key_0 : key_1 + key;
-            if (plane < planes && input.down(code)) user_angles_[size_t(plane)] += sign * dt;
-        }
-        for (int axis = 0; axis < std::min(n_, 12); ++axis)
-            if (input.down(key_f1 + axis)) user_offset_[size_t(axis)] += sign * 1.5f * dt;
-        if (input.went_down(vkt::key::space)) paused_ = !paused_;
-        if (input.went_down(key_o)) orthographic_ = !orthographic_;
-        if (input.went_down(key_r)) {
-            std::fill(user_angles_.begin(), user_angles_.end(), 0.0f);
-            std::fill(user_offset_.begin(), user_offset_.end(), 0.0f);
-        }
-    }
-    // [/controls]
-
     vkt::Gpu gpu_;
     VkDevice device_;
     int n_ = 4;
-    bool still_ = false, orthographic_ = false, compute_raster_ = false, paused_ = false;
+    bool still_ = false, compute_raster_ = false;
     bool verify_ = false, benchmark_ = false;
     std::vector<double> cpu_ms_;
     uint64_t verify_frame_ = 0;
     nd::Scene scene_;
-    std::vector<float> user_angles_, user_offset_;
-    int page_ = 0;
+    ch20::Keys keys_{4, false};  // what the keys changed (scene_state.hpp)
     double last_time_ = 0.0;
     float spin_time_ = 0.0f;
     uint32_t vertex_total_ = 0, line_total_ = 0, max_vertices_ = 0;
@@ -550,7 +460,7 @@ private:
     vkt::Pipeline transform_, lines_, raster_;
     uint32_t max_groups_x_ = 65535;  // maxComputeWorkGroupCount[0]
     int lanes_ = 1;                  // raster.comp's LANES
-    uint32_t background_ = 0;  // --raster compute: the clear value, as the target stores it
+    uint32_t background_ = 0;        // --raster compute: the clear value, as the target stores it
 };
 
 }  // namespace
