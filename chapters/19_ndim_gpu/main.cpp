@@ -194,6 +194,24 @@ public:
                       .color_formats = {context.color_format},
                       .vertex_specialization = &specialization});
         // [/pipeline]
+        // --benchmark: how many times the vertex shader ran per frame (a
+        // pipeline statistics query, one per frame in flight), which shows
+        // how many shaded vertices the post-transform cache reused.
+        if (benchmark_ && context.features.has(VKT_FEATURE_10(pipelineStatisticsQuery))) {
+            const VkQueryPoolCreateInfo info{
+                .sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO,
+                .queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS,
+                .queryCount = context.frames_in_flight,
+                .pipelineStatistics = VK_QUERY_PIPELINE_STATISTIC_VERTEX_SHADER_INVOCATIONS_BIT,
+            };
+            VkQueryPool pool = VK_NULL_HANDLE;
+            VKT_CHECK(vkCreateQueryPool(device_, &info, nullptr, &pool));
+            statistics_ = vkt::QueryPool(device_, pool);
+            statistics_issued_.assign(context.frames_in_flight, false);
+            index_count_ = 0;
+            for (const nd::SceneObject& object : scene_.objects)
+                index_count_ += meshes_[size_t(object.mesh)].index_count;
+        }
         if (verify_) {
             // The capture pass draws nothing: no fragment shader, no target.
             vkt::ShaderModule capture = vkt::load_shader(device_, context.chapter, "capture.vert");
@@ -211,6 +229,13 @@ public:
         if (benchmark_)
             std::fprintf(stderr, "19_ndim_gpu: CPU transforms and draws per frame, ms: %s\n",
                          vkt::json_summary(cpu_ms_).c_str());
+        if (!invocations_.empty())
+            std::fprintf(stderr,
+                         "19_ndim_gpu: vertex shader invocations per frame: %s, for %llu indices "
+                         "and %llu vertices\n",
+                         vkt::json_summary(invocations_).c_str(),
+                         static_cast<unsigned long long>(index_count_),
+                         static_cast<unsigned long long>(object_vertices()));
     }
 
     void record(const vkt::Frame& frame) override {
@@ -230,6 +255,16 @@ public:
         }
         // [/write-transforms]
         if (verify_ && frame.index == verify_frame_) verify(frame);
+        if (statistics_) {
+            // This slot's fence has been waited for: its last count is ready.
+            if (statistics_issued_[frame.slot]) {
+                uint64_t count = 0;
+                VKT_CHECK(vkGetQueryPoolResults(device_, statistics_, frame.slot, 1, sizeof(count),
+                                                &count, sizeof(count), VK_QUERY_RESULT_64_BIT));
+                invocations_.push_back(double(count));
+            }
+            vkCmdResetQueryPool(frame.cmd, statistics_, frame.slot, 1);
+        }
 
         VkRenderingAttachmentInfo colour{
             .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
@@ -251,7 +286,12 @@ public:
             // The transform happens inside the draws, in the vertex shader:
             // one scope times transform and rasterisation together.
             auto scope = frame.gpu_scope("raster");
+            if (statistics_) vkCmdBeginQuery(frame.cmd, statistics_, frame.slot, 0);
             draw_objects(frame.cmd, frame.slot, frame.extent, pipeline_);
+            if (statistics_) {
+                vkCmdEndQuery(frame.cmd, statistics_, frame.slot);
+                statistics_issued_[frame.slot] = true;
+            }
         }
         vkCmdEndRendering(frame.cmd);
         if (benchmark_)
@@ -267,6 +307,13 @@ private:
         uint32_t vertex_count;
         float inverse_radius;
     };
+
+    size_t object_vertices() const {
+        size_t count = 0;
+        for (const nd::SceneObject& object : scene_.objects)
+            count += meshes_[size_t(object.mesh)].vertex_count;
+        return count;
+    }
 
     // Object o's transform this frame: its spin so far and what the keys did.
     nd::Transform pose(size_t o) const {
@@ -449,6 +496,10 @@ private:
     std::vector<VkDescriptorSet> sets_;
     vkt::PipelineLayout layout_;
     vkt::Pipeline pipeline_, capture_pipeline_;
+    vkt::QueryPool statistics_;
+    std::vector<bool> statistics_issued_;
+    std::vector<double> invocations_;
+    uint64_t index_count_ = 0;
 };
 
 }  // namespace
@@ -458,9 +509,11 @@ int main(int argc, char** argv) {
     vkt::ChapterSpec spec{
         .name = "19_ndim_gpu", .title = "19 - ndim_gpu", .input = vkt::InputUse::keys};
     // A clipped vertex cuts its lines away with a clip distance; --verify
-    // writes from the vertex shader when the device allows it.
+    // writes from the vertex shader when the device allows it; --benchmark
+    // counts vertex shader invocations where the device can.
     spec.requirements.features = {VKT_FEATURE_10(shaderClipDistance)};
-    spec.requirements.optional_features = {VKT_FEATURE_10(vertexPipelineStoresAndAtomics)};
+    spec.requirements.optional_features = {VKT_FEATURE_10(vertexPipelineStoresAndAtomics),
+                                           VKT_FEATURE_10(pipelineStatisticsQuery)};
     spec.options = {
         {.name = "--scene",
          .type = vkt::OptionType::choice,

@@ -96,6 +96,13 @@ if(XVFB_RUN AND XDOTOOL AND OPENBOX)
     ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS "chapter;window")
 endif()
 
+# --benchmark also counts the vertex shader's invocations (a pipeline
+# statistics query) against the indices and vertices drawn.
+vkt_chapter_test(chapter.19_ndim_gpu.benchmark 19_ndim_gpu
+  ARGS --headless --validation --frames 4 --size ${VKT_TEST_SIZE} --benchmark --scene cube --dim 8
+  EXPECT "\"gpu_scopes_ms\": \\{\"raster\": \\{\"min\": [0-9.]+"
+         "vertex shader invocations per frame: \\{\"min\": [0-9.]+.*, for 2048 indices and 256 vertices")
+
 vkt_chapter_test(chapter.19_ndim_gpu.help 19_ndim_gpu EXIT 0 ARGS --help
   EXPECT "usage: 19_ndim_gpu" "--scene default\\|cube\\|many" "--dim N" "--verify CHECK")
 
