@@ -43,12 +43,18 @@ benchmarks/run.sh "$bin" 2000 1280x720 | tee "$out/benchmarks.jsonl"
 sweep() {
   local name=$1; shift
   echo "== $name: $*"
-  timeout 240 "$@" >"$out/sweep.$name.txt" 2>&1
+  timeout "${SWEEP_SECONDS:-300}" "$@" >"$out/sweep.$name.txt" 2>&1
   echo "exit $?"
   cat "$out/sweep.$name.txt"
 }
 [ -x "$bin/13_compute" ] && sweep 13_compute scripts/bench-13.sh "$bin/13_compute" 100
 [ -x "$bin/15_bindless" ] && sweep 15_bindless benchmarks/15_bindless.sh "$bin" 200
-[ -x "$bin/16_deferred" ] && sweep 16_deferred scripts/bench-lights.sh "$bin/16_deferred" --size 1920x1080 --frames 20
+if [ -x "$bin/17_tiled_deferred" ]; then
+  sweep lights scripts/bench-lights.sh "$bin/16_deferred" --tiled "$bin/17_tiled_deferred" --size 1920x1080 --frames 10
+elif [ -x "$bin/16_deferred" ]; then
+  sweep lights scripts/bench-lights.sh "$bin/16_deferred" --size 1920x1080 --frames 20
+fi
 [ -x "$bin/18_ndim_cpu" ] && sweep 18_ndim_cpu benchmarks/18_ndim_cpu.sh "$bin"
+[ -x "$bin/19_ndim_gpu" ] && sweep 19_ndim_gpu benchmarks/19_ndim_gpu.sh "$bin" 1 offscreen
+[ -x "$bin/20_ndim_compute" ] && sweep 20_ndim_compute benchmarks/20_ndim_compute.sh "$bin" 1 offscreen
 exit $status
