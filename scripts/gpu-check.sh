@@ -36,12 +36,16 @@ if [ -x "$bin/16_deferred" ]; then
     [ $rc -eq 0 ] || status=1
   done
 fi
-echo "benchmarks (1280x720, 2000 frames, validation off):"
-benchmarks/run.sh "$bin" 2000 1280x720 | tee "$out/benchmarks.jsonl"
+frames=${BENCH_FRAMES:-2000}
+echo "benchmarks (1280x720, $frames frames, validation off):"
+benchmarks/run.sh "$bin" "$frames" 1280x720 | tee "$out/benchmarks.jsonl"
 # The chapters' own sweeps (each explained in benchmarks/NN_name.md), bounded
 # so that one slow sweep cannot eat the others' time.
+# SWEEPS="13_compute lights" runs only those (a device run is limited to 10
+# minutes: split the work over two runs if needed); SWEEPS=none runs none.
 sweep() {
   local name=$1; shift
+  case " ${SWEEPS:-all} " in *" all "*|*" $name "*) ;; *) return 0 ;; esac
   echo "== $name: $*"
   timeout "${SWEEP_SECONDS:-300}" "$@" >"$out/sweep.$name.txt" 2>&1
   echo "exit $?"
