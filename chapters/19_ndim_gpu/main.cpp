@@ -229,6 +229,15 @@ public:
         if (benchmark_)
             std::fprintf(stderr, "19_ndim_gpu: CPU transforms and draws per frame, ms: %s\n",
                          vkt::json_summary(cpu_ms_).c_str());
+        // The runner has waited for the device: the last count of each slot
+        // is ready too.
+        for (size_t slot = 0; slot < statistics_issued_.size(); ++slot) {
+            uint64_t count = 0;
+            if (statistics_issued_[slot] &&
+                vkGetQueryPoolResults(device_, statistics_, uint32_t(slot), 1, sizeof(count), &count,
+                                      sizeof(count), VK_QUERY_RESULT_64_BIT) == VK_SUCCESS)
+                invocations_.push_back(double(count));
+        }
         if (!invocations_.empty())
             std::fprintf(stderr,
                          "19_ndim_gpu: vertex shader invocations per frame: %s, for %llu indices "
