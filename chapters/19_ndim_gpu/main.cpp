@@ -11,6 +11,7 @@
 // --verify cpu captures the projected vertices in a storage buffer and checks
 // them against the CPU.
 
+#include "controls.hpp"
 #include "vkt/compute.hpp"
 #include "vkt/descriptors.hpp"
 #include "vkt/ndim.hpp"
@@ -53,10 +54,6 @@ static_assert(sizeof(Push) == 28);
 // pixel at 1080 rows.
 constexpr double verify_tolerance = 1e-4;
 
-// GLFW key codes for the controls (vkt/input.hpp has the common ones).
-constexpr int key_0 = 48, key_1 = 49, key_o = 79, key_r = 82, key_left_bracket = 91,
-              key_right_bracket = 93, key_f1 = 290;
-
 class NdimGpu : public vkt::Renderer {
 public:
     explicit NdimGpu(const vkt::Context& context) : gpu_(context.gpu()), device_(context.device) {
@@ -67,9 +64,10 @@ public:
                                      ": the default scene is 4-dimensional; use --scene cube or "
                                      "--scene many to choose n");
         n_ = options.has("--dim") ? int(options.integer("--dim")) : 4;
+        controls_ = ch19::Controls(n_, options.text("--projection") == "orthographic"
+                                           ? nd::Projection::orthographic
+                                           : nd::Projection::perspective);
         still_ = options.text("--motion") == "still";
-        projection_ = options.text("--projection") == "orthographic" ? nd::Projection::orthographic
-                                                                     : nd::Projection::perspective;
         verify_ = options.has("--verify");
         verify_frame_ = options.frames.value_or(1) - 1;
         if (verify_ && !context.features.has(VKT_FEATURE_10(vertexPipelineStoresAndAtomics)))
@@ -81,8 +79,6 @@ public:
         // --eye moves the eye nearer than the scene's safe distance, so that
         // vertices reach it and are clipped (the tests use it).
         if (options.has("--eye")) scene_.eye = float(options.number("--eye"));
-        user_angles_.assign(size_t(nd::plane_count(n_)), 0.0f);
-        user_offset_.assign(size_t(n_), 0.0f);
 
         // [meshes]
         // Every mesh once, for the whole run: all vertices in one storage
@@ -111,9 +107,9 @@ public:
         vertex_count_ = uint32_t(coords.size() / size_t(n_));
         vertices_ = vkt::create_device_buffer(gpu_, coords.data(), coords.size() * sizeof(float),
                                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-        indices_ = vkt::create_device_buffer(gpu_, indices.data(),
-                                             indices.size() * sizeof(uint32_t),
-                                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+        indices_ =
+            vkt::create_device_buffer(gpu_, indices.data(), indices.size() * sizeof(uint32_t),
+                                      VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
         // [/meshes]
 
         // [transform-buffers]
@@ -124,18 +120,19 @@ public:
         const VkDeviceSize transform_bytes =
             scene_.objects.size() * floats_per_object_ * sizeof(float);
         for (uint32_t i = 0; i < context.frames_in_flight; ++i)
-            transforms_.push_back(vkt::create_host_buffer(gpu_, transform_bytes,
-                                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+            transforms_.push_back(
+                vkt::create_host_buffer(gpu_, transform_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
         // [/transform-buffers]
         if (verify_)  // one vec4 per vertex of the pool per object: see capture.vert
             capture_ = vkt::create_host_buffer(
                 gpu_, VkDeviceSize(scene_.objects.size()) * vertex_count_ * 4 * sizeof(float),
                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-        std::fprintf(stderr,
-                     "19_ndim_gpu: %s scene, n = %d, %zu objects, %zu lines per frame, eye at %.3g; "
-                     "%u vertices and %zu indices on the GPU, %llu bytes of transforms per frame\n",
-                     scene.c_str(), n_, scene_.objects.size(), scene_.line_count(), scene_.eye,
-                     vertex_count_, indices.size(), static_cast<unsigned long long>(transform_bytes));
+        std::fprintf(
+            stderr,
+            "19_ndim_gpu: %s scene, n = %d, %zu objects, %zu lines per frame, eye at %.3g; "
+            "%u vertices and %zu indices on the GPU, %llu bytes of transforms per frame\n",
+            scene.c_str(), n_, scene_.objects.size(), scene_.line_count(), scene_.eye,
+            vertex_count_, indices.size(), static_cast<unsigned long long>(transform_bytes));
 
         // [descriptors]
         // Set 0: binding 0 the vertices, 1 this frame's transforms, 2 the
@@ -171,8 +168,7 @@ public:
         // of `data`. The driver compiles the pipeline with N = n, as if the
         // shader had been written for that n alone.
         const int32_t dimension = n_;
-        const VkSpecializationMapEntry entry{
-            .constantID = 0, .offset = 0, .size = sizeof(int32_t)};
+        const VkSpecializationMapEntry entry{.constantID = 0, .offset = 0, .size = sizeof(int32_t)};
         const VkSpecializationInfo specialization{
             .mapEntryCount = 1,
             .pMapEntries = &entry,
@@ -186,13 +182,13 @@ public:
         // LINE_LIST: indices 2k and 2k+1 make line k.
         vkt::ShaderModule vertex = vkt::load_shader(device_, context.chapter, "lines.vert");
         vkt::ShaderModule fragment = vkt::load_shader(device_, context.chapter, "lines.frag");
-        pipeline_ = vkt::create_graphics_pipeline(
-            device_, {.vertex = vertex,
-                      .fragment = fragment,
-                      .layout = layout_,
-                      .topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST,
-                      .color_formats = {context.color_format},
-                      .vertex_specialization = &specialization});
+        pipeline_ =
+            vkt::create_graphics_pipeline(device_, {.vertex = vertex,
+                                                    .fragment = fragment,
+                                                    .layout = layout_,
+                                                    .topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST,
+                                                    .color_formats = {context.color_format},
+                                                    .vertex_specialization = &specialization});
         // [/pipeline]
         // --benchmark: how many times the vertex shader ran per frame (a
         // pipeline statistics query, one per frame in flight), which shows
@@ -215,11 +211,11 @@ public:
         if (verify_) {
             // The capture pass draws nothing: no fragment shader, no target.
             vkt::ShaderModule capture = vkt::load_shader(device_, context.chapter, "capture.vert");
-            capture_pipeline_ = vkt::create_graphics_pipeline(
-                device_, {.vertex = capture,
-                          .layout = layout_,
-                          .topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST,
-                          .vertex_specialization = &specialization});
+            capture_pipeline_ =
+                vkt::create_graphics_pipeline(device_, {.vertex = capture,
+                                                        .layout = layout_,
+                                                        .topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST,
+                                                        .vertex_specialization = &specialization});
         }
     }
 
@@ -234,8 +230,8 @@ public:
         for (size_t slot = 0; slot < statistics_issued_.size(); ++slot) {
             uint64_t count = 0;
             if (statistics_issued_[slot] &&
-                vkGetQueryPoolResults(device_, statistics_, uint32_t(slot), 1, sizeof(count), &count,
-                                      sizeof(count), VK_QUERY_RESULT_64_BIT) == VK_SUCCESS)
+                vkGetQueryPoolResults(device_, statistics_, uint32_t(slot), 1, sizeof(count),
+                                      &count, sizeof(count), VK_QUERY_RESULT_64_BIT) == VK_SUCCESS)
                 invocations_.push_back(double(count));
         }
         if (!invocations_.empty())
@@ -250,8 +246,8 @@ public:
     void record(const vkt::Frame& frame) override {
         const float dt = float(frame.time - last_time_);
         last_time_ = frame.time;
-        steer(frame.input, dt);
-        if (!still_ && !paused_) spin_time_ += dt;
+        controls_.steer(frame.input, dt);
+        if (!still_ && !controls_.paused) spin_time_ += dt;
         const auto cpu_start = std::chrono::steady_clock::now();
 
         // [write-transforms]
@@ -327,20 +323,20 @@ private:
     // Object o's transform this frame: its spin so far and what the keys did.
     nd::Transform pose(size_t o) const {
         nd::Transform t = scene_.objects[o].at(spin_time_);
-        for (size_t p = 0; p < t.angles.size(); ++p) t.angles[p] += user_angles_[p];
-        for (int k = 0; k < n_; ++k) t.position[size_t(k)] += user_offset_[size_t(k)];
+        for (size_t p = 0; p < t.angles.size(); ++p) t.angles[p] += controls_.angles[p];
+        for (int k = 0; k < n_; ++k) t.position[size_t(k)] += controls_.offset[size_t(k)];
         return t;
     }
 
     Push frame_push(VkExtent2D extent) const {
         const float aspect = float(extent.width) / float(extent.height);
-        return {.to_clip = {1.0f / (scene_.view_half_height * aspect),
-                            -1.0f / scene_.view_half_height},
-                .eye = scene_.eye,
-                .orthographic = projection_ == nd::Projection::orthographic ? 1 : 0,
-                .vertex_count = int32_t(vertex_count_),
-                .inverse_radius = 1.0f,
-                .object = 0};
+        return {
+            .to_clip = {1.0f / (scene_.view_half_height * aspect), -1.0f / scene_.view_half_height},
+            .eye = scene_.eye,
+            .orthographic = controls_.projection == nd::Projection::orthographic ? 1 : 0,
+            .vertex_count = int32_t(vertex_count_),
+            .inverse_radius = 1.0f,
+            .object = 0};
     }
 
     // [draw]
@@ -402,9 +398,10 @@ private:
                 }
                 float by_plane[2] = {0, 0}, by_matrix[2] = {0, 0};
                 nd::transform_point(t, mesh.vertex(v), world);
-                const bool visible = nd::project_to_2d(world, projection_, scene_.eye, by_plane);
+                const bool visible =
+                    nd::project_to_2d(world, controls_.projection, scene_.eye, by_plane);
                 nd::transform_point(model, mesh.vertex(v), world);
-                nd::project_to_2d(world, projection_, scene_.eye, by_matrix);
+                nd::project_to_2d(world, controls_.projection, scene_.eye, by_matrix);
                 ++checked;
                 if (visible != (gpu[2] == 1.0f)) ++mismatched;
                 if (!visible) {
@@ -417,8 +414,10 @@ private:
                 for (int c = 0; c < 2; ++c) {
                     const double g = gpu[c], p = by_plane[c] * push.to_clip[c],
                                  m = by_matrix[c] * push.to_clip[c];
-                    plane_error = std::max(plane_error, std::abs(g - p) / std::max(1.0, std::abs(p)));
-                    matrix_error = std::max(matrix_error, std::abs(g - m) / std::max(1.0, std::abs(m)));
+                    plane_error =
+                        std::max(plane_error, std::abs(g - p) / std::max(1.0, std::abs(p)));
+                    matrix_error =
+                        std::max(matrix_error, std::abs(g - m) / std::max(1.0, std::abs(m)));
                 }
             }
         }
@@ -434,68 +433,17 @@ private:
     }
     // [/verify]
 
-    // Chapter 18's keys: 1..9, 0 turn the ten planes of the current page,
-    // [ and ] change the page, F1..F12 move along axes 0..11, Shift
-    // reverses, Space pauses the spin, O switches the projection, R resets.
-    void steer(const vkt::Input& input, float dt) {
-        const float sign = input.shift() ? -1.0f : 1.0f;
-        const char* backwards = input.shift() ? " backwards" : "";
-        const int planes = nd::plane_count(n_), pages = (planes + 9) / 10;
-        if (input.went_down(key_right_bracket) || input.went_down(key_left_bracket)) {
-            page_ = (page_ + (input.went_down(key_right_bracket) ? 1 : pages - 1)) % pages;
-            const auto [i, j] = nd::plane_axes(n_, page_ * 10);
-            std::fprintf(stderr, "19_ndim_gpu: keys 1..0 turn planes %d.. from (%d,%d)\n",
-                         page_ * 10 + 1, i, j);
-        }
-        for (int key = 0; key < 10; ++key) {
-            const int plane = page_ * 10 + key, code = key == 9 ? key_0 : key_1 + key;
-            if (plane >= planes || !input.down(code)) continue;
-            user_angles_[size_t(plane)] += sign * 1.0f * dt;  // 1 radian per second
-            if (input.went_down(code)) {
-                const auto [i, j] = nd::plane_axes(n_, plane);
-                std::fprintf(stderr, "19_ndim_gpu: turning in plane (%d,%d)%s\n", i, j, backwards);
-            }
-        }
-        for (int axis = 0; axis < std::min(n_, 12); ++axis) {
-            if (!input.down(key_f1 + axis)) continue;
-            user_offset_[size_t(axis)] += sign * 1.5f * dt;  // 1.5 units per second
-            if (input.went_down(key_f1 + axis))
-                std::fprintf(stderr, "19_ndim_gpu: moving along axis %d%s\n", axis, backwards);
-        }
-        if (input.went_down(vkt::key::space)) {
-            paused_ = !paused_;
-            std::fprintf(stderr, "19_ndim_gpu: spin %s\n", paused_ ? "paused" : "resumed");
-        }
-        if (input.went_down(key_o)) {
-            const bool ortho = projection_ == nd::Projection::perspective;
-            projection_ = ortho ? nd::Projection::orthographic : nd::Projection::perspective;
-            std::fprintf(stderr, "19_ndim_gpu: %s projection\n",
-                         ortho ? "orthographic" : "perspective");
-        }
-        if (input.went_down(key_r)) {
-            const auto moved = [](const std::vector<float>& v) {
-                return std::count_if(v.begin(), v.end(), [](float x) { return x != 0.0f; });
-            };
-            std::fprintf(stderr, "19_ndim_gpu: reset %td turned planes and %td moved axes\n",
-                         moved(user_angles_), moved(user_offset_));
-            std::fill(user_angles_.begin(), user_angles_.end(), 0.0f);
-            std::fill(user_offset_.begin(), user_offset_.end(), 0.0f);
-        }
-    }
-
     vkt::Gpu gpu_;
     VkDevice device_;
     int n_ = 4;
-    bool still_ = false, paused_ = false, benchmark_ = false, verify_ = false;
+    ch19::Controls controls_{4, nd::Projection::perspective};  // the keys (controls.hpp)
+    bool still_ = false, benchmark_ = false, verify_ = false;
     uint64_t verify_frame_ = 0;
     std::vector<double> cpu_ms_;
-    nd::Projection projection_ = nd::Projection::perspective;
     nd::Scene scene_;
     std::vector<MeshRange> meshes_;
     uint32_t vertex_count_ = 0;
     size_t floats_per_object_ = 0;
-    std::vector<float> user_angles_, user_offset_;
-    int page_ = 0;
     double last_time_ = 0.0;
     float spin_time_ = 0.0f;
     vkt::Buffer vertices_, indices_, capture_;
@@ -551,13 +499,15 @@ int main(int argc, char** argv) {
          .choices = {"spin", "still"}},
         {.name = "--edge-order",
          .type = vkt::OptionType::choice,
-         .help = "the index buffer's edges by vertex (reused shading) or by axis (chapter 18's order)",
+         .help =
+             "the index buffer's edges by vertex (reused shading) or by axis (chapter 18's order)",
          .default_value = "vertex",
          .choices = {"vertex", "axis"}},
         {.name = "--eye",
          .type = vkt::OptionType::number,
          .value_name = "D",
-         .help = "the eye distance on each last axis (default: the scene's, far enough for no clipping)",
+         .help = "the eye distance on each last axis (default: the scene's, far enough for no "
+                 "clipping)",
          .min = 0.1,
          .max = 1000},
         {.name = "--verify",
