@@ -14,7 +14,8 @@ by the runner's JSON line. x: n (4, 8, 12, linear); y: the median frame time
 (cpu_frame_ms, the runner's clock around a whole frame) in milliseconds, log
 scale. Lines: chapter 18 (red), 19 (green), 20 with graphics lines (orange),
 20 with the compute rasteriser (blue); thick for 250 n-cubes, thin with
-hollow points for one. Runs with other options (--matrix rows) are left out.
+hollow points for one. Runs with other options (18's --matrix, 19's
+--edge-order) are left out.
 Grid lines at powers of ten and at each n; no text (the book page says what
 the axes are), so no font is needed.
 """
@@ -49,8 +50,10 @@ def read_runs(sources):
                 continue
             args, header = header, None
             chapter = args[0][:2]
-            if chapter not in ("18", "19", "20") or "--matrix" in args or "--dim" not in args:
-                continue
+            options = {a for a in args[1:] if a.startswith("--")}
+            if chapter not in ("18", "19", "20") or "--dim" not in args or \
+                    options - {"--scene", "--dim", "--raster", "--frames"}:
+                continue  # the empty frame, the default scene, other options
             scene, n = args[args.index("--scene") + 1], int(args[args.index("--dim") + 1])
             series = chapter
             if chapter == "20":
