@@ -5,7 +5,8 @@
 # hundred runs is a broken test.
 #
 #   scripts/repeat-tests.sh LABEL COUNT [--load]
-#     LABEL   a CTest label (window, chapter, unit, book) or "all"
+#     LABEL   a CTest label (window, chapter, unit, book), "all", or
+#             regex:REGEX for the tests whose names match REGEX
 #     COUNT   how many times to run them
 #     --load  keep every core busy meanwhile (stress-ng --cpu N, N = cores)
 #
@@ -23,6 +24,7 @@ mkdir -p "$logs"
 
 select=(-L "$label")
 [ "$label" = all ] && select=()
+case $label in regex:*) select=(-R "${label#regex:}") ;; esac
 
 stress=""
 if [ "$load" = --load ]; then
@@ -36,7 +38,7 @@ failures=0
 tests_per_run=0
 start=$(date +%s.%N)
 for run in $(seq "$count"); do
-  log="$logs/$label.$run.log"
+  log="$logs/${label//[^A-Za-z0-9_.-]/_}.$run.log"
   if ctest --preset release "${select[@]}" >"$log" 2>&1; then
     rm -f "$log"
   else
