@@ -84,8 +84,15 @@ public:
         check_extensions();
         load_materials();
         walk_nodes();
-        if (scene_.draws.empty())
-            fail("nothing to draw: no node of the scene has a mesh with triangles");
+        if (scene_.draws.empty()) {
+            // Say why: what was skipped is often the reason nothing is left
+            // (a sparse accessor, points or lines), and the warnings would
+            // otherwise never be printed.
+            std::string why = "nothing to draw: no node of the scene has a mesh with triangles";
+            for (size_t i = 0; i < scene_.warnings.size(); ++i)
+                why += (i == 0 ? " (" : "; ") + scene_.warnings[i];
+            fail(scene_.warnings.empty() ? why : why + ")");
+        }
         compute_bounds();
         return std::move(scene_);
     }

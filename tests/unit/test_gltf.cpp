@@ -206,8 +206,33 @@ TEST_CASE("gltf: strips and fans become triangle lists with the same winding", "
     CHECK(fan.vertices[3].position == glm::vec3(0, 0, 0));
     CHECK(fan.vertices[5].position == glm::vec3(1, 1, 0));
     // Points are skipped, and then nothing is left to draw.
+    // The error says why: what was skipped (found on real files, where the
+    // warnings were never printed because the load failed).
     CHECK_THAT(error_of(write_file("points.gltf", fill(base, {{"$MODE", "0"}}))),
-               ContainsSubstring("points.gltf: nothing to draw"));
+               ContainsSubstring("points.gltf: nothing to draw: no node of the scene has a mesh "
+                                 "with triangles (points and lines are not supported"));
+}
+
+TEST_CASE("gltf: a file whose only primitive is sparse names sparse accessors", "[gltf]") {
+    // Like Khronos' SimpleSparseAccessor: the one POSITION accessor is sparse
+    // (one vertex replaced), so its primitive is skipped and nothing is left.
+    Bin bin;
+    bin.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0});  // 36 bytes: the base
+    bin.add(std::vector<uint16_t>{2, 0});                     // 4 bytes: sparse index 2 (+ pad)
+    bin.add(std::vector<float>{0, 2, 0});                     // 12 bytes: its new value
+    const std::string text = fill(R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 0}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+        "sparse": {"count": 1, "indices": {"bufferView": 1, "componentType": 5123},
+                   "values": {"bufferView": 2}}}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 2},
+                      {"buffer": 0, "byteOffset": 40, "byteLength": 12}],
+      "buffers": [{"byteLength": 52, "uri": "$URI"}]})",
+                                  {{"$URI", data_uri(bin.bytes)}});
+    CHECK_THAT(error_of(write_file("sparse.gltf", text)),
+               ContainsSubstring("sparse.gltf: nothing to draw: no node of the scene has a mesh with "
+                                 "triangles (sparse accessors are not supported: primitives using "
+                                 "one are skipped)"));
 }
 
 TEST_CASE("gltf: interleaved vertices (byteStride) and offsets (bufferView and accessor)",

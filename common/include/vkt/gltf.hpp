@@ -21,7 +21,8 @@
 // properties, every extension in extensionsUsed, samplers (every texture is
 // drawn with a linear, repeating sampler). Refused with one clear line:
 // anything out of bounds, a type glTF does not allow, an undecodable image,
-// an extension in extensionsRequired, a scene with nothing to draw.
+// an extension in extensionsRequired, a scene with nothing to draw (the
+// line then lists what was skipped, which is usually why).
 
 #include "vkt/image_io.hpp"
 
