@@ -194,11 +194,9 @@ private:
         std::vector<float> out;
         if (a.count > (size_t(1) << 28)) fail(name + ": count " + std::to_string(a.count) + " is too large");
         out.assign(a.count * size_t(components), 0.0f);
-        if (a.bufferView < 0) return out;  // no view: all zeros, as glTF says
-        std::span<const uint8_t> bytes = element_range(a, name, size_t(components * component_size));
-        const size_t stride = stride_of(a, size_t(components * component_size));
-        for (size_t i = 0; i < a.count; ++i) {
-            const uint8_t* element = bytes.data() + a.byteOffset + i * stride;
+        const size_t element_size = size_t(components * component_size);
+        // One element's components, from `element`, into out[i].
+        auto decode = [&](const uint8_t* element, size_t i) {
             for (int c = 0; c < components; ++c) {
                 const uint8_t* p = element + c * component_size;
                 float v = 0;
@@ -215,8 +213,60 @@ private:
                 }
                 out[i * size_t(components) + size_t(c)] = v;
             }
+        };
+        if (a.bufferView >= 0) {  // no view: all zeros, as glTF says
+            std::span<const uint8_t> bytes = element_range(a, name, element_size);
+            const size_t stride = stride_of(a, element_size);
+            for (size_t i = 0; i < a.count; ++i) decode(bytes.data() + a.byteOffset + i * stride, i);
         }
+        if (a.sparse.isSparse) apply_sparse(a, name, element_size, decode);
         return out;
+    }
+
+    // A sparse accessor replaces some of its elements: `count` indices (which
+    // elements) and as many values, each tightly packed in its own view.
+    template <typename Decode>
+    void apply_sparse(const tinygltf::Accessor& a, const std::string& name, size_t element_size,
+                      Decode& decode) const {
+        const auto& sparse = a.sparse;
+        const std::string what = name + " (sparse)";
+        if (sparse.count < 1 || size_t(sparse.count) > a.count)
+            fail(what + ": count " + std::to_string(sparse.count) + " is not between 1 and " +
+                 std::to_string(a.count));
+        const int ict = sparse.indices.componentType;
+        if (ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+            ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+            fail(what + ": indices are " + component_name(ict) +
+                 ", not UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+        const size_t count = size_t(sparse.count);
+        const size_t index_size = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(ict)));
+        // Each view must hold byteOffset + count elements (count * size <= 2^28 * 64: no overflow).
+        auto packed = [&](int view, int offset, size_t size, const char* part) {
+            std::span<const uint8_t> bytes = view_bytes(view, what + " " + part);
+            if (offset < 0 || size_t(offset) > bytes.size() || count * size > bytes.size() - size_t(offset))
+                fail(what + ": " + part + " (count " + std::to_string(count) + ", byteOffset " +
+                     std::to_string(offset) + ") run past the end of bufferView " + std::to_string(view) +
+                     " (" + std::to_string(bytes.size()) + " bytes)");
+            return bytes.data() + offset;
+        };
+        const uint8_t* indices = packed(sparse.indices.bufferView, sparse.indices.byteOffset, index_size, "indices");
+        const uint8_t* values = packed(sparse.values.bufferView, sparse.values.byteOffset, element_size, "values");
+        for (size_t i = 0; i < count; ++i) {
+            uint32_t target = 0;
+            if (index_size == 1) {
+                target = indices[i];
+            } else if (index_size == 2) {
+                uint16_t v;
+                std::memcpy(&v, indices + 2 * i, 2);
+                target = v;
+            } else {
+                std::memcpy(&target, indices + 4 * i, 4);
+            }
+            if (target >= a.count)
+                fail(what + ": index " + std::to_string(i) + " is " + std::to_string(target) +
+                     ", past the end of the accessor (" + std::to_string(a.count) + " elements)");
+            decode(values + i * element_size, target);
+        }
     }
 
     size_t stride_of(const tinygltf::Accessor& a, size_t element_size) const {
@@ -227,7 +277,6 @@ private:
     // The accessor's view, after checking that every element lies inside it.
     std::span<const uint8_t> element_range(const tinygltf::Accessor& a, const std::string& name,
                                            size_t element_size) const {
-        if (a.sparse.isSparse) fail(name + " is sparse");  // callers skip these first
         std::span<const uint8_t> bytes = view_bytes(a.bufferView, name);
         const size_t stride = stride_of(a, element_size);
         if (stride < element_size)
@@ -385,14 +434,10 @@ private:
             warn("a primitive without POSITION is skipped");
             return std::nullopt;
         }
-        for (const auto& [name, accessor_index] : source.attributes) {
-            if (accessor(accessor_index, what + " " + name).sparse.isSparse) {
-                warn("sparse accessors are not supported: primitives using one are skipped");
-                return std::nullopt;
-            }
-        }
+        // Sparse vertex attributes are read (read_floats); sparse indices,
+        // which no exporter we know writes, are not.
         if (source.indices >= 0 && accessor(source.indices, what).sparse.isSparse) {
-            warn("sparse accessors are not supported: primitives using one are skipped");
+            warn("sparse index accessors are not supported: primitives using one are skipped");
             return std::nullopt;
         }
         for (const auto& [name, accessor_index] : source.attributes)

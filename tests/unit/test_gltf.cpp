@@ -213,26 +213,89 @@ TEST_CASE("gltf: strips and fans become triangle lists with the same winding", "
                                  "with triangles (points and lines are not supported"));
 }
 
-TEST_CASE("gltf: a file whose only primitive is sparse names sparse accessors", "[gltf]") {
-    // Like Khronos' SimpleSparseAccessor: the one POSITION accessor is sparse
-    // (one vertex replaced), so its primitive is skipped and nothing is left.
+TEST_CASE("gltf: sparse vertex attributes replace the elements they name", "[gltf]") {
+    // Like Khronos' SimpleSparseAccessor (which was refused before): the
+    // POSITION accessor is the triangle (0,0,0) (1,0,0) (0,1,0), and its sparse
+    // part replaces element 2 with (0,2,0).
     Bin bin;
-    bin.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0});  // 36 bytes: the base
-    bin.add(std::vector<uint16_t>{2, 0});                     // 4 bytes: sparse index 2 (+ pad)
-    bin.add(std::vector<float>{0, 2, 0});                     // 12 bytes: its new value
-    const std::string text = fill(R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 0}],
+    bin.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0});  // 0..35: the base
+    bin.add(std::vector<uint16_t>{2, 0});                     // 36..39: index 2 (+ pad)
+    bin.add(std::vector<float>{0, 2, 0});                     // 40..51: its new value
+    const std::string base = fill(R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 0}],
       "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
-      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
-        "sparse": {"count": 1, "indices": {"bufferView": 1, "componentType": 5123},
-                   "values": {"bufferView": 2}}}],
+      "accessors": [{"bufferView": $BASE, "componentType": 5126, "count": 3, "type": "VEC3",
+        "sparse": {"count": $COUNT, "indices": {"bufferView": 1, "componentType": 5123},
+                   "values": {"bufferView": 2, "byteOffset": $VOFFSET}}}],
       "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 2},
                       {"buffer": 0, "byteOffset": 40, "byteLength": 12}],
       "buffers": [{"byteLength": 52, "uri": "$URI"}]})",
                                   {{"$URI", data_uri(bin.bytes)}});
-    CHECK_THAT(error_of(write_file("sparse.gltf", text)),
-               ContainsSubstring("sparse.gltf: nothing to draw: no node of the scene has a mesh with "
-                                 "triangles (sparse accessors are not supported: primitives using "
-                                 "one are skipped)"));
+    const auto file = [&](const char* view, const char* count, const char* offset) {
+        return fill(base, {{"$BASE", view}, {"$COUNT", count}, {"$VOFFSET", offset}});
+    };
+    vkt::GltfScene scene = vkt::load_gltf(write_file("sparse.gltf", file("0", "1", "0")));
+    REQUIRE(scene.vertices.size() == 3);
+    CHECK(scene.vertices[0].position == glm::vec3(0, 0, 0));
+    CHECK(scene.vertices[1].position == glm::vec3(1, 0, 0));
+    CHECK(scene.vertices[2].position == glm::vec3(0, 2, 0));
+    CHECK(scene.bounds_max == glm::vec3(1, 2, 0));
+    CHECK(scene.warnings.empty());
+    // Without a base view the other elements are zeros.
+    scene = vkt::load_gltf(write_file("sparse_zeros.gltf", file("-1", "1", "0")));
+    REQUIRE(scene.vertices.size() == 3);
+    CHECK(scene.vertices[1].position == glm::vec3(0, 0, 0));
+    CHECK(scene.vertices[2].position == glm::vec3(0, 2, 0));
+    // Bad sparse parts are refused with one line.
+    CHECK_THAT(error_of(write_file("sparse_bad.gltf", file("0", "2", "0"))),
+               ContainsSubstring("sparse_bad.gltf: mesh 0 primitive 0 POSITION: accessor 0 (sparse): "
+                                 "indices (count 2, byteOffset 0) run past the end of bufferView 1 (2 bytes)"));
+    CHECK_THAT(error_of(write_file("sparse_bad.gltf", file("0", "1", "4"))),
+               ContainsSubstring("accessor 0 (sparse): values (count 1, byteOffset 4) run past the end "
+                                 "of bufferView 2 (12 bytes)"));
+    CHECK_THAT(error_of(write_file("sparse_bad.gltf", file("0", "4", "0"))),
+               ContainsSubstring("accessor 0 (sparse): count 4 is not between 1 and 3"));
+    // An index past the accessor's end: element 7 of 3.
+    Bin far = bin;
+    far.bytes[36] = 7;
+    CHECK_THAT(error_of(write_file("sparse_bad.gltf",
+                                   fill(file("0", "1", "0"), {{data_uri(bin.bytes), data_uri(far.bytes)}}))),
+               ContainsSubstring("accessor 0 (sparse): index 0 is 7, past the end of the accessor (3 elements)"));
+    // Every number of the file made absurd: load or throw vkt::Error, never crash.
+    const std::string text = file("0", "1", "0");
+    const std::regex number(R"(-?\b[0-9]+\b)");
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it) {
+        if (size_t(it->position()) > text.find("base64,")) break;  // the data: URI and after
+        for (const char* value : {"4000000000", "-1", "0", "2147483647", "65536"}) {
+            std::string variant = text;
+            variant.replace(size_t(it->position()), size_t(it->length()), value);
+            INFO(variant);
+            try {
+                vkt::load_gltf(write_file("sparse_fuzz.gltf", variant));
+            } catch (const vkt::Error&) {
+            }
+        }
+    }
+}
+
+TEST_CASE("gltf: a file with nothing left to draw says what was skipped", "[gltf]") {
+    // The triangle's indices made sparse: no exporter writes that, so its
+    // primitive is skipped, and the one error line says so.
+    Bin bin;
+    bin.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0});
+    bin.add(std::vector<uint16_t>{0, 1, 2, 0});
+    const std::string text = fill(R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 0}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+        {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR",
+         "sparse": {"count": 1, "indices": {"bufferView": 1, "componentType": 5123},
+                    "values": {"bufferView": 1}}}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 8}],
+      "buffers": [{"byteLength": 44, "uri": "$URI"}]})",
+                                  {{"$URI", data_uri(bin.bytes)}});
+    CHECK_THAT(error_of(write_file("sparse_indices.gltf", text)),
+               ContainsSubstring("sparse_indices.gltf: nothing to draw: no node of the scene has a mesh "
+                                 "with triangles (sparse index accessors are not supported: primitives "
+                                 "using one are skipped)"));
 }
 
 TEST_CASE("gltf: interleaved vertices (byteStride) and offsets (bufferView and accessor)",

@@ -13,11 +13,11 @@
 // triangle lists, strips and fans (the last two turned into lists); 8, 16
 // and 32-bit indices and non-indexed primitives; POSITION, NORMAL (flat
 // normals are made where it is missing) and TEXCOORD_0 (float, or normalised
-// unsigned byte/short); interleaved and offset accessors; materials'
+// unsigned byte/short); interleaved, offset and sparse accessors; materials'
 // baseColorFactor and baseColorTexture (texCoord 0, PNG or JPEG); the node
 // tree with matrix or TRS; the default scene, else scene 0, else every root.
 // Skipped with a warning: skins, morph targets, animations, cameras, sparse
-// accessors, points and lines, other texture coordinates and material
+// index accessors, points and lines, other texture coordinates and material
 // properties, every extension in extensionsUsed, samplers (every texture is
 // drawn with a linear, repeating sampler). Refused with one clear line:
 // anything out of bounds, a type glTF does not allow, an undecodable image,
