@@ -216,8 +216,8 @@ public:
         print_memory_types(context.physical);
 
         // [buffers]
-        vertex_buffer_ = upload(context, vertices.data(), sizeof(vertices),
-                                VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        vertex_buffer_ =
+            upload(context, vertices.data(), sizeof(vertices), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
         index_buffer_ =
             upload(context, indices.data(), sizeof(indices), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
         // [/buffers]
@@ -253,14 +253,15 @@ public:
         vkt::ShaderModule vertex = vkt::load_shader(device, context.chapter, "hexagon.vert");
         vkt::ShaderModule fragment = vkt::load_shader(device, context.chapter, "hexagon.frag");
         layout_ = vkt::create_pipeline_layout(device);
-        pipeline_ = vkt::create_graphics_pipeline(device, {
-            .vertex = vertex,
-            .fragment = fragment,
-            .layout = layout_,
-            .bindings = {&binding, 1},
-            .attributes = attributes,
-            .color_formats = {context.color_format},
-        });
+        pipeline_ =
+            vkt::create_graphics_pipeline(device, {
+                                                      .vertex = vertex,
+                                                      .fragment = fragment,
+                                                      .layout = layout_,
+                                                      .bindings = {&binding, 1},
+                                                      .attributes = attributes,
+                                                      .color_formats = {context.color_format},
+                                                  });
         // [/pipeline]
     }
 

@@ -87,8 +87,8 @@ PushConstants object_constants(uint32_t i, double time, VkExtent2D extent) {
     // A hue around the colour wheel, softened towards white: (1, 0.25, 0.25)
     // for object 0, then every 30 degrees of hue.
     const glm::vec3 hue = glm::clamp(
-        glm::abs(glm::mod(float(i) / 2.0f + glm::vec3(0.0f, 4.0f, 2.0f), 6.0f) - 3.0f) - 1.0f,
-        0.0f, 1.0f);
+        glm::abs(glm::mod(float(i) / 2.0f + glm::vec3(0.0f, 4.0f, 2.0f), 6.0f) - 3.0f) - 1.0f, 0.0f,
+        1.0f);
     const glm::vec3 colour = 0.25f + 0.75f * hue;
     // Start turned by 0.4 rad per object, then turn at 0.5 to 2.7 rad/s,
     // every other one the other way.
@@ -129,12 +129,12 @@ public:
         std::vector<uint16_t> indices;
         meshes_ = make_shapes(vertices, indices);
         const vkt::Gpu gpu = context.gpu();
-        vertex_buffer_ = vkt::create_device_buffer(gpu, vertices.data(),
-                                                   vertices.size() * sizeof(Vertex),
-                                                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-        index_buffer_ = vkt::create_device_buffer(gpu, indices.data(),
-                                                  indices.size() * sizeof(uint16_t),
-                                                  VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+        vertex_buffer_ =
+            vkt::create_device_buffer(gpu, vertices.data(), vertices.size() * sizeof(Vertex),
+                                      VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        index_buffer_ =
+            vkt::create_device_buffer(gpu, indices.data(), indices.size() * sizeof(uint16_t),
+                                      VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
         // [/buffers]
 
         // [layout]
@@ -154,14 +154,15 @@ public:
             {0, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, position)},
             {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, shade)},
         };
-        pipeline_ = vkt::create_graphics_pipeline(device, {
-            .vertex = vertex,
-            .fragment = fragment,
-            .layout = layout_,
-            .bindings = {&binding, 1},
-            .attributes = attributes,
-            .color_formats = {context.color_format},
-        });
+        pipeline_ =
+            vkt::create_graphics_pipeline(device, {
+                                                      .vertex = vertex,
+                                                      .fragment = fragment,
+                                                      .layout = layout_,
+                                                      .bindings = {&binding, 1},
+                                                      .attributes = attributes,
+                                                      .color_formats = {context.color_format},
+                                                  });
     }
 
     void record(const vkt::Frame& frame) override {
@@ -200,8 +201,8 @@ public:
                                VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                sizeof(constants), &constants);
             const Mesh& mesh = meshes_[(i % columns + i / columns) % meshes_.size()];
-            vkCmdDrawIndexed(frame.cmd, mesh.index_count, 1, mesh.first_index,
-                             mesh.vertex_offset, 0);
+            vkCmdDrawIndexed(frame.cmd, mesh.index_count, 1, mesh.first_index, mesh.vertex_offset,
+                             0);
         }
         // [/draw]
         vkCmdEndRendering(frame.cmd);

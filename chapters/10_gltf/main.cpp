@@ -64,9 +64,9 @@ glm::mat4 camera(const vkt::GltfScene& scene, VkExtent2D extent, double time) {
     const float fov_x = 2.0f * std::atan(std::tan(fov_y / 2.0f) * aspect);
     const float distance = radius / std::sin(std::min(fov_x, fov_y) / 2.0f);
     const float azimuth = 0.6f + 0.25f * float(time), elevation = glm::radians(25.0f);
-    const glm::vec3 eye = centre + distance * glm::vec3(std::cos(elevation) * std::sin(azimuth),
-                                                        std::sin(elevation),
-                                                        std::cos(elevation) * std::cos(azimuth));
+    const glm::vec3 eye =
+        centre + distance * glm::vec3(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+                                      std::cos(elevation) * std::cos(azimuth));
     const glm::mat4 view = glm::lookAt(eye, centre, glm::vec3(0.0f, 1.0f, 0.0f));
     const float z_near = 0.9f * (distance - radius), z_far = 1.1f * (distance + radius);
     return vkt::vulkan_perspective(fov_y, aspect, z_near, z_far) * view;
@@ -99,9 +99,9 @@ public:
         // Every primitive's vertices in one buffer, every index in another:
         // one bind for the whole scene, and each draw names its index range.
         const vkt::Gpu gpu = context.gpu();
-        vertex_buffer_ = vkt::create_device_buffer(
-            gpu, scene_.vertices.data(), scene_.vertices.size() * sizeof(vkt::GltfVertex),
-            VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        vertex_buffer_ = vkt::create_device_buffer(gpu, scene_.vertices.data(),
+                                                   scene_.vertices.size() * sizeof(vkt::GltfVertex),
+                                                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
         index_buffer_ = vkt::create_device_buffer(gpu, scene_.indices.data(),
                                                   scene_.indices.size() * sizeof(uint32_t),
                                                   VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
@@ -137,7 +137,8 @@ public:
                                                      VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
         const VkDescriptorSetLayoutBinding bindings[] = {
             {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-            {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+            {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT,
+             nullptr},
         };
         set_layout_ = vkt::create_descriptor_set_layout(device_, bindings);
         const VkDescriptorPoolSize sizes[] = {
@@ -148,7 +149,8 @@ public:
         for (uint32_t m = 0; m < material_count; ++m) {
             const VkDescriptorSet set = vkt::allocate_descriptor_set(device_, pool_, set_layout_);
             vkt::write_buffer_descriptor(device_, set, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                                         material_buffer_.buffer, m * stride, sizeof(MaterialBlock));
+                                         material_buffer_.buffer, m * stride,
+                                         sizeof(MaterialBlock));
             const int32_t image = scene_.materials[m].base_color_image;
             const vkt::Texture& texture = image >= 0 ? textures_[size_t(image)] : white_;
             vkt::write_image_descriptor(device_, set, 1, texture.image.view, texture.sampler,
@@ -176,16 +178,17 @@ public:
         // No culling: glTF materials may be double-sided, and a model that is
         // not closed shows its inside; the fragment shader lights back faces
         // with their normal turned round.
-        pipeline_ = vkt::create_graphics_pipeline(device_, {
-            .vertex = vertex,
-            .fragment = fragment,
-            .layout = layout_,
-            .bindings = {&binding, 1},
-            .attributes = attributes,
-            .cull_mode = VK_CULL_MODE_NONE,
-            .color_formats = {context.color_format},
-            .depth_format = depth_format_,
-        });
+        pipeline_ =
+            vkt::create_graphics_pipeline(device_, {
+                                                       .vertex = vertex,
+                                                       .fragment = fragment,
+                                                       .layout = layout_,
+                                                       .bindings = {&binding, 1},
+                                                       .attributes = attributes,
+                                                       .cull_mode = VK_CULL_MODE_NONE,
+                                                       .color_formats = {context.color_format},
+                                                       .depth_format = depth_format_,
+                                                   });
         // [/pipeline]
     }
 
@@ -242,8 +245,8 @@ public:
             }
             const DrawConstants constants{clip_from_world * draw.world,
                                           glm::transpose(glm::inverse(draw.world))};
-            vkCmdPushConstants(frame.cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0,
-                               sizeof constants, &constants);
+            vkCmdPushConstants(frame.cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof constants,
+                               &constants);
             // The indices already count from the start of the vertex buffer.
             vkCmdDrawIndexed(frame.cmd, primitive.index_count, 1, primitive.first_index, 0, 0);
         }

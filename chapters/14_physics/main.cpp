@@ -69,7 +69,8 @@ uint32_t box_colour(uint32_t index) {
     const uint32_t rgb = palette[(index * 7u) % 6u];
     const uint32_t scale = 160u + (index * 37u) % 96u;  // 160..255 of 255
     uint32_t out = 0xff000000u;
-    for (uint32_t shift : {0u, 8u, 16u}) out |= (((rgb >> (16u - shift)) & 0xffu) * scale / 255u) << shift;
+    for (uint32_t shift : {0u, 8u, 16u})
+        out |= (((rgb >> (16u - shift)) & 0xffu) * scale / 255u) << shift;
     return out;
 }
 
@@ -99,9 +100,10 @@ public:
         // it to photograph the boxes after they have landed).
         const auto warmup = uint64_t(std::llround(options.number("--warmup") * kStepsPerSecond));
         for (uint64_t i = 0; i < warmup; ++i) world_.step();
-        std::fprintf(stderr, "14_physics: %u boxes, %s, %g steps/s, %llu warm-up steps, %zu contacts\n",
-                     count, options.text("--broadphase") == "brute" ? "brute force" : "sort-and-sweep",
-                     kStepsPerSecond, (unsigned long long)warmup, world_.contact_count());
+        std::fprintf(
+            stderr, "14_physics: %u boxes, %s, %g steps/s, %llu warm-up steps, %zu contacts\n",
+            count, options.text("--broadphase") == "brute" ? "brute force" : "sort-and-sweep",
+            kStepsPerSecond, (unsigned long long)warmup, world_.contact_count());
         // The camera backs off as the pile grows (the floor grows with it).
         eye_distance_ = floor_half_width;
 
@@ -113,12 +115,12 @@ public:
         make_cube(vertices, indices);
         index_count_ = uint32_t(indices.size());
         const vkt::Gpu gpu = context.gpu();
-        cube_vertices_ = vkt::create_device_buffer(gpu, vertices.data(),
-                                                   vertices.size() * sizeof(Vertex),
-                                                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-        cube_indices_ = vkt::create_device_buffer(gpu, indices.data(),
-                                                  indices.size() * sizeof(uint16_t),
-                                                  VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+        cube_vertices_ =
+            vkt::create_device_buffer(gpu, vertices.data(), vertices.size() * sizeof(Vertex),
+                                      VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        cube_indices_ =
+            vkt::create_device_buffer(gpu, indices.data(), indices.size() * sizeof(uint16_t),
+                                      VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
         // [instance-buffers]
         // One instance buffer per frame in flight: the CPU rewrites frame N's
@@ -139,16 +141,26 @@ public:
             {.binding = 1, .stride = sizeof(Instance), .inputRate = VK_VERTEX_INPUT_RATE_INSTANCE},
         };
         const VkVertexInputAttributeDescription attributes[] = {
-            {.location = 0, .binding = 0, .format = VK_FORMAT_R32G32B32_SFLOAT,
+            {.location = 0,
+             .binding = 0,
+             .format = VK_FORMAT_R32G32B32_SFLOAT,
              .offset = offsetof(Vertex, corner)},
-            {.location = 1, .binding = 0, .format = VK_FORMAT_R32G32B32_SFLOAT,
+            {.location = 1,
+             .binding = 0,
+             .format = VK_FORMAT_R32G32B32_SFLOAT,
              .offset = offsetof(Vertex, normal)},
-            {.location = 2, .binding = 1, .format = VK_FORMAT_R32G32B32_SFLOAT,
+            {.location = 2,
+             .binding = 1,
+             .format = VK_FORMAT_R32G32B32_SFLOAT,
              .offset = offsetof(Instance, position)},
-            {.location = 3, .binding = 1, .format = VK_FORMAT_R32G32B32_SFLOAT,
+            {.location = 3,
+             .binding = 1,
+             .format = VK_FORMAT_R32G32B32_SFLOAT,
              .offset = offsetof(Instance, half_extents)},
             // UNORM: the bytes 0..255 arrive in the shader as floats 0..1.
-            {.location = 4, .binding = 1, .format = VK_FORMAT_R8G8B8A8_UNORM,
+            {.location = 4,
+             .binding = 1,
+             .format = VK_FORMAT_R8G8B8A8_UNORM,
              .offset = offsetof(Instance, colour)},
         };
         // [/vertex-input]
@@ -157,16 +169,17 @@ public:
         layout_ = vkt::create_pipeline_layout(device_, {}, {&push, 1});
         vkt::ShaderModule vertex = vkt::load_shader(device_, context.chapter, "boxes.vert");
         vkt::ShaderModule fragment = vkt::load_shader(device_, context.chapter, "boxes.frag");
-        pipeline_ = vkt::create_graphics_pipeline(device_, {
-            .vertex = vertex,
-            .fragment = fragment,
-            .layout = layout_,
-            .bindings = bindings,
-            .attributes = attributes,
-            .cull_mode = VK_CULL_MODE_BACK_BIT,
-            .color_formats = {context.color_format},
-            .depth_format = depth_format_,
-        });
+        pipeline_ =
+            vkt::create_graphics_pipeline(device_, {
+                                                       .vertex = vertex,
+                                                       .fragment = fragment,
+                                                       .layout = layout_,
+                                                       .bindings = bindings,
+                                                       .attributes = attributes,
+                                                       .cull_mode = VK_CULL_MODE_BACK_BIT,
+                                                       .color_formats = {context.color_format},
+                                                       .depth_format = depth_format_,
+                                                   });
     }
 
     void resize(VkExtent2D extent) override {

@@ -93,8 +93,7 @@ inline std::vector<vkt::PointLight> make_lights(uint32_t count, float t) {
         // not. Below 2,000 lights or so (radius 0.3 and more) the lowest are
         // 0.15 up; smaller lights hang at half their radius, so that 65,536
         // of them (radius 0.05) still light the floor.
-        const float height =
-            std::min(0.15f, 0.5f * radius) + level * std::min(1.5f, 0.6f * radius);
+        const float height = std::min(0.15f, 0.5f * radius) + level * std::min(1.5f, 0.6f * radius);
         const glm::vec3 home(r * std::cos(angle), height, r * std::sin(angle));
         lights[i] = {
             .position = home + 0.6f * glm::vec3(std::cos(spin), 0.0f, std::sin(spin)),

@@ -135,12 +135,12 @@ public:
         const VkDeviceSize offset = 0;
         vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &offset);
         vkCmdBindIndexBuffer(cmd, index_buffer_.buffer, 0, VK_INDEX_TYPE_UINT16);
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frame_set,
-                                0, nullptr);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frame_set, 0,
+                                nullptr);
         for (const ch16::Object& object : objects) {
             const ch16::ObjectPush push = ch16::object_push(object);
-            vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0,
-                               ch16::object_push_size, &push);
+            vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, ch16::object_push_size,
+                               &push);
             const MeshRange& mesh = meshes_[object.mesh];
             vkCmdDrawIndexed(cmd, mesh.index_count, 1, mesh.first_index, 0, 0);
         }

@@ -31,7 +31,7 @@ namespace {
 
 using ch16::FrameUniforms;
 
-constexpr uint32_t max_lights = 65536;      // as chapter 16: 2 MiB of lights per frame in flight
+constexpr uint32_t max_lights = 65536;  // as chapter 16: 2 MiB of lights per frame in flight
 // [limits]
 constexpr uint32_t tile_size = 16;          // TILE_SIZE in tiles.glsl
 constexpr uint32_t max_tile_lights = 1024;  // MAX_TILE_LIGHTS: 4 KiB per tile
@@ -39,7 +39,7 @@ constexpr uint32_t max_tile_lights = 1024;  // MAX_TILE_LIGHTS: 4 KiB per tile
 constexpr VkFormat shaded_format = VK_FORMAT_R32G32B32A32_SFLOAT;  // --shade compute writes it
 // --verify renders into float targets, so that nothing is clamped or rounded.
 constexpr VkFormat verify_format = VK_FORMAT_R32G32B32A32_SFLOAT;
-constexpr int32_t view_lit = 0, view_heat = 5;                     // VIEW_LIT, VIEW_HEAT
+constexpr int32_t view_lit = 0, view_heat = 5;  // VIEW_LIT, VIEW_HEAT
 const glm::vec3 eye(0.0f, 6.0f, 10.0f);
 
 struct TileStats {  // TileStats in tiles.comp
@@ -49,8 +49,11 @@ struct TileStats {  // TileStats in tiles.comp
 class TiledDeferred : public vkt::Renderer {
 public:
     explicit TiledDeferred(const vkt::Context& context)
-        : gpu_(context.gpu()), device_(context.device), slots_(context.frames_in_flight),
-          limits_(context.properties.limits), colour_format_(context.color_format) {
+        : gpu_(context.gpu()),
+          device_(context.device),
+          slots_(context.frames_in_flight),
+          limits_(context.properties.limits),
+          colour_format_(context.color_format) {
         const vkt::Options& options = context.options;
         compute_ = options.text("--shade") == "compute";
         view_ = options.text("--view") == "heat" ? view_heat : view_lit;
@@ -78,8 +81,8 @@ public:
             std::fprintf(stderr,
                          "17_tiled_deferred: lights per lit tile: mean %.1f, most %u (a list "
                          "holds %u); tiles overflowed: %u\n",
-                         double(lights_seen_) / double(tiles_seen_), most_lights_,
-                         max_tile_lights, overflowed_);
+                         double(lights_seen_) / double(tiles_seen_), most_lights_, max_tile_lights,
+                         overflowed_);
     }
 
     // Everything as large as the screen: the G-buffer, the tiles' lists, the
@@ -109,8 +112,9 @@ public:
                                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE);
         });
         for (uint32_t binding = 0; binding < 4; ++binding)
-            vkt::write_image_descriptor(device_, screen_set_, binding, gbuffer_->images[binding].view,
-                                        sampler_, ch17::GBufferPass::read_layout(int(binding)));
+            vkt::write_image_descriptor(device_, screen_set_, binding,
+                                        gbuffer_->images[binding].view, sampler_,
+                                        ch17::GBufferPass::read_layout(int(binding)));
         vkt::write_buffer_descriptor(device_, screen_set_, 4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                      tile_counts_.buffer, 0, VK_WHOLE_SIZE);
         vkt::write_buffer_descriptor(device_, screen_set_, 5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
@@ -148,8 +152,8 @@ public:
                 cull(cmd, frame.slot, frame.extent);
             }
             auto scope = frame.gpu_scope("lighting");
-            draw_lighting(cmd, frame.slot, frame.extent, frame.target_view,
-                          pipelines_.lighting, &view_, sizeof view_);
+            draw_lighting(cmd, frame.slot, frame.extent, frame.target_view, pipelines_.lighting,
+                          &view_, sizeof view_);
         }
     }
     // [/frame]
@@ -164,22 +168,24 @@ private:
         if (!(source.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_SRC_BIT) ||
             !(source.optimalTilingFeatures & VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT) ||
             !(destination.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT))
-            throw vkt::Error("this device cannot blit R32G32B32A32_SFLOAT storage images "
-                             "to the target");
+            throw vkt::Error(
+                "this device cannot blit R32G32B32A32_SFLOAT storage images "
+                "to the target");
     }
 
     // Set 0, one per frame in flight: uniforms, lights, tile statistics.
     // Set 1, one for all: the G-buffer, the tiles' lists, the compute output.
     void create_descriptors() {
-        const VkShaderStageFlags all = VK_SHADER_STAGE_VERTEX_BIT |
-                                       VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
+        const VkShaderStageFlags all =
+            VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
         const VkDescriptorSetLayoutBinding frame_bindings[] = {
             {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, all, nullptr},
             {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
             {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
         };
         frame_layout_ = vkt::create_descriptor_set_layout(device_, frame_bindings);
-        const VkShaderStageFlags readers = VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
+        const VkShaderStageFlags readers =
+            VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
         std::vector<VkDescriptorSetLayoutBinding> screen_bindings;
         for (uint32_t binding = 0; binding < 4; ++binding)
             screen_bindings.push_back(
@@ -211,10 +217,10 @@ private:
             frame_sets_.push_back(vkt::allocate_descriptor_set(device_, pool_, frame_layout_));
             const vkt::Buffer* buffers[] = {&uniforms_[i], &lights_[i], &stats_[i]};
             for (uint32_t b = 0; b < 3; ++b)
-                vkt::write_buffer_descriptor(device_, frame_sets_[i], b,
-                                             b == 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                                                    : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                             buffers[b]->buffer, 0, VK_WHOLE_SIZE);
+                vkt::write_buffer_descriptor(
+                    device_, frame_sets_[i], b,
+                    b == 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                    buffers[b]->buffer, 0, VK_WHOLE_SIZE);
         }
         screen_set_ = vkt::allocate_descriptor_set(device_, pool_, screen_layout_);
         const VkSamplerCreateInfo sampler{
@@ -248,13 +254,14 @@ private:
         }
         // [/pipelines]
         vkt::ShaderModule fullscreen = vkt::load_shader(device_, "16_deferred", "fullscreen.vert");
-        vkt::ShaderModule tiled = vkt::load_shader(device_, "17_tiled_deferred",
-                                                   "tiled_lighting.frag");
+        vkt::ShaderModule tiled =
+            vkt::load_shader(device_, "17_tiled_deferred", "tiled_lighting.frag");
         vkt::ShaderModule brute = vkt::load_shader(device_, "16_deferred", "lighting.frag");
         auto lighting = [&](VkShaderModule fragment, VkFormat target) {
-            return vkt::create_graphics_pipeline(
-                device_, {.vertex = fullscreen, .fragment = fragment, .layout = layout_,
-                          .color_formats = {target}});
+            return vkt::create_graphics_pipeline(device_, {.vertex = fullscreen,
+                                                           .fragment = fragment,
+                                                           .layout = layout_,
+                                                           .color_formats = {target}});
         };
         pipelines_.lighting = lighting(tiled, colour_format_);
         if (verify_) {  // float targets: nothing rounded or clamped
@@ -298,14 +305,13 @@ private:
         tiles_seen_ += stats.lit_tiles;
     }
 
-    void bind(VkCommandBuffer cmd, VkPipelineBindPoint point, VkPipeline pipeline,
-              uint32_t slot, const void* push, uint32_t push_size) const {
+    void bind(VkCommandBuffer cmd, VkPipelineBindPoint point, VkPipeline pipeline, uint32_t slot,
+              const void* push, uint32_t push_size) const {
         vkCmdBindPipeline(cmd, point, pipeline);
         const VkDescriptorSet sets[] = {frame_sets_[slot], screen_set_};
         vkCmdBindDescriptorSets(cmd, point, layout_, 0, 2, sets, 0, nullptr);
-        vkCmdPushConstants(cmd, layout_,
-                           VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, 0,
-                           push_size, push);
+        vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT,
+                           0, push_size, push);
     }
 
     // [cull]
@@ -330,12 +336,11 @@ private:
     void tiles_to_write(VkCommandBuffer cmd) const {
         const VkBuffer buffers[] = {tile_counts_.buffer, tile_lights_.buffer};
         for (VkBuffer buffer : buffers)
-            vkt::buffer_barrier(cmd, buffer,
-                                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
-                                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+            vkt::buffer_barrier(
+                cmd, buffer,
+                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     }
 
     void stats_to_host(VkCommandBuffer cmd, uint32_t slot) const {
@@ -374,8 +379,7 @@ private:
     // --shade compute: one dispatch culls and shades into the float image.
     // The image is shared by the frames in flight: wait for the last frame's
     // copy to have read it; afterwards, make the writes visible to the copy.
-    void shade_compute(VkCommandBuffer cmd, uint32_t slot, VkExtent2D extent,
-                       int32_t view) const {
+    void shade_compute(VkCommandBuffer cmd, uint32_t slot, VkExtent2D extent, int32_t view) const {
         vkt::image_barrier(cmd, shaded_.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
                            VK_PIPELINE_STAGE_2_BLIT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
                            VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -384,12 +388,11 @@ private:
         bind(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.shade, slot, &view, sizeof view);
         const vkt::TileGrid grid = vkt::tile_grid(extent.width, extent.height, tile_size);
         vkCmdDispatch(cmd, grid.x, grid.y, 1);
-        vkt::image_barrier(cmd, shaded_.image, VK_IMAGE_LAYOUT_GENERAL,
-                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                           VK_PIPELINE_STAGE_2_BLIT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                           VK_ACCESS_2_TRANSFER_READ_BIT);
+        vkt::image_barrier(
+            cmd, shaded_.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+            VK_PIPELINE_STAGE_2_BLIT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+            VK_ACCESS_2_TRANSFER_READ_BIT);
         stats_to_host(cmd, slot);
     }
 
@@ -408,16 +411,14 @@ private:
                                  .dstOffsets = {{0, 0, 0}, corner}};
         vkCmdBlitImage(cmd, shaded_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
-        vkt::image_barrier(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_BLIT_BIT,
-                           VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                           VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT |
-                               VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+        vkt::image_barrier(
+            cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_BLIT_BIT,
+            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+            VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
         vkt::image_barrier(cmd, shaded_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_BLIT_BIT,
-                           VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                           VK_ACCESS_2_NONE);
+                           VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_NONE,
+                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE);
     }
     // [/shade-compute]
 

@@ -14,11 +14,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <cstring>
 #include <exception>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <span>
 
@@ -45,26 +45,41 @@ std::string first_line(const std::string& text) {
 
 const char* component_name(int component_type) {
     switch (component_type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: return "BYTE";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "UNSIGNED_BYTE";
-    case TINYGLTF_COMPONENT_TYPE_SHORT: return "SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "UNSIGNED_SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "UNSIGNED_INT";
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return "FLOAT";
-    default: return "an unknown component type";
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+            return "BYTE";
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return "UNSIGNED_BYTE";
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+            return "SHORT";
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return "UNSIGNED_SHORT";
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+            return "UNSIGNED_INT";
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return "FLOAT";
+        default:
+            return "an unknown component type";
     }
 }
 
 const char* type_name(int type) {
     switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-    case TINYGLTF_TYPE_VEC2: return "VEC2";
-    case TINYGLTF_TYPE_VEC3: return "VEC3";
-    case TINYGLTF_TYPE_VEC4: return "VEC4";
-    case TINYGLTF_TYPE_MAT2: return "MAT2";
-    case TINYGLTF_TYPE_MAT3: return "MAT3";
-    case TINYGLTF_TYPE_MAT4: return "MAT4";
-    default: return "an unknown type";
+        case TINYGLTF_TYPE_SCALAR:
+            return "SCALAR";
+        case TINYGLTF_TYPE_VEC2:
+            return "VEC2";
+        case TINYGLTF_TYPE_VEC3:
+            return "VEC3";
+        case TINYGLTF_TYPE_VEC4:
+            return "VEC4";
+        case TINYGLTF_TYPE_MAT2:
+            return "MAT2";
+        case TINYGLTF_TYPE_MAT3:
+            return "MAT3";
+        case TINYGLTF_TYPE_MAT4:
+            return "MAT4";
+        default:
+            return "an unknown type";
     }
 }
 
@@ -121,9 +136,9 @@ private:
         bool ok = false;
         try {
             if (glb)
-                ok = gltf.LoadBinaryFromMemory(
-                    &model_, &err, &warn_text, reinterpret_cast<const unsigned char*>(file.data()),
-                    static_cast<unsigned int>(file.size()), base_dir);
+                ok = gltf.LoadBinaryFromMemory(&model_, &err, &warn_text,
+                                               reinterpret_cast<const unsigned char*>(file.data()),
+                                               static_cast<unsigned int>(file.size()), base_dir);
             else
                 ok = gltf.LoadASCIIFromString(&model_, &err, &warn_text, file.data(),
                                               static_cast<unsigned int>(file.size()), base_dir);
@@ -142,8 +157,10 @@ private:
         for (const std::string& name : model_.extensionsUsed)
             warn("uses extension " + name + ", which this loader ignores");
         if (!model_.skins.empty()) warn("skins are not supported: meshes are drawn unskinned");
-        if (!model_.animations.empty()) warn("animations are not supported: the scene stands still");
-        if (!model_.cameras.empty()) warn("cameras are ignored: the chapter frames the scene itself");
+        if (!model_.animations.empty())
+            warn("animations are not supported: the scene stands still");
+        if (!model_.cameras.empty())
+            warn("cameras are ignored: the chapter frames the scene itself");
     }
 
     // --- Bounds-checked access to accessor data ---------------------------
@@ -192,7 +209,8 @@ private:
         const int components = tinygltf::GetNumComponentsInType(uint32_t(a.type));
         const int component_size = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
         std::vector<float> out;
-        if (a.count > (size_t(1) << 28)) fail(name + ": count " + std::to_string(a.count) + " is too large");
+        if (a.count > (size_t(1) << 28))
+            fail(name + ": count " + std::to_string(a.count) + " is too large");
         out.assign(a.count * size_t(components), 0.0f);
         const size_t element_size = size_t(components * component_size);
         // One element's components, from `element`, into out[i].
@@ -201,15 +219,20 @@ private:
                 const uint8_t* p = element + c * component_size;
                 float v = 0;
                 switch (a.componentType) {
-                case TINYGLTF_COMPONENT_TYPE_FLOAT: std::memcpy(&v, p, 4); break;
-                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: v = float(*p) / 255.0f; break;
-                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-                    uint16_t s;
-                    std::memcpy(&s, p, 2);
-                    v = float(s) / 65535.0f;
-                    break;
-                }
-                default: break;  // excluded by `allowed`
+                    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+                        std::memcpy(&v, p, 4);
+                        break;
+                    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                        v = float(*p) / 255.0f;
+                        break;
+                    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+                        uint16_t s;
+                        std::memcpy(&s, p, 2);
+                        v = float(s) / 65535.0f;
+                        break;
+                    }
+                    default:
+                        break;  // excluded by `allowed`
                 }
                 out[i * size_t(components) + size_t(c)] = v;
             }
@@ -217,7 +240,8 @@ private:
         if (a.bufferView >= 0) {  // no view: all zeros, as glTF says
             std::span<const uint8_t> bytes = element_range(a, name, element_size);
             const size_t stride = stride_of(a, element_size);
-            for (size_t i = 0; i < a.count; ++i) decode(bytes.data() + a.byteOffset + i * stride, i);
+            for (size_t i = 0; i < a.count; ++i)
+                decode(bytes.data() + a.byteOffset + i * stride, i);
         }
         if (a.sparse.isSparse) apply_sparse(a, name, element_size, decode);
         return out;
@@ -234,7 +258,8 @@ private:
             fail(what + ": count " + std::to_string(sparse.count) + " is not between 1 and " +
                  std::to_string(a.count));
         const int ict = sparse.indices.componentType;
-        if (ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        if (ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+            ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
             ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
             fail(what + ": indices are " + component_name(ict) +
                  ", not UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
@@ -243,14 +268,17 @@ private:
         // Each view must hold byteOffset + count elements (count * size <= 2^28 * 64: no overflow).
         auto packed = [&](int view, int offset, size_t size, const char* part) {
             std::span<const uint8_t> bytes = view_bytes(view, what + " " + part);
-            if (offset < 0 || size_t(offset) > bytes.size() || count * size > bytes.size() - size_t(offset))
+            if (offset < 0 || size_t(offset) > bytes.size() ||
+                count * size > bytes.size() - size_t(offset))
                 fail(what + ": " + part + " (count " + std::to_string(count) + ", byteOffset " +
-                     std::to_string(offset) + ") run past the end of bufferView " + std::to_string(view) +
-                     " (" + std::to_string(bytes.size()) + " bytes)");
+                     std::to_string(offset) + ") run past the end of bufferView " +
+                     std::to_string(view) + " (" + std::to_string(bytes.size()) + " bytes)");
             return bytes.data() + offset;
         };
-        const uint8_t* indices = packed(sparse.indices.bufferView, sparse.indices.byteOffset, index_size, "indices");
-        const uint8_t* values = packed(sparse.values.bufferView, sparse.values.byteOffset, element_size, "values");
+        const uint8_t* indices =
+            packed(sparse.indices.bufferView, sparse.indices.byteOffset, index_size, "indices");
+        const uint8_t* values =
+            packed(sparse.values.bufferView, sparse.values.byteOffset, element_size, "values");
         for (size_t i = 0; i < count; ++i) {
             uint32_t target = 0;
             if (index_size == 1) {
@@ -280,14 +308,13 @@ private:
         std::span<const uint8_t> bytes = view_bytes(a.bufferView, name);
         const size_t stride = stride_of(a, element_size);
         if (stride < element_size)
-            fail(name + ": byteStride " + std::to_string(stride) + " is smaller than one element (" +
-                 std::to_string(element_size) + " bytes)");
+            fail(name + ": byteStride " + std::to_string(stride) +
+                 " is smaller than one element (" + std::to_string(element_size) + " bytes)");
         // offset + stride * (count - 1) + element_size <= view length, without overflow
         // (count is at most 2^28 here and stride at most 2^32 in any file we read).
-        const uint64_t end = a.count == 0
-                                 ? uint64_t(a.byteOffset)
-                                 : uint64_t(a.byteOffset) + uint64_t(stride) * (a.count - 1) +
-                                       element_size;
+        const uint64_t end =
+            a.count == 0 ? uint64_t(a.byteOffset)
+                         : uint64_t(a.byteOffset) + uint64_t(stride) * (a.count - 1) + element_size;
         if (a.byteOffset > bytes.size() || end > bytes.size())
             fail(name + " (count " + std::to_string(a.count) + ", byteOffset " +
                  std::to_string(a.byteOffset) + ", stride " + std::to_string(stride) +
@@ -300,14 +327,14 @@ private:
         const tinygltf::Accessor& a = accessor(index, what);
         const std::string name = what + ": index accessor " + std::to_string(index);
         const int ct = a.componentType;
-        if (a.type != TINYGLTF_TYPE_SCALAR ||
-            (ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-             ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-             ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+        if (a.type != TINYGLTF_TYPE_SCALAR || (ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                                               ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                                               ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
             fail(name + " is " + type_name(a.type) + " of " + component_name(ct) +
                  ", which glTF does not allow for indices (SCALAR of UNSIGNED_BYTE, "
                  "UNSIGNED_SHORT or UNSIGNED_INT)");
-        if (a.count > (size_t(1) << 28)) fail(name + ": count " + std::to_string(a.count) + " is too large");
+        if (a.count > (size_t(1) << 28))
+            fail(name + ": count " + std::to_string(a.count) + " is too large");
         std::vector<uint32_t> out(a.count, 0);
         if (a.bufferView < 0) return out;
         const size_t size = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(ct)));
@@ -334,19 +361,25 @@ private:
             const tinygltf::Material& source = model_.materials[m];
             const std::string what = "material " + std::to_string(m);
             const std::vector<double>& f = source.pbrMetallicRoughness.baseColorFactor;
-            if (f.size() != 4) fail(what + ": baseColorFactor has " + std::to_string(f.size()) + " numbers, not 4");
+            if (f.size() != 4)
+                fail(what + ": baseColorFactor has " + std::to_string(f.size()) +
+                     " numbers, not 4");
             GltfMaterial material;
-            material.base_color_factor = glm::vec4(float(f[0]), float(f[1]), float(f[2]), float(f[3]));
+            material.base_color_factor =
+                glm::vec4(float(f[0]), float(f[1]), float(f[2]), float(f[3]));
             const tinygltf::TextureInfo& info = source.pbrMetallicRoughness.baseColorTexture;
             if (info.index >= 0) {
                 if (size_t(info.index) >= model_.textures.size())
-                    fail(what + ": baseColorTexture " + std::to_string(info.index) + " does not exist");
+                    fail(what + ": baseColorTexture " + std::to_string(info.index) +
+                         " does not exist");
                 if (info.texCoord != 0)
                     warn("a baseColorTexture uses TEXCOORD_" + std::to_string(info.texCoord) +
                          ": only TEXCOORD_0 is read, so it is drawn with TEXCOORD_0");
                 const tinygltf::Texture& texture = model_.textures[size_t(info.index)];
                 if (texture.source < 0) {
-                    warn("a texture has no PNG or JPEG source (an extension's image?): drawn untextured");
+                    warn(
+                        "a texture has no PNG or JPEG source (an extension's image?): drawn "
+                        "untextured");
                 } else {
                     material.base_color_image = image(texture.source);
                 }
@@ -355,10 +388,12 @@ private:
             if (source.normalTexture.index >= 0 || source.occlusionTexture.index >= 0 ||
                 source.emissiveTexture.index >= 0 ||
                 source.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0)
-                warn("normal, occlusion, emissive and metallic-roughness textures are ignored "
-                     "(lighting is chapter 12's)");
+                warn(
+                    "normal, occlusion, emissive and metallic-roughness textures are ignored "
+                    "(lighting is chapter 12's)");
             if (source.alphaMode == "BLEND" || source.alphaMode == "MASK")
-                warn("alphaMode " + source.alphaMode + " is ignored: every material is drawn opaque");
+                warn("alphaMode " + source.alphaMode +
+                     " is ignored: every material is drawn opaque");
             scene_.materials.push_back(material);
         }
     }
@@ -369,20 +404,25 @@ private:
             fail("sampler " + std::to_string(index) + " does not exist");
         const tinygltf::Sampler& s = model_.samplers[size_t(index)];
         if (s.wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT || s.wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT)
-            warn("samplers are not mapped: every texture repeats and filters linearly, with mipmaps");
+            warn(
+                "samplers are not mapped: every texture repeats and filters linearly, with "
+                "mipmaps");
     }
 
     // Decodes glTF image `index` once; returns its index in scene_.images.
     int32_t image(int index) {
         if (size_t(index) >= model_.images.size())
             fail("image " + std::to_string(index) + " does not exist");
-        if (auto found = image_slots_.find(index); found != image_slots_.end()) return found->second;
+        if (auto found = image_slots_.find(index); found != image_slots_.end())
+            return found->second;
         const tinygltf::Image& source = model_.images[size_t(index)];
         std::string what = path_.string() + ": image " + std::to_string(index);
-        if (!source.uri.empty() && source.uri.rfind("data:", 0) != 0) what += " (" + source.uri + ")";
+        if (!source.uri.empty() && source.uri.rfind("data:", 0) != 0)
+            what += " (" + source.uri + ")";
         RgbaImage decoded;
         if (source.bufferView >= 0) {
-            std::span<const uint8_t> bytes = view_bytes(source.bufferView, "image " + std::to_string(index));
+            std::span<const uint8_t> bytes =
+                view_bytes(source.bufferView, "image " + std::to_string(index));
             decoded = decode_image(bytes, what);
         } else if (!source.image.empty()) {
             decoded = decode_image(source.image, what);
@@ -393,7 +433,8 @@ private:
         } else {
             fail("image " + std::to_string(index) + " has no data (an unsupported data: URI?)");
         }
-        if (decoded.width == 0 || decoded.height == 0) fail("image " + std::to_string(index) + " is empty");
+        if (decoded.width == 0 || decoded.height == 0)
+            fail("image " + std::to_string(index) + " is empty");
         scene_.images.push_back(std::move(decoded));
         const int32_t slot = int32_t(scene_.images.size() - 1);
         image_slots_[index] = slot;
@@ -416,19 +457,22 @@ private:
         std::vector<uint32_t>& built = mesh_primitives_[index];
         const tinygltf::Mesh& m = model_.meshes[size_t(index)];
         for (size_t p = 0; p < m.primitives.size(); ++p) {
-            const std::string what = "mesh " + std::to_string(index) + " primitive " + std::to_string(p);
+            const std::string what =
+                "mesh " + std::to_string(index) + " primitive " + std::to_string(p);
             if (auto primitive = load_primitive(m.primitives[p], what)) built.push_back(*primitive);
         }
         return built;
     }
 
-    std::optional<uint32_t> load_primitive(const tinygltf::Primitive& source, const std::string& what) {
+    std::optional<uint32_t> load_primitive(const tinygltf::Primitive& source,
+                                           const std::string& what) {
         const int mode = source.mode;
         if (mode < TINYGLTF_MODE_TRIANGLES || mode > TINYGLTF_MODE_TRIANGLE_FAN) {
             warn("points and lines are not supported: such primitives are skipped");
             return std::nullopt;
         }
-        if (!source.targets.empty()) warn("morph targets are not supported: meshes are drawn unmorphed");
+        if (!source.targets.empty())
+            warn("morph targets are not supported: meshes are drawn unmorphed");
         const auto position = source.attributes.find("POSITION");
         if (position == source.attributes.end()) {
             warn("a primitive without POSITION is skipped");
@@ -469,8 +513,9 @@ private:
             indices = read_indices(source.indices, what);
             for (size_t i = 0; i < indices.size(); ++i)
                 if (indices[i] >= count)
-                    fail(what + ": index " + std::to_string(i) + " is " + std::to_string(indices[i]) +
-                         ", past the end of the vertex data (" + std::to_string(count) + " vertices)");
+                    fail(what + ": index " + std::to_string(i) + " is " +
+                         std::to_string(indices[i]) + ", past the end of the vertex data (" +
+                         std::to_string(count) + " vertices)");
         } else {
             indices.resize(count);  // non-indexed: 0, 1, 2, ...
             for (size_t i = 0; i < count; ++i) indices[i] = uint32_t(i);
@@ -537,8 +582,10 @@ private:
         } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
             // Every second triangle swaps two corners to keep the winding.
             for (size_t i = 2; i < in.size(); ++i) {
-                if (i % 2 == 0) out.insert(out.end(), {in[i - 2], in[i - 1], in[i]});
-                else out.insert(out.end(), {in[i - 1], in[i - 2], in[i]});
+                if (i % 2 == 0)
+                    out.insert(out.end(), {in[i - 2], in[i - 1], in[i]});
+                else
+                    out.insert(out.end(), {in[i - 1], in[i - 2], in[i]});
             }
         } else {  // fan
             for (size_t i = 2; i < in.size(); ++i) out.insert(out.end(), {in[0], in[i - 1], in[i]});
@@ -549,7 +596,8 @@ private:
     // --- The node tree -----------------------------------------------------
     void walk_nodes() {
         std::vector<int> roots;
-        const int chosen = model_.defaultScene >= 0 ? model_.defaultScene : (model_.scenes.empty() ? -1 : 0);
+        const int chosen =
+            model_.defaultScene >= 0 ? model_.defaultScene : (model_.scenes.empty() ? -1 : 0);
         if (chosen >= 0) {
             if (size_t(chosen) >= model_.scenes.size())
                 fail("scene " + std::to_string(chosen) + " does not exist");
@@ -559,7 +607,8 @@ private:
             std::vector<bool> is_child(model_.nodes.size(), false);
             for (const tinygltf::Node& node : model_.nodes)
                 for (int child : node.children)
-                    if (child >= 0 && size_t(child) < is_child.size()) is_child[size_t(child)] = true;
+                    if (child >= 0 && size_t(child) < is_child.size())
+                        is_child[size_t(child)] = true;
             for (size_t n = 0; n < model_.nodes.size(); ++n)
                 if (!is_child[n]) roots.push_back(int(n));
         }
@@ -585,7 +634,8 @@ private:
         const glm::mat4 world = parent * local;  // the parent's transform applies last
         if (node.mesh >= 0) {
             if (size_t(node.mesh) >= model_.meshes.size())
-                fail("node " + std::to_string(index) + ": mesh " + std::to_string(node.mesh) + " does not exist");
+                fail("node " + std::to_string(index) + ": mesh " + std::to_string(node.mesh) +
+                     " does not exist");
             for (uint32_t primitive : mesh(node.mesh)) scene_.draws.push_back({primitive, world});
         }
         for (int child : node.children) walk(child, world);
@@ -596,12 +646,14 @@ private:
         for (const GltfDraw& draw : scene_.draws) {
             const GltfPrimitive& p = scene_.primitives[draw.primitive];
             for (uint32_t v = p.first_vertex; v < p.first_vertex + p.vertex_count; ++v) {
-                const glm::vec3 w = glm::vec3(draw.world * glm::vec4(scene_.vertices[v].position, 1.0f));
+                const glm::vec3 w =
+                    glm::vec3(draw.world * glm::vec4(scene_.vertices[v].position, 1.0f));
                 lo = glm::min(lo, w);
                 hi = glm::max(hi, w);
             }
         }
-        if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z) || !std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z))
+        if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z) ||
+            !std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z))
             fail("the scene's positions are not finite numbers");
         scene_.bounds_min = lo;
         scene_.bounds_max = hi;
@@ -618,13 +670,15 @@ private:
 
 }  // namespace
 
-glm::mat4 gltf_node_matrix(const std::vector<double>& matrix, const std::vector<double>& translation,
+glm::mat4 gltf_node_matrix(const std::vector<double>& matrix,
+                           const std::vector<double>& translation,
                            const std::vector<double>& rotation, const std::vector<double>& scale) {
     if (!matrix.empty()) {
         if (matrix.size() != 16)
             throw Error("matrix has " + std::to_string(matrix.size()) + " numbers, not 16");
         glm::mat4 m;
-        for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = float(matrix[size_t(i)]);  // column-major, like glm
+        for (int i = 0; i < 16; ++i)
+            glm::value_ptr(m)[i] = float(matrix[size_t(i)]);  // column-major, like glm
         return m;
     }
     if (!translation.empty() && translation.size() != 3)
@@ -638,14 +692,19 @@ glm::mat4 gltf_node_matrix(const std::vector<double>& matrix, const std::vector<
         t[3] = glm::vec4(float(translation[0]), float(translation[1]), float(translation[2]), 1.0f);
     if (!rotation.empty()) {
         // glTF stores x, y, z, w; glm::quat's constructor takes w first.
-        const glm::quat q{float(rotation[3]), float(rotation[0]), float(rotation[1]), float(rotation[2])};
+        const glm::quat q{float(rotation[3]), float(rotation[0]), float(rotation[1]),
+                          float(rotation[2])};
         const float length = glm::length(q);
         if (length > 0.0f) r = glm::mat4_cast(q / length);
     }
-    if (!scale.empty()) s = glm::scale(glm::mat4(1.0f), glm::vec3(float(scale[0]), float(scale[1]), float(scale[2])));
+    if (!scale.empty())
+        s = glm::scale(glm::mat4(1.0f),
+                       glm::vec3(float(scale[0]), float(scale[1]), float(scale[2])));
     return t * r * s;
 }
 
-GltfScene load_gltf(const std::filesystem::path& path) { return Loader(path).load(); }
+GltfScene load_gltf(const std::filesystem::path& path) {
+    return Loader(path).load();
+}
 
 }  // namespace vkt

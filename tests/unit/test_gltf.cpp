@@ -69,14 +69,16 @@ std::string base64(const std::vector<uint8_t>& data) {
     return out;
 }
 
-std::string data_uri(const std::vector<uint8_t>& data, const char* mime = "application/octet-stream") {
+std::string data_uri(const std::vector<uint8_t>& data,
+                     const char* mime = "application/octet-stream") {
     return std::string("data:") + mime + ";base64," + base64(data);
 }
 
 // Replaces every `key` in `text` with `value`.
 std::string fill(std::string text, const std::vector<std::pair<std::string, std::string>>& values) {
     for (const auto& [key, value] : values)
-        for (size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size()))
+        for (size_t at = text.find(key); at != std::string::npos;
+             at = text.find(key, at + value.size()))
             text.replace(at, key.size(), value);
     return text;
 }
@@ -119,7 +121,9 @@ const char* triangle_json = R"({
 
 std::string triangle_file(const Triangle& t, int component_type, std::string extra = "",
                           std::string pos_count = "3", std::string pos_type = "VEC3") {
-    const size_t count = t.index_bytes / (component_type == 5121 ? 1 : component_type == 5123 ? 2 : 4);
+    const size_t count = t.index_bytes / (component_type == 5121   ? 1
+                                          : component_type == 5123 ? 2
+                                                                   : 4);
     return fill(triangle_json, {{"$POSCOUNT", pos_count},
                                 {"$POSTYPE", pos_type},
                                 {"$ICT", std::to_string(component_type)},
@@ -219,8 +223,8 @@ TEST_CASE("gltf: sparse vertex attributes replace the elements they name", "[glt
     // part replaces element 2 with (0,2,0).
     Bin bin;
     bin.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0});  // 0..35: the base
-    bin.add(std::vector<uint16_t>{2, 0});                     // 36..39: index 2 (+ pad)
-    bin.add(std::vector<float>{0, 2, 0});                     // 40..51: its new value
+    bin.add(std::vector<uint16_t>{2, 0});                    // 36..39: index 2 (+ pad)
+    bin.add(std::vector<float>{0, 2, 0});                    // 40..51: its new value
     const std::string base = fill(R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 0}],
       "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
       "accessors": [{"bufferView": $BASE, "componentType": 5126, "count": 3, "type": "VEC3",
@@ -247,23 +251,28 @@ TEST_CASE("gltf: sparse vertex attributes replace the elements they name", "[glt
     CHECK(scene.vertices[2].position == glm::vec3(0, 2, 0));
     // Bad sparse parts are refused with one line.
     CHECK_THAT(error_of(write_file("sparse_bad.gltf", file("0", "2", "0"))),
-               ContainsSubstring("sparse_bad.gltf: mesh 0 primitive 0 POSITION: accessor 0 (sparse): "
-                                 "indices (count 2, byteOffset 0) run past the end of bufferView 1 (2 bytes)"));
-    CHECK_THAT(error_of(write_file("sparse_bad.gltf", file("0", "1", "4"))),
-               ContainsSubstring("accessor 0 (sparse): values (count 1, byteOffset 4) run past the end "
-                                 "of bufferView 2 (12 bytes)"));
+               ContainsSubstring(
+                   "sparse_bad.gltf: mesh 0 primitive 0 POSITION: accessor 0 (sparse): "
+                   "indices (count 2, byteOffset 0) run past the end of bufferView 1 (2 bytes)"));
+    CHECK_THAT(
+        error_of(write_file("sparse_bad.gltf", file("0", "1", "4"))),
+        ContainsSubstring("accessor 0 (sparse): values (count 1, byteOffset 4) run past the end "
+                          "of bufferView 2 (12 bytes)"));
     CHECK_THAT(error_of(write_file("sparse_bad.gltf", file("0", "4", "0"))),
                ContainsSubstring("accessor 0 (sparse): count 4 is not between 1 and 3"));
     // An index past the accessor's end: element 7 of 3.
     Bin far = bin;
     far.bytes[36] = 7;
-    CHECK_THAT(error_of(write_file("sparse_bad.gltf",
-                                   fill(file("0", "1", "0"), {{data_uri(bin.bytes), data_uri(far.bytes)}}))),
-               ContainsSubstring("accessor 0 (sparse): index 0 is 7, past the end of the accessor (3 elements)"));
+    CHECK_THAT(
+        error_of(write_file("sparse_bad.gltf", fill(file("0", "1", "0"),
+                                                    {{data_uri(bin.bytes), data_uri(far.bytes)}}))),
+        ContainsSubstring(
+            "accessor 0 (sparse): index 0 is 7, past the end of the accessor (3 elements)"));
     // Every number of the file made absurd: load or throw vkt::Error, never crash.
     const std::string text = file("0", "1", "0");
     const std::regex number(R"(-?\b[0-9]+\b)");
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it) {
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), number);
+         it != std::sregex_iterator(); ++it) {
         if (size_t(it->position()) > text.find("base64,")) break;  // the data: URI and after
         for (const char* value : {"4000000000", "-1", "0", "2147483647", "65536"}) {
             std::string variant = text;
@@ -292,10 +301,11 @@ TEST_CASE("gltf: a file with nothing left to draw says what was skipped", "[gltf
       "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 8}],
       "buffers": [{"byteLength": 44, "uri": "$URI"}]})",
                                   {{"$URI", data_uri(bin.bytes)}});
-    CHECK_THAT(error_of(write_file("sparse_indices.gltf", text)),
-               ContainsSubstring("sparse_indices.gltf: nothing to draw: no node of the scene has a mesh "
-                                 "with triangles (sparse index accessors are not supported: primitives "
-                                 "using one are skipped)"));
+    CHECK_THAT(
+        error_of(write_file("sparse_indices.gltf", text)),
+        ContainsSubstring("sparse_indices.gltf: nothing to draw: no node of the scene has a mesh "
+                          "with triangles (sparse index accessors are not supported: primitives "
+                          "using one are skipped)"));
 }
 
 TEST_CASE("gltf: interleaved vertices (byteStride) and offsets (bufferView and accessor)",
@@ -310,7 +320,8 @@ TEST_CASE("gltf: interleaved vertices (byteStride) and offsets (bufferView and a
                                2, 0, 0, 0, 0, 1, 0.75f, 0.5f,  //
                                0, 3, 0, 0, 0, 1, 0.25f, 1.0f});
     const size_t index_offset = bin.add(std::vector<uint16_t>{9, 9, 2, 1, 0, 0});
-    const std::string text = fill(R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+    const std::string text =
+        fill(R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
       "nodes": [{"mesh": 0}],
       "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3}]}],
       "accessors": [
@@ -321,9 +332,9 @@ TEST_CASE("gltf: interleaved vertices (byteStride) and offsets (bufferView and a
       "bufferViews": [{"buffer": 0, "byteOffset": 8, "byteLength": 96, "byteStride": 32},
                       {"buffer": 0, "byteOffset": $IOFF, "byteLength": 12}],
       "buffers": [{"byteLength": $LEN, "uri": "interleaved.bin"}]})",
-                                  {{"$IOFF", std::to_string(index_offset)},
-                                   {"$LEN", std::to_string(bin.bytes.size())}});
-    write_bytes(temp_dir() / "interleaved.bin", bin.bytes.data(), bin.bytes.size());  // external buffer
+             {{"$IOFF", std::to_string(index_offset)}, {"$LEN", std::to_string(bin.bytes.size())}});
+    write_bytes(temp_dir() / "interleaved.bin", bin.bytes.data(),
+                bin.bytes.size());  // external buffer
     vkt::GltfScene scene = vkt::load_gltf(write_file("interleaved.gltf", text));
     REQUIRE(scene.vertices.size() == 3);
     CHECK(scene.vertices[1].position == glm::vec3(2, 0, 0));
@@ -354,8 +365,10 @@ TEST_CASE("gltf: normalised unsigned byte texture coordinates", "[gltf]") {
     CHECK(scene.vertices[2].uv.x == Approx(0.2));
     CHECK(scene.vertices[2].uv.y == Approx(0.4));
     // Not normalised: glTF does not allow unsigned bytes for TEXCOORD_0.
-    CHECK_THAT(error_of(write_file("uv8.gltf", fill(text, {{"$NORM", "false"}}))),
-               ContainsSubstring("TEXCOORD_0: accessor 1 is VEC2 of UNSIGNED_BYTE, which glTF does not allow here"));
+    CHECK_THAT(
+        error_of(write_file("uv8.gltf", fill(text, {{"$NORM", "false"}}))),
+        ContainsSubstring(
+            "TEXCOORD_0: accessor 1 is VEC2 of UNSIGNED_BYTE, which glTF does not allow here"));
 }
 
 TEST_CASE("gltf: a hand-made .glb with its image in a bufferView", "[gltf]") {
@@ -414,8 +427,8 @@ TEST_CASE("gltf: a hand-made .glb with its image in a bufferView", "[gltf]") {
     CHECK(scene.images[0].pixels == std::vector<uint8_t>{255, 0, 0, 255, 0, 0, 255, 255});
 
     // The image's view running past the buffer is caught before anything reads it.
-    const std::string broken = fill(json, {{"\"byteLength\": " + std::to_string(png_bytes.size()),
-                                            "\"byteLength\": 99999"}});
+    const std::string broken = fill(
+        json, {{"\"byteLength\": " + std::to_string(png_bytes.size()), "\"byteLength\": 99999"}});
     const std::vector<uint8_t> broken_glb = make_glb(broken);
     write_bytes(temp_dir() / "broken_image_view.glb", broken_glb.data(), broken_glb.size());
     CHECK_THAT(error_of(temp_dir() / "broken_image_view.glb"),
@@ -429,12 +442,15 @@ TEST_CASE("gltf: a material's factor and its embedded PNG texture; the default m
     vkt::write_png(png, {1, 2, {10, 20, 30, 255, 40, 50, 60, 128}});
     Triangle t(5121);
     std::string text = triangle_file(t, 5121);
-    text = fill(text, {{R"("indices": 1})", R"("indices": 1, "material": 0}, {"attributes": {"POSITION": 0}})"},
+    text = fill(text, {{R"("indices": 1})",
+                        R"("indices": 1, "material": 0}, {"attributes": {"POSITION": 0}})"},
                        {"$EXTRA", ""}});
     text.pop_back();  // the closing brace
-    text += R"(, "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [1, 0.5, 0.25, 0.75], "baseColorTexture": {"index": 0}}}],
+    text +=
+        R"(, "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [1, 0.5, 0.25, 0.75], "baseColorTexture": {"index": 0}}}],
       "textures": [{"source": 0, "sampler": 0}], "samplers": [{"wrapS": 10497, "wrapT": 10497}],
-      "images": [{"uri": ")" + data_uri(bytes_of(png), "image/png") + R"("}]})";
+      "images": [{"uri": ")" +
+        data_uri(bytes_of(png), "image/png") + R"("}]})";
     vkt::GltfScene scene = vkt::load_gltf(write_file("material.gltf", text));
     REQUIRE(scene.primitives.size() == 2);
     REQUIRE(scene.materials.size() == 2);  // the file's, and the default one after it
@@ -461,7 +477,8 @@ TEST_CASE("gltf: world matrices are parent * child, from matrix and from TRS", "
     Bin bin;
     bin.add(std::vector<float>{0, 0, 1, 1, 0, 1, 0, 1, 1});
     const float h = std::sqrt(0.5f);
-    const std::string text = fill(R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+    const std::string text =
+        fill(R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
       "nodes": [{"translation": [0, 0, -5], "children": [1]},
                 {"matrix": [0, 0, -1, 0,  0, 1, 0, 0,  1, 0, 0, 0,  10, 0, 0, 1], "children": [2, 3]},
                 {"mesh": 0, "translation": [0, 2, 0], "rotation": [0, 0, $H, $H], "scale": [2, 2, 2]},
@@ -470,10 +487,10 @@ TEST_CASE("gltf: world matrices are parent * child, from matrix and from TRS", "
       "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
       "bufferViews": [{"buffer": 0, "byteLength": 36}],
       "buffers": [{"byteLength": 36, "uri": "$URI"}]})",
-                                  {{"$H", std::to_string(h)}, {"$URI", data_uri(bin.bytes)}});
+             {{"$H", std::to_string(h)}, {"$URI", data_uri(bin.bytes)}});
     vkt::GltfScene scene = vkt::load_gltf(write_file("hierarchy.gltf", text));
-    REQUIRE(scene.draws.size() == 2);       // the mesh is used by two nodes...
-    CHECK(scene.primitives.size() == 1);    // ...and built once
+    REQUIRE(scene.draws.size() == 2);     // the mesh is used by two nodes...
+    CHECK(scene.primitives.size() == 1);  // ...and built once
     const glm::vec4 child = scene.draws[0].world * glm::vec4(0, 0, 1, 1);
     CHECK(child.x == Approx(12).margin(1e-5));
     CHECK(child.y == Approx(2).margin(1e-5));
@@ -488,7 +505,8 @@ TEST_CASE("gltf: world matrices are parent * child, from matrix and from TRS", "
     CHECK(scene.bounds_min.z == Approx(-6).margin(1e-5));
 
     // A cycle never ends; it is refused.
-    const std::string cycle = fill(text, {{R"({"mesh": 0}],)", R"({"mesh": 0, "children": [0]}],)"}});
+    const std::string cycle =
+        fill(text, {{R"({"mesh": 0}],)", R"({"mesh": 0, "children": [0]}],)"}});
     CHECK_THAT(error_of(write_file("cycle.gltf", cycle)),
                ContainsSubstring("node 0 appears twice in the node tree"));
 }
@@ -508,10 +526,13 @@ TEST_CASE("gltf: bad input gives one line naming the file and the fault", "[gltf
     SECTION("not glTF") {
         CHECK_THAT(error_of(write_file("not_gltf.gltf", "hello, I am not JSON")),
                    ContainsSubstring("not_gltf.gltf: not a glTF file"));
-        CHECK_THAT(error_of(write_file("not_gltf2.gltf", R"({"asset": {"version": "2.0"}, "nodes": 5})")),
-                   ContainsSubstring("not_gltf2.gltf: "));
-        CHECK_THAT(error_of(write_file("empty.gltf", "")), ContainsSubstring("empty.gltf: not a glTF file"));
-        CHECK_THAT(error_of(write_file("short.glb", "glTF\x02")), ContainsSubstring("short.glb: not a glTF file (.glb)"));
+        CHECK_THAT(
+            error_of(write_file("not_gltf2.gltf", R"({"asset": {"version": "2.0"}, "nodes": 5})")),
+            ContainsSubstring("not_gltf2.gltf: "));
+        CHECK_THAT(error_of(write_file("empty.gltf", "")),
+                   ContainsSubstring("empty.gltf: not a glTF file"));
+        CHECK_THAT(error_of(write_file("short.glb", "glTF\x02")),
+                   ContainsSubstring("short.glb: not a glTF file (.glb)"));
     }
     SECTION("an accessor running past the end of its bufferView") {
         Triangle t(5125);
@@ -523,21 +544,28 @@ TEST_CASE("gltf: bad input gives one line naming the file and the fault", "[gltf
     SECTION("a bufferView running past the end of its buffer") {
         Triangle t(5125);
         std::string text = triangle_file(t, 5125);
-        text = fill(text, {{R"("byteOffset": 0, "byteLength": 36)", R"("byteOffset": 40, "byteLength": 36)"}});
-        CHECK_THAT(error_of(write_file("long_view.gltf", text)),
-                   ContainsSubstring("bufferView 0 (offset 40, length 36) runs past the end of buffer 0 (48 bytes)"));
+        text = fill(text, {{R"("byteOffset": 0, "byteLength": 36)",
+                            R"("byteOffset": 40, "byteLength": 36)"}});
+        CHECK_THAT(
+            error_of(write_file("long_view.gltf", text)),
+            ContainsSubstring(
+                "bufferView 0 (offset 40, length 36) runs past the end of buffer 0 (48 bytes)"));
     }
     SECTION("an index past the end of the vertex data") {
         Triangle t(5123, {0, 1, 7});
-        CHECK_THAT(error_of(write_file("bad_index.gltf", triangle_file(t, 5123))),
-                   ContainsSubstring("bad_index.gltf: mesh 0 primitive 0: index 2 is 7, past the end "
-                                     "of the vertex data (3 vertices)"));
+        CHECK_THAT(
+            error_of(write_file("bad_index.gltf", triangle_file(t, 5123))),
+            ContainsSubstring("bad_index.gltf: mesh 0 primitive 0: index 2 is 7, past the end "
+                              "of the vertex data (3 vertices)"));
     }
     SECTION("a type glTF does not allow for the attribute") {
         Triangle t(5125);
-        CHECK_THAT(error_of(write_file("vec2_position.gltf", triangle_file(t, 5125, "", "3", "VEC2"))),
-                   ContainsSubstring("POSITION: accessor 0 is VEC2 of FLOAT, which glTF does not allow here"));
-        std::string signed_indices = fill(triangle_file(t, 5125), {{"\"componentType\": 5125", "\"componentType\": 5124"}});
+        CHECK_THAT(
+            error_of(write_file("vec2_position.gltf", triangle_file(t, 5125, "", "3", "VEC2"))),
+            ContainsSubstring(
+                "POSITION: accessor 0 is VEC2 of FLOAT, which glTF does not allow here"));
+        std::string signed_indices =
+            fill(triangle_file(t, 5125), {{"\"componentType\": 5125", "\"componentType\": 5124"}});
         CHECK_THAT(error_of(write_file("int_indices.gltf", signed_indices)),
                    ContainsSubstring("index accessor 1 is SCALAR of"));
     }
@@ -549,15 +577,17 @@ TEST_CASE("gltf: bad input gives one line naming the file and the fault", "[gltf
         text += R"(, "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
           "textures": [{"source": 0}], "images": [{"uri": "not_an_image.png"}]})";
         write_text(temp_dir() / "not_an_image.png", "this is text, not a PNG");
-        CHECK_THAT(error_of(write_file("bad_image.gltf", text)),
-                   ContainsSubstring("bad_image.gltf: image 0 (not_an_image.png): cannot decode image"));
+        CHECK_THAT(
+            error_of(write_file("bad_image.gltf", text)),
+            ContainsSubstring("bad_image.gltf: image 0 (not_an_image.png): cannot decode image"));
         std::filesystem::remove(temp_dir() / "not_an_image.png");
         CHECK_THAT(error_of(temp_dir() / "bad_image.gltf"),
                    ContainsSubstring("cannot open") && ContainsSubstring("not_an_image.png"));
     }
     SECTION("a required extension") {
         Triangle t(5125);
-        const std::string extra = R"(, "extensionsUsed": ["KHR_draco_mesh_compression"], "extensionsRequired": ["KHR_draco_mesh_compression"])";
+        const std::string extra =
+            R"(, "extensionsUsed": ["KHR_draco_mesh_compression"], "extensionsRequired": ["KHR_draco_mesh_compression"])";
         CHECK_THAT(error_of(write_file("draco.gltf", triangle_file(t, 5125, extra))),
                    ContainsSubstring("draco.gltf: requires extension KHR_draco_mesh_compression, "
                                      "which this loader does not support"));
@@ -566,14 +596,17 @@ TEST_CASE("gltf: bad input gives one line naming the file and the fault", "[gltf
 
 TEST_CASE("gltf: what is not supported is named in a warning and skipped", "[gltf]") {
     Triangle t(5125);
-    const std::string extra = R"(, "extensionsUsed": ["KHR_materials_emissive_strength"], "animations": [])";
+    const std::string extra =
+        R"(, "extensionsUsed": ["KHR_materials_emissive_strength"], "animations": [])";
     std::string text = triangle_file(t, 5125, extra);
     // A second primitive of lines beside the triangle.
-    text = fill(text, {{R"("indices": 1})", R"("indices": 1}, {"attributes": {"POSITION": 0}, "mode": 1})"}});
+    text = fill(text, {{R"("indices": 1})",
+                        R"("indices": 1}, {"attributes": {"POSITION": 0}, "mode": 1})"}});
     vkt::GltfScene scene = vkt::load_gltf(write_file("warnings.gltf", text));
     CHECK(scene.primitives.size() == 1);
     REQUIRE(scene.warnings.size() == 2);
-    CHECK(scene.warnings[0] == "uses extension KHR_materials_emissive_strength, which this loader ignores");
+    CHECK(scene.warnings[0] ==
+          "uses extension KHR_materials_emissive_strength, which this loader ignores");
     CHECK(scene.warnings[1] == "points and lines are not supported: such primitives are skipped");
 }
 
@@ -587,14 +620,17 @@ TEST_CASE("gltf: no number in a valid file, made absurd, crashes the loader", "[
     std::string text = triangle_file(t, 5123);
     text = fill(text, {{R"("indices": 1})", R"("indices": 1, "material": 0})"}});
     text.pop_back();
-    text += R"(, "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 1], "baseColorTexture": {"index": 0, "texCoord": 0}}}],
+    text +=
+        R"(, "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 1], "baseColorTexture": {"index": 0, "texCoord": 0}}}],
       "textures": [{"source": 0, "sampler": 0}], "samplers": [{"wrapS": 10497}],
       "images": [{"uri": "fuzz_texture.png"}]})";
     REQUIRE_NOTHROW(vkt::load_gltf(write_file("fuzz.gltf", text)));
     const std::regex number(R"(-?\b[0-9]+(\.[0-9]+)?\b)");
     int variants = 0;
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it) {
-        if (size_t(it->position()) > text.find("base64,") && size_t(it->position()) < text.find("\"}]"))
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), number);
+         it != std::sregex_iterator(); ++it) {
+        if (size_t(it->position()) > text.find("base64,") &&
+            size_t(it->position()) < text.find("\"}]"))
             continue;  // inside the data: URI
         for (const char* value : {"4000000000", "-1", "0", "2147483647", "1e30"}) {
             std::string variant = text;
@@ -624,7 +660,8 @@ TEST_CASE("gltf: the chapter's scene loads the same from .gltf and .glb", "[gltf
     CHECK(text.vertices.size() == binary.vertices.size());
     CHECK(std::memcmp(text.vertices.data(), binary.vertices.data(),
                       text.vertices.size() * sizeof(vkt::GltfVertex)) == 0);
-    for (size_t i = 0; i < text.images.size(); ++i) CHECK(text.images[i].pixels == binary.images[i].pixels);
+    for (size_t i = 0; i < text.images.size(); ++i)
+        CHECK(text.images[i].pixels == binary.images[i].pixels);
     CHECK(text.bounds_min == binary.bounds_min);
     CHECK(text.bounds_max == binary.bounds_max);
     // The floor is 6 x 6 at y = 0; the pyramid on the brick cube is the tallest.

@@ -127,8 +127,8 @@ TEST_CASE("a stack of 10 boxes settles and stays, in order", "[physics]") {
         const Body& above = now[std::size_t(i)];
         // Kept in order: each box sits on the one below, into it by no more
         // than a little over the slop, and has not slid sideways.
-        const float gap = (above.position.y - above.half_extents.y) -
-                          (below.position.y + below.half_extents.y);
+        const float gap =
+            (above.position.y - above.half_extents.y) - (below.position.y + below.half_extents.y);
         CHECK(gap < 0.0f);
         CHECK(gap > -0.01f);
         CHECK(std::abs(above.position.x - settled[std::size_t(i)].position.x) < 1e-4f);
@@ -206,8 +206,8 @@ TEST_CASE("sort-and-sweep finds exactly the pairs brute force finds", "[physics]
                     // Every fifth static; every seventh sharing the last
                     // one's lowest x exactly (ties in the sort).
                     glm::vec3 p = at;
-                    if (i % 7 == 6) p.x = bodies.back().position.x - bodies.back().half_extents.x +
-                                          half.x;
+                    if (i % 7 == 6)
+                        p.x = bodies.back().position.x - bodies.back().half_extents.x + half.x;
                     bodies.push_back(box(p, half, i % 5 == 0 ? 0.0f : 1.0f));
                 }
                 const auto brute = find_pairs_brute_force(bodies);
@@ -216,8 +216,8 @@ TEST_CASE("sort-and-sweep finds exactly the pairs brute force finds", "[physics]
                              << brute.size() << " pairs");
                 CHECK(sweep == brute);
                 for (const Pair& pair : brute)
-                    CHECK_FALSE((bodies[pair.a].inverse_mass == 0 &&
-                                 bodies[pair.b].inverse_mass == 0));
+                    CHECK_FALSE(
+                        (bodies[pair.a].inverse_mass == 0 && bodies[pair.b].inverse_mass == 0));
             }
         }
     }

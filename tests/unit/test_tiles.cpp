@@ -20,8 +20,8 @@ TEST_CASE("tile_grid covers the screen, partial tiles included", "[tiles]") {
     CHECK(vkt::tile_grid(320, 240, 16).count() == 300);
     CHECK(vkt::tile_grid(1920, 1080, 16).x == 120);
     CHECK(vkt::tile_grid(1920, 1080, 16).y == 68);  // 1080 = 67.5 tiles: a half row
-    CHECK(vkt::tile_grid(250, 130, 16).x == 16);     // 15 full, 1 of 10 pixels
-    CHECK(vkt::tile_grid(250, 130, 16).y == 9);      // 8 full, 1 of 2 pixels
+    CHECK(vkt::tile_grid(250, 130, 16).x == 16);    // 15 full, 1 of 10 pixels
+    CHECK(vkt::tile_grid(250, 130, 16).y == 9);     // 8 full, 1 of 2 pixels
     CHECK(vkt::tile_grid(1, 1, 16).count() == 1);
     CHECK(vkt::tile_grid(16, 17, 16).count() == 2);
 }
@@ -51,7 +51,7 @@ TEST_CASE("tile frustum planes, worked by hand", "[tiles]") {
     // (Vulkan's framebuffer y points down, world y up).
     const vkt::TileFrustum f = vkt::tile_frustum(proj, 32, 32, 0, 0, 16, 1.0f, 10.0f);
     const float s = std::sqrt(0.5f);
-    CHECK(f.planes[0].x == Approx(s));   // x - z >= 0: x / -z >= -1
+    CHECK(f.planes[0].x == Approx(s));  // x - z >= 0: x / -z >= -1
     CHECK(f.planes[0].z == Approx(-s));
     CHECK(f.planes[1].x == Approx(-1.0f));  // -x >= 0: x / -z <= 0
     CHECK(f.planes[1].z == Approx(0.0f).margin(1e-6));

@@ -72,7 +72,7 @@ struct GltfScene {
     // Every material a primitive uses; a primitive without one gets glTF's
     // default material (white, factor 1), appended at the end when needed.
     std::vector<GltfMaterial> materials;
-    std::vector<RgbaImage> images;  // decoded RGBA8, only those a material uses
+    std::vector<RgbaImage> images;                 // decoded RGBA8, only those a material uses
     glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};  // world space, over every draw
     // What was skipped, one line each ("skins are not supported: ..."), without
     // the file name; load_gltf does not print them.
@@ -89,7 +89,8 @@ GltfScene load_gltf(const std::filesystem::path& path);
 // by column) if given, else T * R * S from translation (x, y, z), rotation (a
 // unit quaternion x, y, z, w) and scale; a missing part is the identity.
 // Throws vkt::Error for a matrix that is not 16 numbers and so on.
-glm::mat4 gltf_node_matrix(const std::vector<double>& matrix, const std::vector<double>& translation,
+glm::mat4 gltf_node_matrix(const std::vector<double>& matrix,
+                           const std::vector<double>& translation,
                            const std::vector<double>& rotation, const std::vector<double>& scale);
 
 }  // namespace vkt

@@ -73,9 +73,9 @@ struct Settings {
     float friction = 0.5f;               // Coulomb coefficient: |tangent impulse| <= mu * normal
     float restitution_threshold = 1.0f;  // m/s: slower impacts do not bounce (rest, not jitter)
     int iterations = 10;                 // sequential-impulse passes over all contacts
-    float slop = 0.005f;     // metres of penetration left alone (keeps resting contacts alive)
-    float percent = 0.4f;    // of the rest, the share pushed apart each step
-    bool warm_start = true;  // start each contact from last step's impulse...
+    float slop = 0.005f;          // metres of penetration left alone (keeps resting contacts alive)
+    float percent = 0.4f;         // of the rest, the share pushed apart each step
+    bool warm_start = true;       // start each contact from last step's impulse...
     float resting_speed = 0.01f;  // ...unless it is parting faster than this (m/s) or bouncing
     BroadPhase broad_phase = BroadPhase::sweep_and_prune;
 };
@@ -106,10 +106,10 @@ private:
     struct Contact {
         Pair pair;
         Penetration along;
-        float mass = 0;            // 1 / (1/m_a + 1/m_b): the pair's effective mass
-        float approach = 0;        // normal velocity before the impulses (< 0: closing)
-        float target = 0;          // the normal velocity wanted after the impulses
-        float normal_impulse = 0;  // accumulated this step (>= 0)
+        float mass = 0;                   // 1 / (1/m_a + 1/m_b): the pair's effective mass
+        float approach = 0;               // normal velocity before the impulses (< 0: closing)
+        float target = 0;                 // the normal velocity wanted after the impulses
+        float normal_impulse = 0;         // accumulated this step (>= 0)
         glm::vec2 tangent_impulse{0.0f};  // along the two other axes
     };
     void apply(const Contact& contact, float normal, glm::vec2 tangent);

@@ -43,8 +43,8 @@ struct TileFrustum {
 // NDC x = P[0][0] p.x / -p.z, y = P[1][1] p.y / -p.z. The tile's pixels span
 // [x0, x1] x [y0, y1], clipped to the screen, so the side planes bound the
 // slopes p.x / -p.z and p.y / -p.z.
-inline TileFrustum tile_frustum(const glm::mat4& proj, uint32_t width, uint32_t height,
-                                uint32_t tx, uint32_t ty, uint32_t tile, float near, float far) {
+inline TileFrustum tile_frustum(const glm::mat4& proj, uint32_t width, uint32_t height, uint32_t tx,
+                                uint32_t ty, uint32_t tile, float near, float far) {
     auto slope = [](uint32_t pixel, uint32_t size, float scale) {
         return (float(pixel) / float(size) * 2.0f - 1.0f) / scale;
     };
