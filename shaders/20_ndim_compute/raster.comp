@@ -7,6 +7,7 @@
 // largest word, the nearest line, whatever order the invocations run in; a
 // copy then moves the words to the colour target unchanged.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_memory_scope_semantics : require
 #include "ndim.glsl"
 
 layout(local_size_x = 64) in;
@@ -15,7 +16,7 @@ layout(local_size_x = 64) in;
 layout(constant_id = 0) const uint LANES = 1;
 layout(std430, set = 0, binding = 3) readonly buffer In { Projected projected[]; };
 layout(std430, set = 0, binding = 4) readonly buffer Lines { uint ends[]; };
-layout(r32ui, set = 0, binding = 5) uniform uimage2D raster;
+layout(std430, set = 0, binding = 5) buffer Pixels { uint pixels[]; };
 // The colour is chapter 18's depth colour, a function of the depth alone, so
 // each of the 255 depth levels has one word, built once on the CPU: the
 // colour sRGB-encoded in the target's byte order, the level in the top byte.
@@ -49,14 +50,22 @@ void main() {
     const float start = forward ? p0[major] : p1[major], end = forward ? p1[major] : p0[major];
     const int first = max(int(ceil(start - 0.5)), 0);
     const int last = min(int(ceil(end - 0.5)), int(push.size[major])) - 1;
+    const float per_pixel = 1.0 / d[major];  // t's step from one pixel to the next
     for (int i = first + int(lane); i <= last; i += int(LANES)) {
-        const float t = (float(i) + 0.5 - p0[major]) / d[major];  // 0 at a, 1 at b
+        const float t = (float(i) + 0.5 - p0[major]) * per_pixel;  // 0 at a, 1 at b
         const int j = int(floor(p0[minor] + t * d[minor]));
         if (j < 0 || j >= int(push.size[minor])) continue;
         // The depth t = -1..1 as level 1..255 (0 is the background).
         const float depth = clamp(0.5 + 0.5 * mix(a.depth, b.depth, t), 0.0, 1.0);
-        imageAtomicMax(raster, major == 0 ? ivec2(i, j) : ivec2(j, i),
-                       palette[1u + uint(depth * 254.0 + 0.5)]);
+        const uint word = palette[1u + uint(depth * 254.0 + 0.5)];
+        const uint at = major == 0 ? uint(j) * push.size.x + uint(i) : uint(i) * push.size.x + uint(j);
+        // Look before the read-modify-write: where a nearer line has the
+        // pixel already, which is most pixels where thousands of lines
+        // overlap, a plain (relaxed) atomic load is all it costs. Words only
+        // grow, so a load that misses a newer word only costs an atomicMax.
+        if (atomicLoad(pixels[at], gl_ScopeDevice, gl_StorageSemanticsBuffer,
+                       gl_SemanticsRelaxed) < word)
+            atomicMax(pixels[at], word);
     }
     // [/walk]
 }

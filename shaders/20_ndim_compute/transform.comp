@@ -1,6 +1,7 @@
 #version 450
 // Chapter 20: transform and project every unique vertex once per frame. One
-// invocation per vertex: row y of the dispatch is the object, x the vertex.
+// invocation per vertex (or a few, on a CPU device): row y of the dispatch
+// is the object, x the vertex.
 #extension GL_GOOGLE_include_directive : require
 #include "ndim.glsl"
 
@@ -8,6 +9,8 @@ layout(local_size_x = 64) in;
 // The dimension n, fixed when the pipeline is built: the loops below unroll
 // and the point fits in registers.
 layout(constant_id = 0) const int N = 4;
+// Whether each invocation keeps its own copy of the pose (a CPU device).
+layout(constant_id = 1) const bool OWN_COPY = false;
 
 struct Object {
     uint first_vertex;  // of its mesh, in coords (units of N floats)
@@ -26,7 +29,7 @@ layout(std430, set = 0, binding = 3) writeonly buffer Out { Projected projected[
 shared float pose[N * N + N];
 
 void main() {
-    const uint object = gl_WorkGroupID.y, v = gl_GlobalInvocationID.x;
+    const uint object = gl_WorkGroupID.y;
     const Object o = objects[object];
 
     // [transform]
@@ -36,38 +39,48 @@ void main() {
     for (uint i = gl_LocalInvocationID.x; i < uint(N * N + N); i += gl_WorkGroupSize.x)
         pose[i] = poses[object * uint(N * N + N) + i];
     barrier();
-    if (v >= o.vertex_count) return;
-    // x' = p + M x: N * N multiply-adds with the matrix the CPU built once
-    // for the whole object. No sine, no cosine, no plane loop per vertex.
-    const uint source = (o.first_vertex + v) * uint(N);
-    float x[N];
-    for (int r = 0; r < N; ++r) {
-        float sum = pose[N * N + r];
-        for (int c = 0; c < N; ++c) sum += pose[r * N + c] * coords[source + uint(c)];
-        x[r] = sum;
-    }
-    const float depth = (x[N - 1] - pose[N * N + N - 1]) * o.inv_radius;
-    // [/transform]
-
-    // [project]
-    // Down to 2D one dimension at a time, as vkt::ndim::project_to_2d: one
-    // running factor f carries every step; a point at or behind the eye is
-    // marked (alpha 0) and its lines are left out.
-    float f = 1.0;
-    bool visible = true;
-    if (push.orthographic == 0u)
-        for (int k = N - 1; k >= 2; --k) {
-            const float distance = push.eye - f * x[k];
-            if (!(distance > 0.0)) {
-                visible = false;
-                break;
-            }
-            f *= push.eye / distance;
+    // One vertex per invocation on a GPU, which reads the pose from shared
+    // memory as it goes. On a CPU device the dispatch is narrower and each
+    // invocation walks several vertices, a dispatch row apart, with its own
+    // copy m of the pose, read once for all of them (main.cpp).
+    float m[N * N + N];
+    if (OWN_COPY)
+        for (int i = 0; i < N * N + N; ++i) m[i] = pose[i];
+#define M(i) (OWN_COPY ? m[i] : pose[i])
+    const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+    for (uint v = gl_GlobalInvocationID.x; v < o.vertex_count; v += stride) {
+        // x' = p + M x: N * N multiply-adds with the matrix the CPU built
+        // once for the whole object. No sine, no cosine, no plane loop.
+        const uint source = (o.first_vertex + v) * uint(N);
+        float x[N];
+        for (int r = 0; r < N; ++r) {
+            float sum = M(N * N + r);
+            for (int c = 0; c < N; ++c) sum += M(r * N + c) * coords[source + uint(c)];
+            x[r] = sum;
         }
-    Projected p;
-    p.xy = visible ? vec2(f * x[0], f * x[1]) * push.to_clip : vec2(0.0);
-    p.colour = visible ? packUnorm4x8(vec4(depth_colour(depth), 1.0)) : 0u;
-    p.depth = depth;
-    projected[o.first_out + v] = p;
-    // [/project]
+        const float depth = (x[N - 1] - M(N * N + N - 1)) * o.inv_radius;
+        // [/transform]
+
+        // [project]
+        // Down to 2D one dimension at a time, as vkt::ndim::project_to_2d:
+        // one running factor f carries every step; a point at or behind the
+        // eye is marked (alpha 0) and its lines are left out.
+        float f = 1.0;
+        bool visible = true;
+        if (push.orthographic == 0u)
+            for (int k = N - 1; k >= 2; --k) {
+                const float distance = push.eye - f * x[k];
+                if (!(distance > 0.0)) {
+                    visible = false;
+                    break;
+                }
+                f *= push.eye / distance;
+            }
+        Projected p;
+        p.xy = visible ? vec2(f * x[0], f * x[1]) * push.to_clip : vec2(0.0);
+        p.colour = visible ? packUnorm4x8(vec4(depth_colour(depth), 1.0)) : 0u;
+        p.depth = depth;
+        projected[o.first_out + v] = p;
+        // [/project]
+    }
 }
