@@ -227,6 +227,7 @@ public:
             vkt::ShaderModule raster = vkt::load_shader(device_, context.chapter, "raster.comp");
             raster_ = vkt::create_compute_pipeline(device_, raster, layout_, &lanes);
             max_groups_x_ = context.properties.limits.maxComputeWorkGroupCount[0];
+            max_storage_range_ = context.properties.limits.maxStorageBufferRange;
             // [/raster-pipeline]
             resize(context.extent);
         }
@@ -239,11 +240,20 @@ public:
     // It follows the window's size.
     void resize(VkExtent2D extent) override {
         if (!compute_raster_) return;
-        pixels_ = vkt::create_buffer(
-            gpu_.physical, device_, VkDeviceSize(extent.width) * extent.height * 4,
-            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-            VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        // One descriptor sees the whole buffer, so it must fit in one
+        // storage-buffer range (at least 128 MiB: 5,792x5,792 pixels).
+        const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
+        if (bytes > max_storage_range_)
+            throw std::runtime_error("--raster compute: " + std::to_string(extent.width) + "x" +
+                                     std::to_string(extent.height) + " needs a pixel buffer of " +
+                                     std::to_string(bytes) +
+                                     " bytes, more than this device's maxStorageBufferRange (" +
+                                     std::to_string(max_storage_range_) + ")");
+        pixels_ = vkt::create_buffer(gpu_.physical, device_, bytes,
+                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                         VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                         VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                     VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
         for (VkDescriptorSet set : sets_)
             vkt::write_buffer_descriptor(device_, set, 5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                          pixels_.buffer, 0, VK_WHOLE_SIZE);
@@ -468,9 +478,10 @@ private:
     std::vector<VkDescriptorSet> sets_;  // [slot]
     vkt::PipelineLayout layout_;
     vkt::Pipeline transform_, lines_, raster_;
-    uint32_t max_groups_x_ = 65535;  // maxComputeWorkGroupCount[0]
-    int lanes_ = 1;                  // raster.comp's LANES
-    uint32_t background_ = 0;        // --raster compute: the clear value, as the target stores it
+    uint32_t max_groups_x_ = 65535;   // maxComputeWorkGroupCount[0]
+    uint32_t max_storage_range_ = 0;  // maxStorageBufferRange
+    int lanes_ = 1;                   // raster.comp's LANES
+    uint32_t background_ = 0;         // --raster compute: the clear value, as the target stores it
 };
 
 }  // namespace

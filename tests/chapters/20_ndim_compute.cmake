@@ -83,7 +83,7 @@ vkt_chapter_test(chapter.20_ndim_compute.help 20_ndim_compute EXIT 0 ARGS --help
   EXPECT "usage: 20_ndim_compute" "--raster graphics\\|compute" "--verify cpu")
 
 # Bad input: a dimension outside 3..12, a scene or a rasteriser that does
-# not exist, --dim on the 4D scene.
+# not exist, --dim on the 4D scene, a target too big for the pixel buffer.
 foreach(dim 2 13)
   vkt_chapter_test(bad_input.20_ndim_compute.dim_${dim} 20_ndim_compute EXIT 2
     ARGS --scene cube --dim ${dim} EXPECT "--dim wants a whole number from 3 to 12, not '${dim}'")
@@ -95,6 +95,11 @@ vkt_chapter_test(bad_input.20_ndim_compute.raster 20_ndim_compute EXIT 2 ARGS --
 vkt_chapter_test(bad_input.20_ndim_compute.dim_default_scene 20_ndim_compute EXIT 1
   ARGS --headless --frames 1 --dim 5
   EXPECT "--dim 5: the default scene is 4-dimensional; use --scene cube or --scene many")
+# A target whose pixel buffer does not fit in one storage-buffer range
+# (lavapipe's is 128 MiB, 134217728 bytes; 8192x4097 pixels need 32768 more).
+vkt_chapter_test(bad_input.20_ndim_compute.pixel_buffer_range 20_ndim_compute EXIT 1
+  ARGS --offscreen --frames 1 --size 8192x4097 --raster compute
+  EXPECT "8192x4097 needs a pixel buffer of 134250496 bytes, more than this device's maxStorageBufferRange \\(134217728\\)")
 
 # The compute rasteriser in a real window (B8G8R8A8 there too; the golden
 # image is the compute rasteriser's own).
