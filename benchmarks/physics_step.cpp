@@ -32,9 +32,9 @@ double time_steps(World world, BroadPhase broad_phase, int steps) {
     for (int i = 0; i < steps; ++i) {
         const auto begin = std::chrono::steady_clock::now();
         world.step();
-        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
-                                                               begin)
-                         .count());
+        ms.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
+                .count());
     }
     return median(ms);
 }
@@ -49,9 +49,9 @@ double time_pairs(const World& world, BroadPhase broad_phase, int runs) {
         found += broad_phase == BroadPhase::brute_force
                      ? find_pairs_brute_force(world.bodies()).size()
                      : find_pairs_sweep(world.bodies(), order).size();
-        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
-                                                               begin)
-                         .count());
+        ms.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
+                .count());
     }
     if (found == 0) std::fprintf(stderr, "physics_bench: no pairs?\n");
     return median(ms);
@@ -84,10 +84,11 @@ int main(int argc, char** argv) {
         const double sweep = time_steps(world, BroadPhase::sweep_and_prune, 31);
         const double brute_pairs = time_pairs(world, BroadPhase::brute_force, brute_steps);
         const double sweep_pairs = time_pairs(world, BroadPhase::sweep_and_prune, 31);
-        std::printf("{\"boxes\": %u, \"contacts\": %zu, \"step_brute_force_ms\": %.4f, "
-                    "\"step_sweep_ms\": %.4f, \"pairs_brute_force_ms\": %.4f, "
-                    "\"pairs_sweep_ms\": %.4f}\n",
-                    count, contacts, brute, sweep, brute_pairs, sweep_pairs);
+        std::printf(
+            "{\"boxes\": %u, \"contacts\": %zu, \"step_brute_force_ms\": %.4f, "
+            "\"step_sweep_ms\": %.4f, \"pairs_brute_force_ms\": %.4f, "
+            "\"pairs_sweep_ms\": %.4f}\n",
+            count, contacts, brute, sweep, brute_pairs, sweep_pairs);
         std::fflush(stdout);
     }
     return 0;

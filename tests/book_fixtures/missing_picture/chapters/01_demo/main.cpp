@@ -1,4 +1,5 @@
-// A fixture for the book tests (book/CMakeLists.txt): its page does not show tests/golden/01_demo.png.
+// A fixture for the book tests (book/CMakeLists.txt): its page does not
+// show tests/golden/01_demo.png.
 #include <cstdio>
 
 int main() {
