@@ -11,6 +11,7 @@
 // vkCmdDraw of a LINE_LIST. Chapters 19 and 20 move that work to the GPU.
 
 #include "vkt/ndim.hpp"
+#include "vkt/ndim_options.hpp"
 #include "vkt/pipeline.hpp"
 #include "vkt/runner.hpp"
 #include "vkt/shader.hpp"
@@ -56,15 +57,12 @@ class NdimCpu : public vkt::Renderer {
 public:
     explicit NdimCpu(const vkt::Context& context) : device_(context.device) {
         const auto& options = context.options;
-        const std::string scene = options.text("--scene");
-        if (scene == "default" && options.has("--dim"))
-            throw std::runtime_error("--dim " + options.text("--dim") +
-                                     ": the default scene is 4-dimensional; use --scene cube or "
-                                     "--scene many to choose n");
-        n_ = options.has("--dim") ? int(options.integer("--dim")) : 4;
-        still_ = options.text("--motion") == "still";
-        projection_ = options.text("--projection") == "orthographic" ? nd::Projection::orthographic
-                                                                     : nd::Projection::perspective;
+        const nd::SceneChoice choice = nd::scene_choice(options);
+        const std::string& scene = choice.scene;
+        n_ = choice.n;
+        still_ = choice.still;
+        projection_ =
+            choice.orthographic ? nd::Projection::orthographic : nd::Projection::perspective;
         naive_ = options.text("--matrix") == "naive";
         // The objects, their poses and spins, the eye distance and the view:
         // vkt::ndim::make_scene, shared with chapters 19 and 20.
@@ -297,37 +295,14 @@ int main(int argc, char** argv) {
     // [spec]
     vkt::ChapterSpec spec{
         .name = "18_ndim_cpu", .title = "18 - ndim_cpu", .input = vkt::InputUse::keys};
-    spec.options = {
-        {.name = "--scene",
-         .type = vkt::OptionType::choice,
-         .help = "a tesseract and a 24-cell, one n-cube, or 250 n-cubes",
-         .default_value = "default",
-         .choices = {"default", "cube", "many"}},
-        // 3: below that there is nothing to project. 12: 250 12-cubes are
-        // 6.1 million lines, 141 MiB of line vertices per frame in flight;
-        // each step up doubles the vertices and more than doubles the edges.
-        {.name = "--dim",
-         .type = vkt::OptionType::integer,
-         .value_name = "N",
-         .help = "the dimension n of the cubes of --scene cube and many (default 4)",
-         .min = 3,
-         .max = 12},
-        {.name = "--projection",
-         .type = vkt::OptionType::choice,
-         .help = "perspective (the eye on each last axis) or orthographic (drop it)",
-         .default_value = "perspective",
-         .choices = {"perspective", "orthographic"}},
-        {.name = "--motion",
-         .type = vkt::OptionType::choice,
-         .help = "turn in every plane, or stand still with every angle 0",
-         .default_value = "spin",
-         .choices = {"spin", "still"}},
+    // --scene, --dim, --projection and --motion: vkt/ndim_options.hpp.
+    spec.options = vkt::ndim::scene_options();
+    spec.options.push_back(
         {.name = "--matrix",
          .type = vkt::OptionType::choice,
          .help = "build the model matrix from full products (O(n^5)) or row by row (O(n^3))",
          .default_value = "naive",
-         .choices = {"naive", "rows"}},
-    };
+         .choices = {"naive", "rows"}});
     // [/spec]
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
         return std::make_unique<NdimCpu>(context);

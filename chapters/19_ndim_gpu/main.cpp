@@ -15,6 +15,7 @@
 #include "vkt/compute.hpp"
 #include "vkt/descriptors.hpp"
 #include "vkt/ndim.hpp"
+#include "vkt/ndim_options.hpp"
 #include "vkt/pipeline.hpp"
 #include "vkt/runner.hpp"
 #include "vkt/shader.hpp"
@@ -58,16 +59,12 @@ class NdimGpu : public vkt::Renderer {
 public:
     explicit NdimGpu(const vkt::Context& context) : gpu_(context.gpu()), device_(context.device) {
         const auto& options = context.options;
-        const std::string scene = options.text("--scene");
-        if (scene == "default" && options.has("--dim"))
-            throw std::runtime_error("--dim " + options.text("--dim") +
-                                     ": the default scene is 4-dimensional; use --scene cube or "
-                                     "--scene many to choose n");
-        n_ = options.has("--dim") ? int(options.integer("--dim")) : 4;
-        controls_ = ch19::Controls(n_, options.text("--projection") == "orthographic"
-                                           ? nd::Projection::orthographic
-                                           : nd::Projection::perspective);
-        still_ = options.text("--motion") == "still";
+        const nd::SceneChoice choice = nd::scene_choice(options);
+        const std::string& scene = choice.scene;
+        n_ = choice.n;
+        controls_ = ch19::Controls(
+            n_, choice.orthographic ? nd::Projection::orthographic : nd::Projection::perspective);
+        still_ = choice.still;
         verify_ = options.has("--verify");
         verify_frame_ = options.frames.value_or(1) - 1;
         if (verify_ && !context.features.has(VKT_FEATURE_10(vertexPipelineStoresAndAtomics)))
@@ -471,51 +468,30 @@ int main(int argc, char** argv) {
     spec.requirements.features = {VKT_FEATURE_10(shaderClipDistance)};
     spec.requirements.optional_features = {VKT_FEATURE_10(vertexPipelineStoresAndAtomics),
                                            VKT_FEATURE_10(pipelineStatisticsQuery)};
-    spec.options = {
-        {.name = "--scene",
-         .type = vkt::OptionType::choice,
-         .help = "a tesseract and a 24-cell, one n-cube, or 250 n-cubes",
-         .default_value = "default",
-         .choices = {"default", "cube", "many"}},
-        // 3..12, as chapters 18 and 20, so that all three draw the same
-        // scenes; the shader's arrays of N floats and N(N-1)/2 sin/cos
-        // pairs per vertex grow past that, and 250 13-cubes are 13 million
-        // lines a frame.
-        {.name = "--dim",
-         .type = vkt::OptionType::integer,
-         .value_name = "N",
-         .help = "the dimension n of the cubes of --scene cube and many (default 4)",
-         .min = 3,
-         .max = 12},
-        {.name = "--projection",
-         .type = vkt::OptionType::choice,
-         .help = "perspective (the eye on each last axis) or orthographic (drop it)",
-         .default_value = "perspective",
-         .choices = {"perspective", "orthographic"}},
-        {.name = "--motion",
-         .type = vkt::OptionType::choice,
-         .help = "turn in every plane, or stand still with every angle 0",
-         .default_value = "spin",
-         .choices = {"spin", "still"}},
-        {.name = "--edge-order",
-         .type = vkt::OptionType::choice,
-         .help =
-             "the index buffer's edges by vertex (reused shading) or by axis (chapter 18's order)",
-         .default_value = "vertex",
-         .choices = {"vertex", "axis"}},
-        {.name = "--eye",
-         .type = vkt::OptionType::number,
-         .value_name = "D",
-         .help = "the eye distance on each last axis (default: the scene's, far enough for no "
-                 "clipping)",
-         .min = 0.1,
-         .max = 1000},
-        {.name = "--verify",
-         .type = vkt::OptionType::choice,
-         .value_name = "CHECK",
-         .help = "cpu: capture the last frame's projected vertices, compare with the CPU",
-         .choices = {"cpu"}},
-    };
+    // --scene, --dim, --projection and --motion: vkt/ndim_options.hpp.
+    spec.options = vkt::ndim::scene_options();
+    spec.options.insert(
+        spec.options.end(),
+        {
+            {.name = "--edge-order",
+             .type = vkt::OptionType::choice,
+             .help = "the index buffer's edges by vertex (reused shading) or by axis (chapter 18's "
+                     "order)",
+             .default_value = "vertex",
+             .choices = {"vertex", "axis"}},
+            {.name = "--eye",
+             .type = vkt::OptionType::number,
+             .value_name = "D",
+             .help = "the eye distance on each last axis (default: the scene's, far enough for no "
+                     "clipping)",
+             .min = 0.1,
+             .max = 1000},
+            {.name = "--verify",
+             .type = vkt::OptionType::choice,
+             .value_name = "CHECK",
+             .help = "cpu: capture the last frame's projected vertices, compare with the CPU",
+             .choices = {"cpu"}},
+        });
     // [/spec]
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
         return std::make_unique<NdimGpu>(context);

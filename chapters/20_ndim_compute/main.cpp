@@ -16,6 +16,7 @@
 #include "vkt/compute.hpp"
 #include "vkt/descriptors.hpp"
 #include "vkt/ndim.hpp"
+#include "vkt/ndim_options.hpp"
 #include "vkt/pipeline.hpp"
 #include "vkt/runner.hpp"
 #include "vkt/shader.hpp"
@@ -44,19 +45,16 @@ public:
     explicit NdimCompute(const vkt::Context& context)
         : gpu_(context.gpu()), device_(context.device) {
         const auto& options = context.options;
-        const std::string scene = options.text("--scene");
-        if (scene == "default" && options.has("--dim"))
-            throw std::runtime_error("--dim " + options.text("--dim") +
-                                     ": the default scene is 4-dimensional; use --scene cube or "
-                                     "--scene many to choose n");
-        n_ = options.has("--dim") ? int(options.integer("--dim")) : 4;
-        still_ = options.text("--motion") == "still";
+        const nd::SceneChoice choice = nd::scene_choice(options);
+        const std::string& scene = choice.scene;
+        n_ = choice.n;
+        still_ = choice.still;
         compute_raster_ = options.text("--raster") == "compute";
         verify_ = options.has("--verify");
         verify_frame_ = options.frames.value_or(1) - 1;
         benchmark_ = options.benchmark;
         scene_ = nd::make_scene(scene, n_, still_);
-        keys_ = ch20::Keys(n_, options.text("--projection") == "orthographic");
+        keys_ = ch20::Keys(n_, choice.orthographic);
 
         // [static-buffers]
         // Built once: each mesh's coordinates (shared by all its objects),
@@ -497,41 +495,21 @@ int main(int argc, char** argv) {
     // The build's SPIR-V gives compute shaders their workgroup size as
     // LocalSizeId, which needs maintenance4 (as in chapter 13).
     spec.requirements.features = {VKT_FEATURE_13(maintenance4)};
-    spec.options = {
-        {.name = "--scene",
-         .type = vkt::OptionType::choice,
-         .help = "a tesseract and a 24-cell, one n-cube, or 250 n-cubes",
-         .default_value = "default",
-         .choices = {"default", "cube", "many"}},
-        // 12, as chapter 18: 250 12-cubes are 6.1 million lines, a 49 MiB
-        // index buffer and 16 MiB of projected vertices per frame in flight;
-        // the shader's point (float x[N]) lives in registers up to there.
-        {.name = "--dim",
-         .type = vkt::OptionType::integer,
-         .value_name = "N",
-         .help = "the dimension n of the cubes of --scene cube and many (default 4)",
-         .min = 3,
-         .max = 12},
-        {.name = "--projection",
-         .type = vkt::OptionType::choice,
-         .help = "perspective (the eye on each last axis) or orthographic (drop it)",
-         .default_value = "perspective",
-         .choices = {"perspective", "orthographic"}},
-        {.name = "--motion",
-         .type = vkt::OptionType::choice,
-         .help = "turn in every plane, or stand still with every angle 0",
-         .default_value = "spin",
-         .choices = {"spin", "still"}},
-        {.name = "--raster",
-         .type = vkt::OptionType::choice,
-         .help = "draw the lines with the graphics pipeline, or with a compute pass",
-         .default_value = "graphics",
-         .choices = {"graphics", "compute"}},
-        {.name = "--verify",
-         .type = vkt::OptionType::choice,
-         .help = "on the last frame, check the GPU's projected vertices against the CPU's",
-         .choices = {"cpu"}},
-    };
+    // --scene, --dim, --projection and --motion: vkt/ndim_options.hpp.
+    spec.options = vkt::ndim::scene_options();
+    spec.options.insert(
+        spec.options.end(),
+        {
+            {.name = "--raster",
+             .type = vkt::OptionType::choice,
+             .help = "draw the lines with the graphics pipeline, or with a compute pass",
+             .default_value = "graphics",
+             .choices = {"graphics", "compute"}},
+            {.name = "--verify",
+             .type = vkt::OptionType::choice,
+             .help = "on the last frame, check the GPU's projected vertices against the CPU's",
+             .choices = {"cpu"}},
+        });
     // [/spec]
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
         return std::make_unique<NdimCompute>(context);
