@@ -29,7 +29,11 @@ frames=$(tail -n "+$((m + 1))" "$err" | grep -oE "minimised after [0-9]+" | grep
 # tick or two at most, for the window manager's events), while one that polls
 # in a loop is charged most of the time it is given, however loaded the
 # machine. The samples are spread out only to give a spinning loop the chance
-# to show itself: a sleeping thread passes whatever the spacing.
+# to show itself: a sleeping thread passes whatever the spacing. A slow
+# machine may charge a sleeping thread more ticks for the same few events, so
+# the ticks alone are not the verdict: the thread fails only if it was also
+# seen asleep in fewer than 15 of the samples (a polling loop is seen running
+# in nearly all of them).
 before=$(main_thread_ticks)
 sleeping=0
 for _ in $(seq 20); do
@@ -39,7 +43,8 @@ for _ in $(seq 20); do
 done
 used=$(($(main_thread_ticks) - before))
 echo "while minimised: main thread asleep in $sleeping of 20 samples, $used clock ticks of CPU time"
-[ "$used" -le 3 ] || fail "the chapter spins while minimised ($used clock ticks of CPU time)"
+[ "$used" -le 3 ] || [ "$sleeping" -ge 15 ] ||
+  fail "the chapter spins while minimised ($used clock ticks of CPU time, asleep in $sleeping of 20 samples)"
 grep -q "presented a frame" <(tail -n "+$((m + 1))" "$err") && fail "a frame was presented while minimised"
 
 m=$(mark)
