@@ -60,6 +60,6 @@ if(XVFB_RUN AND XDOTOOL AND OPENBOX)
     COMMAND ${XVFB_RUN} -a -s "-screen 0 800x600x24"
             ${CMAKE_CURRENT_SOURCE_DIR}/window_camera.sh $<TARGET_FILE:11_camera>
             ${VKT_TEST_OUTPUT} "11 - camera")
-  set_tests_properties(chapter.11_camera.window_escape PROPERTIES RESOURCE_LOCK xvfb
+  set_tests_properties(chapter.11_camera.window_escape PROPERTIES
     ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS "chapter;window")
 endif()

@@ -65,6 +65,6 @@ if(XVFB_RUN AND XDOTOOL AND OPENBOX)
     COMMAND ${XVFB_RUN} -a -s "-screen 0 800x600x24"
             ${CMAKE_CURRENT_SOURCE_DIR}/window_ndim_keys.sh $<TARGET_FILE:18_ndim_cpu>
             ${VKT_TEST_OUTPUT} "18 - ndim_cpu")
-  set_tests_properties(chapter.18_ndim_cpu.window_keys PROPERTIES RESOURCE_LOCK xvfb
+  set_tests_properties(chapter.18_ndim_cpu.window_keys PROPERTIES
     ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS "chapter;window")
 endif()

@@ -92,7 +92,7 @@ if(XVFB_RUN AND XDOTOOL AND OPENBOX)
     COMMAND ${XVFB_RUN} -a -s "-screen 0 800x600x24"
             ${CMAKE_CURRENT_SOURCE_DIR}/window_ndim_keys.sh $<TARGET_FILE:19_ndim_gpu>
             ${VKT_TEST_OUTPUT}/19_ndim_gpu.window_keys "19 - ndim_gpu")
-  set_tests_properties(chapter.19_ndim_gpu.window_keys PROPERTIES RESOURCE_LOCK xvfb
+  set_tests_properties(chapter.19_ndim_gpu.window_keys PROPERTIES
     ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS "chapter;window")
 endif()
 
