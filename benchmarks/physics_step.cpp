@@ -1,4 +1,4 @@
-// physics_bench: the time of one physics step (vkt/physics.hpp, chapter 14)
+// physics_bench: the time of one physics step (vkt/domains/physics.hpp, chapter 14)
 // against the number of boxes, with the brute-force broad phase and with
 // sort-and-sweep. Not a test: it prints one JSON line per box count.
 //
@@ -7,7 +7,7 @@
 // Each count: chapter 14's scene (vkt::physics::add_falling_boxes), 2 s
 // simulated with sort-and-sweep so the boxes have landed and touch, then the
 // same world stepped with each broad phase; medians of the step times.
-#include "vkt/physics.hpp"
+#include "vkt/domains/physics.hpp"
 
 #include <algorithm>
 #include <chrono>

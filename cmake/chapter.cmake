@@ -1,14 +1,17 @@
-# vkt_add_chapter(<NN_name> [SHADERS files...])
-# One executable per chapter, linked to the helper library; its shaders (if any)
-# live in shaders/<NN_name>/ and become a target the executable depends on.
+# vkt_add_chapter(<NN_name> [SHADERS files...] [SHARED_SHADERS files...])
+# One executable per chapter, linked to the helper library. SHADERS live in
+# shaders/<NN_name>/; SHARED_SHADERS (paths under shaders/common/) are what an
+# earlier chapter taught and a later one reuses. Both compile into the
+# chapter's own SPIR-V folder, so no chapter loads another chapter's files.
 function(vkt_add_chapter name)
-  cmake_parse_arguments(ARG "" "" "SHADERS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SHADERS;SHARED_SHADERS" ${ARGN})
   add_executable(${name} main.cpp)
   target_link_libraries(${name} PRIVATE vkt vkt_warnings)
   add_dependencies(${name} vkt_assets)
-  if(ARG_SHADERS)
-    list(TRANSFORM ARG_SHADERS PREPEND ${PROJECT_SOURCE_DIR}/shaders/${name}/)
-    vkt_add_shaders(${name}_shaders ${name} ${ARG_SHADERS})
+  list(TRANSFORM ARG_SHADERS PREPEND ${PROJECT_SOURCE_DIR}/shaders/${name}/)
+  list(TRANSFORM ARG_SHARED_SHADERS PREPEND ${PROJECT_SOURCE_DIR}/shaders/common/)
+  if(ARG_SHADERS OR ARG_SHARED_SHADERS)
+    vkt_add_shaders(${name}_shaders ${name} ${ARG_SHADERS} ${ARG_SHARED_SHADERS})
     add_dependencies(${name} ${name}_shaders)
   endif()
   set_property(GLOBAL APPEND PROPERTY VKT_CHAPTERS ${name})

@@ -19,7 +19,7 @@
 // DIR/shaders (prepared by the test: empty, or holding corrupt SPIR-V) instead
 // of the build's.
 
-#include "vkt/image_io.hpp"
+#include "vkt/resources/image_io.hpp"
 
 #include <fcntl.h>
 #include <sys/wait.h>

@@ -6,8 +6,8 @@
 // (debug utils, so the validation layer can talk to us). Then we list what
 // the instance can see: the physical devices.
 
-#include "vkt/check.hpp"
-#include "vkt/runner.hpp"
+#include "vkt/core/check.hpp"
+#include "vkt/frame/runner.hpp"
 
 #include <cstdio>
 #include <cstring>

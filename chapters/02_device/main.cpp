@@ -6,8 +6,8 @@
 // logical device on the winner with the features we will use: Vulkan 1.3's
 // dynamic rendering and synchronization2.
 
-#include "vkt/instance.hpp"
-#include "vkt/runner.hpp"
+#include "vkt/core/instance.hpp"
+#include "vkt/frame/runner.hpp"
 
 #include <algorithm>
 #include <cctype>

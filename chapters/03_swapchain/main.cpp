@@ -1,7 +1,7 @@
 // Chapter 03: the swapchain and the frame loop.
 //
 // Everything that turns commands into pictures on a screen lives in the
-// runner (common/src/runner.cpp and common/src/swapchain.cpp), which this
+// runner (common/frame/src/runner.cpp and common/core/src/swapchain.cpp), which this
 // chapter's page walks through: the surface, the swapchain, acquiring and
 // presenting images, semaphores and fences, two frames in flight, and
 // recreating the swapchain when the window changes size. Every later chapter
@@ -12,7 +12,7 @@
 // command, so it needs the image in a transfer layout, and getting it there
 // (and back) is our first pipeline barrier.
 
-#include "vkt/runner.hpp"
+#include "vkt/frame/runner.hpp"
 
 #include <cmath>
 

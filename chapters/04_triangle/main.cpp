@@ -6,9 +6,9 @@
 // render pass or framebuffer objects). The runner from chapter 03 does the
 // rest.
 
-#include "vkt/files.hpp"
-#include "vkt/owned.hpp"
-#include "vkt/runner.hpp"
+#include "vkt/core/files.hpp"
+#include "vkt/core/owned.hpp"
+#include "vkt/frame/runner.hpp"
 
 #include <cstring>
 

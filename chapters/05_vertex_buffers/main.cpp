@@ -6,13 +6,13 @@
 // that says which three vertices make each of its six triangles. Getting them
 // into fast device-local memory takes a staging buffer and a copy on the GPU,
 // all written out below. From chapter 06 on, vkt::create_buffer,
-// vkt::one_time_submit and vkt::create_device_buffer (common/src/upload.cpp)
+// vkt::one_time_submit and vkt::create_device_buffer (common/resources/src/upload.cpp)
 // do the same in one call each.
 
-#include "vkt/owned.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
+#include "vkt/core/owned.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
 
 #include <glm/glm.hpp>
 

@@ -8,10 +8,10 @@
 // buffer, no descriptor. The buffers themselves come from chapter 05's
 // vkt::create_device_buffer.
 
-#include "vkt/pipeline.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
-#include "vkt/upload.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/resources/upload.hpp"
 
 #include <glm/glm.hpp>
 

@@ -13,11 +13,11 @@
 // other, even when it is behind it.
 
 #include "uniforms.hpp"
-#include "vkt/align.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
-#include "vkt/upload.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/resources/align.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/resources/upload.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

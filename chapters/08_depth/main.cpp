@@ -8,16 +8,16 @@
 // device supports, the depth image and its per-frame barrier, the depth
 // attachment in vkCmdBeginRendering, and a perspective camera whose depth
 // runs from 0 at the near plane to 1 at the far plane. Descriptors come from
-// chapter 07's helpers (vkt/descriptors.hpp).
+// chapter 07's helpers (vkt/resources/descriptors.hpp).
 
 #include "uniforms.hpp"
-#include "vkt/align.hpp"
-#include "vkt/barrier.hpp"
-#include "vkt/descriptors.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
-#include "vkt/upload.hpp"
+#include "vkt/core/barrier.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/resources/align.hpp"
+#include "vkt/resources/descriptors.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/resources/upload.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -125,7 +125,7 @@ std::array<ObjectUniforms, object_count> scene(double t) {
 // The camera at (0, 2, 5.5) looks at the origin. glm::perspective, with the
 // build's GLM_FORCE_DEPTH_ZERO_TO_ONE, maps depth to Vulkan's 0..1; negating
 // proj[1][1] turns world up into framebuffer up (Vulkan's y points down).
-// vkt::vulkan_perspective (vkt/camera_math.hpp) is this, for later chapters.
+// vkt::vulkan_perspective (vkt/scene/camera_math.hpp) is this, for later chapters.
 FrameUniforms camera(VkExtent2D extent) {
     FrameUniforms frame;
     frame.view = glm::lookAt(glm::vec3(0.0f, 2.0f, 5.5f), glm::vec3(0.0f), glm::vec3(0, 1, 0));

@@ -7,12 +7,12 @@
 // every mip level is in use at once: `--mips none` shows what goes wrong
 // without them.
 
-#include "vkt/descriptors.hpp"
-#include "vkt/files.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
-#include "vkt/texture.hpp"
+#include "vkt/core/files.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/resources/descriptors.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/resources/texture.hpp"
 
 #include <stb/stb_image.h>
 

@@ -1,24 +1,24 @@
 // Chapter 10: glTF.
 //
 // A whole scene from a file: meshes, materials, textures and a node tree,
-// read by vkt::load_gltf (common/src/gltf.cpp, which the book walks through)
+// read by vkt::load_gltf (common/scene/src/gltf.cpp, which the book walks through)
 // into plain arrays. This file turns those arrays into GPU objects: one vertex
 // and one index buffer for every mesh, one texture per image, one descriptor
 // set per material, and one draw per (node, primitive) with its world matrix
 // in push constants. The camera frames the scene from its bounding box, so any
 // model the reader passes with --model fills the picture.
 
-#include "vkt/align.hpp"
-#include "vkt/camera_math.hpp"
-#include "vkt/depth.hpp"
-#include "vkt/descriptors.hpp"
-#include "vkt/files.hpp"
-#include "vkt/gltf.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
-#include "vkt/texture.hpp"
-#include "vkt/upload.hpp"
+#include "vkt/core/files.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/resources/align.hpp"
+#include "vkt/resources/depth.hpp"
+#include "vkt/resources/descriptors.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/resources/texture.hpp"
+#include "vkt/resources/upload.hpp"
+#include "vkt/scene/camera_math.hpp"
+#include "vkt/scene/gltf.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

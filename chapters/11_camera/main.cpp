@@ -6,18 +6,18 @@
 // Shift runs, and Escape first gives the cursor back, then quits. Headless,
 // and with --frames, there is no input: the camera follows a scripted path,
 // a function of the frame's time only, so frame 10 is always the same
-// picture. New here: vkt::FpsCamera (vkt/fps_camera.hpp), the input snapshot
+// picture. New here: vkt::FpsCamera (vkt/scene/fps_camera.hpp), the input snapshot
 // the runner hands each frame, and speed scaled by frame time. The drawing
 // is chapter 08's: one vertex buffer, a depth buffer, the matrix in a push
 // constant (chapter 06).
 
-#include "vkt/camera_math.hpp"
-#include "vkt/depth.hpp"
-#include "vkt/fps_camera.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
-#include "vkt/upload.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/resources/depth.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/resources/upload.hpp"
+#include "vkt/scene/camera_math.hpp"
+#include "vkt/scene/fps_camera.hpp"
 
 #include <algorithm>
 #include <cmath>

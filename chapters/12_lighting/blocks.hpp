@@ -4,7 +4,7 @@
 // ObjectPush. tests/unit/test_lighting.cpp checks every offset here against
 // the compiled SPIR-V.
 
-#include "vkt/lighting.hpp"
+#include "vkt/scene/lighting.hpp"
 
 #include <glm/glm.hpp>
 

@@ -3,7 +3,7 @@
 // A floor and a few shapes (cubes, low-poly spheres, tori, cylinders and a
 // squashed sphere) under coloured point lights that move with time. Each
 // surface point gets ambient light, Lambert diffuse light and a Blinn-Phong
-// highlight from every light, dimmed with distance (vkt/lighting.hpp on the
+// highlight from every light, dimmed with distance (vkt/scene/lighting.hpp on the
 // CPU, shaders/common/lighting.glsl on the GPU: the same formulas).
 //
 // The scene is mirror-symmetric about x = 0, and so are the lights: the left
@@ -14,15 +14,15 @@
 // and specialization constants.
 
 #include "blocks.hpp"
-#include "meshes.hpp"
-#include "vkt/camera_math.hpp"
-#include "vkt/depth.hpp"
-#include "vkt/descriptors.hpp"
-#include "vkt/lighting.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
-#include "vkt/upload.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/resources/depth.hpp"
+#include "vkt/resources/descriptors.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/resources/upload.hpp"
+#include "vkt/scene/camera_math.hpp"
+#include "vkt/scene/lighting.hpp"
+#include "vkt/scene/meshes.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -36,10 +36,10 @@
 
 namespace {
 
-using ch12::MeshRange;
 using ch12::ObjectPush;
 using ch12::SceneUniforms;
-using ch12::Vertex;
+using vkt::shapes::MeshRange;
+using vkt::shapes::Vertex;
 
 constexpr float pi = std::numbers::pi_v<float>;
 
@@ -171,7 +171,7 @@ public:
         // Every shape in one vertex and one index buffer. The floor has few
         // vertices and the spheres are coarse on purpose: that is where per
         // vertex and per fragment lighting differ.
-        ch12::MeshBuilder builder;
+        vkt::shapes::MeshBuilder builder;
         meshes_[floor_mesh] = builder.floor(4);
         meshes_[cube_mesh] = builder.cube();
         meshes_[sphere_mesh] = builder.sphere(10, 6);

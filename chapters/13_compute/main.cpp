@@ -13,12 +13,12 @@
 // of the same buffer, in this frame and the next.
 
 #include "particle.hpp"
-#include "vkt/camera_math.hpp"
-#include "vkt/compute.hpp"
-#include "vkt/descriptors.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/resources/compute.hpp"
+#include "vkt/resources/descriptors.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/scene/camera_math.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -94,7 +94,7 @@ void check_memory_limits(VkPhysicalDevice physical, uint64_t count) {
 // One synchronization2 barrier on the whole particle buffer: the work of
 // src_stage before it, and the memory it wrote (src_access), must be done and
 // visible before dst_stage after it may do dst_access. (vkt::buffer_barrier in
-// vkt/compute.hpp is this function, kept for later chapters.)
+// vkt/resources/compute.hpp is this function, kept for later chapters.)
 void particle_barrier(VkCommandBuffer cmd, VkBuffer buffer, VkPipelineStageFlags2 src_stage,
                       VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage,
                       VkAccessFlags2 dst_access) {

@@ -2,7 +2,7 @@
 //
 // A thousand boxes fall onto a floor and onto each other, bounce a little,
 // slide a little and come to rest in stacks. The physics is plain C++ in
-// common/ (vkt/physics.hpp: broad phase, narrow phase, impulses); this file
+// common/ (vkt/domains/physics.hpp: broad phase, narrow phase, impulses); this file
 // shows the two things that connect it to the screen. The fixed time step:
 // the world advances in steps of exactly 1/120 s however fast frames come.
 // And the new Vulkan concept, instancing: one cube mesh, one
@@ -10,12 +10,12 @@
 // vertex buffer that advances once per box instead of once per vertex,
 // holding each box's position, size and colour, rewritten every frame.
 
-#include "vkt/camera_math.hpp"
-#include "vkt/depth.hpp"
-#include "vkt/physics.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
+#include "vkt/domains/physics.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/resources/depth.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/scene/camera_math.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -16,15 +16,15 @@
 
 #include "scene.hpp"
 
-#include "vkt/camera_math.hpp"
-#include "vkt/check.hpp"
-#include "vkt/depth.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/procedural_texture.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
-#include "vkt/stats.hpp"
-#include "vkt/texture.hpp"
+#include "vkt/core/check.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/frame/stats.hpp"
+#include "vkt/resources/depth.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/procedural_texture.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/resources/texture.hpp"
+#include "vkt/scene/camera_math.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -4,8 +4,8 @@
 // matrix, shade and two texture slots. Nothing here calls Vulkan; main.cpp
 // uploads it.
 
-#include "vkt/camera_math.hpp"
-#include "vkt/image_io.hpp"
+#include "vkt/resources/image_io.hpp"
+#include "vkt/scene/camera_math.hpp"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>

@@ -9,21 +9,21 @@
 // between the passes is written out here. --path forward draws the same scene
 // the classic way, lighting each fragment as it is drawn, for comparison.
 //
-// The lighting is chapter 12's (shaders/common/lighting.glsl, vkt/lighting.hpp)
+// The lighting is chapter 12's (shaders/common/lighting.glsl, vkt/scene/lighting.hpp)
 // with its windowed falloff; the lights live in a storage buffer, up to 65,536.
 
-#include "blocks.hpp"
-#include "scene.hpp"
-#include "verify.hpp"
-#include "vkt/barrier.hpp"
-#include "vkt/camera_math.hpp"
-#include "vkt/depth.hpp"
-#include "vkt/descriptors.hpp"
-#include "vkt/gbuffer.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
-#include "vkt/upload.hpp"
+#include "vkt/core/barrier.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/resources/depth.hpp"
+#include "vkt/resources/descriptors.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/resources/upload.hpp"
+#include "vkt/scene/camera_math.hpp"
+#include "vkt/scene/deferred_blocks.hpp"
+#include "vkt/scene/deferred_scene.hpp"
+#include "vkt/scene/deferred_verify.hpp"
+#include "vkt/scene/gbuffer.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -36,9 +36,9 @@
 
 namespace {
 
-using ch12::MeshRange;
-using ch12::Vertex;
-using namespace ch16;  // this chapter's blocks, scene and checks
+using vkt::shapes::MeshRange;
+using vkt::shapes::Vertex;
+using namespace vkt::deferred;  // chapter 16's blocks, scene and checks
 
 // Our own limit: 65,536 lights of 32 bytes are 2 MiB per frame in flight, far
 // below maxStorageBufferRange (the specification promises at least 128 MiB).
@@ -79,7 +79,7 @@ public:
         const char* views[] = {"lit", "albedo", "normal", "material", "depth"};
         for (int32_t i = 0; i < 5; ++i)
             if (view == views[i]) view_ = i;
-        if (forward_ && view_ != ch16::view_lit)
+        if (forward_ && view_ != vkt::deferred::view_lit)
             throw vkt::Error("--view " + view +
                              " shows a G-buffer target: it needs --path deferred");
         if (options.has("--verify")) verify_ = options.text("--verify");
@@ -90,7 +90,7 @@ public:
                      light_count_ == 1 ? "" : "s", forward_ ? "forward" : "deferred", view.c_str());
         check_formats();
 
-        ch12::MeshBuilder builder;
+        vkt::shapes::MeshBuilder builder;
         meshes_[floor_mesh] = builder.floor(4);
         meshes_[cube_mesh] = builder.cube();
         meshes_[sphere_mesh] = builder.sphere(24, 16);
@@ -241,7 +241,7 @@ private:
 
     void create_pipelines() {
         const VkPushConstantRange object_range{VK_SHADER_STAGE_VERTEX_BIT, 0,
-                                               ch16::object_push_size};
+                                               vkt::deferred::object_push_size};
         const VkDescriptorSetLayout scene_sets[] = {frame_layout_};
         scene_layout_ = vkt::create_pipeline_layout(device_, scene_sets, {&object_range, 1});
         const VkPushConstantRange lighting_range{VK_SHADER_STAGE_FRAGMENT_BIT, 0,
@@ -309,7 +309,7 @@ private:
         frame.light_count = light_count_;
         frame.ambient = glm::vec3(0.03f);
         frame.depth_view_far = 20.0f;
-        const std::vector<ch16::Material> materials = make_materials();
+        const std::vector<vkt::deferred::Material> materials = make_materials();
         std::copy(materials.begin(), materials.end(), frame.materials);
         std::memcpy(uniforms_[slot].mapped, &frame, sizeof frame);
         uniform_copy_ = frame;
@@ -408,7 +408,7 @@ private:
         for (const Object& object : objects_) {
             const ObjectPush push = object_push(object);
             vkCmdPushConstants(cmd, scene_layout_, VK_SHADER_STAGE_VERTEX_BIT, 0,
-                               ch16::object_push_size, &push);
+                               vkt::deferred::object_push_size, &push);
             const MeshRange& mesh = meshes_[object.mesh];
             vkCmdDrawIndexed(cmd, mesh.index_count, 1, mesh.first_index, 0, 0);
         }
@@ -532,27 +532,28 @@ private:
         std::memcpy(static_cast<vkt::PointLight*>(lights_[slot].mapped) + n, lifted.data(),
                     n * sizeof(vkt::PointLight));
         const VkExtent2D e = frame.extent;
-        ch16::verify(verify_,
-                     {gpu_,
-                      e,
-                      {gbuffer_.base_colour.image, gbuffer_.normal.image, gbuffer_.material.image,
-                       gbuffer_.depth.image},
-                      uniform_copy_.inverse_view_proj,
-                      eye,
-                      uniform_copy_.ambient,
-                      lights_now_},
-                     {[&](VkCommandBuffer cmd) {
-                          gbuffer_to_write(cmd);
-                          draw_gbuffer(cmd, slot, e);
-                          gbuffer_to_read(cmd);
-                      },
-                      [&](VkCommandBuffer cmd, VkImageView target, const LightingPush& push) {
-                          draw_lighting(cmd, slot, e, target, pipelines_.verify_lighting, push);
-                      },
-                      [&](VkCommandBuffer cmd, VkImageView target) {
-                          vkt::begin_depth_frame(cmd, forward_depth_.image);
-                          draw_forward(cmd, slot, e, target, pipelines_.verify_forward);
-                      }});
+        vkt::deferred::verify(
+            verify_,
+            {gpu_,
+             e,
+             {gbuffer_.base_colour.image, gbuffer_.normal.image, gbuffer_.material.image,
+              gbuffer_.depth.image},
+             uniform_copy_.inverse_view_proj,
+             eye,
+             uniform_copy_.ambient,
+             lights_now_},
+            {[&](VkCommandBuffer cmd) {
+                 gbuffer_to_write(cmd);
+                 draw_gbuffer(cmd, slot, e);
+                 gbuffer_to_read(cmd);
+             },
+             [&](VkCommandBuffer cmd, VkImageView target, const LightingPush& push) {
+                 draw_lighting(cmd, slot, e, target, pipelines_.verify_lighting, push);
+             },
+             [&](VkCommandBuffer cmd, VkImageView target) {
+                 vkt::begin_depth_frame(cmd, forward_depth_.image);
+                 draw_forward(cmd, slot, e, target, pipelines_.verify_forward);
+             }});
     }
     // [/verify]
 
@@ -565,7 +566,7 @@ private:
     uint32_t max_storage_range_;
     bool forward_ = false;
     uint32_t light_count_ = 1;
-    int32_t view_ = ch16::view_lit;
+    int32_t view_ = vkt::deferred::view_lit;
     std::string verify_;
     uint64_t verify_frame_ = 0;
     MeshRange meshes_[mesh_count];

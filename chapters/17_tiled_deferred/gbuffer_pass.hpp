@@ -5,13 +5,13 @@
 // explains every line; the only change is that the G-buffer is read by
 // compute shaders too (the tile pass), so the barriers name both stages.
 
-#include "../16_deferred/scene.hpp"
-#include "vkt/barrier.hpp"
-#include "vkt/memory.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
-#include "vkt/upload.hpp"
+#include "vkt/core/barrier.hpp"
+#include "vkt/core/memory.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/resources/upload.hpp"
+#include "vkt/scene/deferred_scene.hpp"
 
 #include <cstddef>
 #include <iterator>
@@ -19,8 +19,8 @@
 
 namespace ch17 {
 
-using ch12::MeshRange;
-using ch12::Vertex;
+using vkt::shapes::MeshRange;
+using vkt::shapes::Vertex;
 
 constexpr VkFormat gbuffer_formats[] = {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_R16G16_SNORM,
                                         VK_FORMAT_R8G8B8A8_UNORM};
@@ -33,12 +33,12 @@ public:
 
     GBufferPass(const vkt::Context& context, VkDescriptorSetLayout frame_layout)
         : physical_(context.physical), device_(context.device) {
-        ch12::MeshBuilder builder;
-        meshes_[ch16::floor_mesh] = builder.floor(4);
-        meshes_[ch16::cube_mesh] = builder.cube();
-        meshes_[ch16::sphere_mesh] = builder.sphere(24, 16);
-        meshes_[ch16::cylinder_mesh] = builder.cylinder(24);
-        meshes_[ch16::torus_mesh] = builder.torus(32, 12, 0.15f);
+        vkt::shapes::MeshBuilder builder;
+        meshes_[vkt::deferred::floor_mesh] = builder.floor(4);
+        meshes_[vkt::deferred::cube_mesh] = builder.cube();
+        meshes_[vkt::deferred::sphere_mesh] = builder.sphere(24, 16);
+        meshes_[vkt::deferred::cylinder_mesh] = builder.cylinder(24);
+        meshes_[vkt::deferred::torus_mesh] = builder.torus(32, 12, 0.15f);
         const vkt::Gpu gpu = context.gpu();
         vertex_buffer_ = vkt::create_device_buffer(gpu, builder.vertices.data(),
                                                    builder.vertices.size() * sizeof(Vertex),
@@ -46,10 +46,11 @@ public:
         index_buffer_ = vkt::create_device_buffer(gpu, builder.indices.data(),
                                                   builder.indices.size() * sizeof(uint16_t),
                                                   VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-        const VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT, 0, ch16::object_push_size};
+        const VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT, 0,
+                                        vkt::deferred::object_push_size};
         layout_ = vkt::create_pipeline_layout(device_, {&frame_layout, 1}, {&range, 1});
-        vkt::ShaderModule vert = vkt::load_shader(device_, "16_deferred", "scene.vert");
-        vkt::ShaderModule frag = vkt::load_shader(device_, "16_deferred", "gbuffer.frag");
+        vkt::ShaderModule vert = vkt::load_shader(device_, "17_tiled_deferred", "scene.vert");
+        vkt::ShaderModule frag = vkt::load_shader(device_, "17_tiled_deferred", "gbuffer.frag");
         const VkVertexInputBindingDescription input{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
         const VkVertexInputAttributeDescription attributes[] = {
             {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
@@ -86,7 +87,7 @@ public:
     // Barriers, pass 1, barriers: afterwards the G-buffer may be read by
     // fragment and compute shaders.
     void record(VkCommandBuffer cmd, VkDescriptorSet frame_set, VkExtent2D extent,
-                const std::vector<ch16::Object>& objects) const {
+                const std::vector<vkt::deferred::Object>& objects) const {
         constexpr auto readers =
             VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
         constexpr auto tests = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
@@ -137,10 +138,10 @@ public:
         vkCmdBindIndexBuffer(cmd, index_buffer_.buffer, 0, VK_INDEX_TYPE_UINT16);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frame_set, 0,
                                 nullptr);
-        for (const ch16::Object& object : objects) {
-            const ch16::ObjectPush push = ch16::object_push(object);
-            vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, ch16::object_push_size,
-                               &push);
+        for (const vkt::deferred::Object& object : objects) {
+            const vkt::deferred::ObjectPush push = vkt::deferred::object_push(object);
+            vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0,
+                               vkt::deferred::object_push_size, &push);
             const MeshRange& mesh = meshes_[object.mesh];
             vkCmdDrawIndexed(cmd, mesh.index_count, 1, mesh.first_index, 0, 0);
         }
@@ -157,7 +158,7 @@ public:
 private:
     VkPhysicalDevice physical_;
     VkDevice device_;
-    MeshRange meshes_[ch16::mesh_count];
+    MeshRange meshes_[vkt::deferred::mesh_count];
     vkt::Buffer vertex_buffer_, index_buffer_;
     vkt::PipelineLayout layout_;
     vkt::Pipeline pipeline_;

@@ -14,11 +14,11 @@
 // --view heat shows how many lights each tile kept. --verify brute compares
 // both tiled results with chapter 16's brute-force lighting pass.
 
-#include "../16_deferred/verify.hpp"
 #include "gbuffer_pass.hpp"
-#include "vkt/compute.hpp"
-#include "vkt/descriptors.hpp"
-#include "vkt/tiles.hpp"
+#include "vkt/resources/compute.hpp"
+#include "vkt/resources/descriptors.hpp"
+#include "vkt/scene/deferred_verify.hpp"
+#include "vkt/scene/tiles.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -29,7 +29,7 @@
 
 namespace {
 
-using ch16::FrameUniforms;
+using vkt::deferred::FrameUniforms;
 
 constexpr uint32_t max_lights = 65536;  // as chapter 16: 2 MiB of lights per frame in flight
 // [limits]
@@ -240,7 +240,7 @@ private:
         // One layout for every pass after the G-buffer: sets 0 and 1, and 16
         // bytes of push constants (chapter 16's LightingPush is the largest).
         const VkPushConstantRange range{VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT,
-                                        0, sizeof(ch16::LightingPush)};
+                                        0, sizeof(vkt::deferred::LightingPush)};
         const VkDescriptorSetLayout sets[] = {frame_layout_, screen_layout_};
         layout_ = vkt::create_pipeline_layout(device_, sets, {&range, 1});
         // [pipelines]
@@ -253,10 +253,11 @@ private:
                 vkt::create_compute_pipeline(device_, tiles, layout_, &specialization);
         }
         // [/pipelines]
-        vkt::ShaderModule fullscreen = vkt::load_shader(device_, "16_deferred", "fullscreen.vert");
+        vkt::ShaderModule fullscreen =
+            vkt::load_shader(device_, "17_tiled_deferred", "fullscreen.vert");
         vkt::ShaderModule tiled =
             vkt::load_shader(device_, "17_tiled_deferred", "tiled_lighting.frag");
-        vkt::ShaderModule brute = vkt::load_shader(device_, "16_deferred", "lighting.frag");
+        vkt::ShaderModule brute = vkt::load_shader(device_, "17_tiled_deferred", "lighting.frag");
         auto lighting = [&](VkShaderModule fragment, VkFormat target) {
             return vkt::create_graphics_pipeline(device_, {.vertex = fullscreen,
                                                            .fragment = fragment,
@@ -281,13 +282,13 @@ private:
         frame.light_count = light_count_;
         frame.ambient = glm::vec3(0.03f);
         frame.depth_view_far = 20.0f;
-        const std::vector<ch16::Material> materials = ch16::make_materials();
+        const std::vector<vkt::deferred::Material> materials = vkt::deferred::make_materials();
         std::copy(materials.begin(), materials.end(), frame.materials);
         std::memcpy(uniforms_[slot].mapped, &frame, sizeof frame);
-        lights_now_ = ch16::make_lights(light_count_, t);
+        lights_now_ = vkt::deferred::make_lights(light_count_, t);
         std::memcpy(lights_[slot].mapped, lights_now_.data(),
                     lights_now_.size() * sizeof(vkt::PointLight));
-        objects_ = ch16::make_objects(t);
+        objects_ = vkt::deferred::make_objects(t);
     }
 
     // What the slot's last frame counted (it is finished), then zeroed.
@@ -429,16 +430,18 @@ private:
     void verify(uint32_t slot, VkExtent2D e) {
         const VkPhysicalDevice physical = gpu_.physical;
         std::vector<vkt::Image> targets;  // brute force, tiled fragment
-        std::vector<ch16::HostCopy> copies;
+        std::vector<vkt::deferred::HostCopy> copies;
         for (int i = 0; i < 2; ++i) {
             targets.push_back(vkt::create_image_2d(
                 physical, device_, verify_format, e,
                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                 VK_IMAGE_ASPECT_COLOR_BIT));
-            copies.push_back(ch16::make_host_copy(physical, device_, targets[i].image, e, 16));
+            copies.push_back(
+                vkt::deferred::make_host_copy(physical, device_, targets[i].image, e, 16));
         }
-        copies.push_back(ch16::make_host_copy(physical, device_, shaded_.image, e, 16));
-        const ch16::LightingPush everything{ch16::view_lit, 0, light_count_, 1.0f};
+        copies.push_back(vkt::deferred::make_host_copy(physical, device_, shaded_.image, e, 16));
+        const vkt::deferred::LightingPush everything{vkt::deferred::view_lit, 0, light_count_,
+                                                     1.0f};
         const int32_t lit = view_lit;
         constexpr auto colour_out = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
         std::memset(stats_[slot].mapped, 0, sizeof(TileStats));
@@ -460,7 +463,7 @@ private:
                                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, colour_out,
                                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
                                    VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-            ch16::record_host_copies(cmd, e, copies);
+            vkt::deferred::record_host_copies(cmd, e, copies);
             vkt::image_barrier(cmd, shaded_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT,
                                VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -469,15 +472,18 @@ private:
         TileStats stats{};
         std::memcpy(&stats, stats_[slot].mapped, sizeof stats);
         std::memset(stats_[slot].mapped, 0, sizeof stats);
-        const auto brute = ch16::host_colours(copies[0]), fragment = ch16::host_colours(copies[1]),
-                   compute = ch16::host_colours(copies[2]);
+        const auto brute = vkt::deferred::host_colours(copies[0]),
+                   fragment = vkt::deferred::host_colours(copies[1]),
+                   compute = vkt::deferred::host_colours(copies[2]);
         const struct {
             const char* what;
             float difference;
         } results[] = {
-            {"tiled fragment vs brute force", ch16::max_linear_difference(fragment, brute)},
-            {"tiled compute vs brute force", ch16::max_linear_difference(compute, brute)},
-            {"tiled fragment vs tiled compute", ch16::max_linear_difference(fragment, compute)},
+            {"tiled fragment vs brute force",
+             vkt::deferred::max_linear_difference(fragment, brute)},
+            {"tiled compute vs brute force", vkt::deferred::max_linear_difference(compute, brute)},
+            {"tiled fragment vs tiled compute",
+             vkt::deferred::max_linear_difference(fragment, compute)},
         };
         constexpr float tolerance = 1e-4f;
         for (const auto& r : results)
@@ -515,7 +521,7 @@ private:
     uint32_t overflowed_ = 0, most_lights_ = 0;           // over the run
     uint64_t lights_seen_ = 0, tiles_seen_ = 0;
     std::vector<vkt::PointLight> lights_now_;
-    std::vector<ch16::Object> objects_;
+    std::vector<vkt::deferred::Object> objects_;
     vkt::DescriptorSetLayout frame_layout_, screen_layout_;
     vkt::DescriptorPool pool_;
     std::vector<VkDescriptorSet> frame_sets_;  // [slot]

@@ -3,19 +3,19 @@
 // A tesseract (the 4-cube) and a 24-cell side by side, turning in several of
 // their six rotation planes at once; or one n-cube (--scene cube --dim N), or
 // 250 of them (--scene many). The mathematics is plain C++ in common/
-// (vkt/ndim.hpp): meshes, transforms of n(n+3)/2 numbers, (n+1)x(n+1) model
+// (vkt/domains/ndim.hpp): meshes, transforms of n(n+3)/2 numbers, (n+1)x(n+1) model
 // matrices, projection n -> 2 one dimension at a time. This file is the CPU
 // path that uses it: every frame it builds each object's model matrix,
 // transforms and projects every vertex, writes two 2D points per visible edge
 // into this frame's host-visible vertex buffer, and draws them all with one
 // vkCmdDraw of a LINE_LIST. Chapters 19 and 20 move that work to the GPU.
 
-#include "vkt/ndim.hpp"
-#include "vkt/ndim_options.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
-#include "vkt/stats.hpp"
+#include "vkt/domains/ndim.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/frame/stats.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/scene/ndim_options.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -49,7 +49,7 @@ uint32_t depth_colour(float t) {
            uint32_t(b * 255.0f + 0.5f) << 16 | 0xff000000u;
 }
 
-// GLFW key codes for the controls (vkt/input.hpp has the common ones).
+// GLFW key codes for the controls (vkt/frame/input.hpp has the common ones).
 constexpr int key_0 = 48, key_1 = 49, key_o = 79, key_r = 82, key_left_bracket = 91,
               key_right_bracket = 93, key_f1 = 290;
 
@@ -295,7 +295,7 @@ int main(int argc, char** argv) {
     // [spec]
     vkt::ChapterSpec spec{
         .name = "18_ndim_cpu", .title = "18 - ndim_cpu", .input = vkt::InputUse::keys};
-    // --scene, --dim, --projection and --motion: vkt/ndim_options.hpp.
+    // --scene, --dim, --projection and --motion: vkt/scene/ndim_options.hpp.
     spec.options = vkt::ndim::scene_options();
     spec.options.push_back(
         {.name = "--matrix",

@@ -2,8 +2,8 @@
 // Chapter 19's keys, the same as chapter 18's (book/18_ndim_cpu.md, "The
 // keys"): what the user turned and moved, on top of each object's spin.
 
-#include "vkt/input.hpp"
-#include "vkt/ndim.hpp"
+#include "vkt/domains/ndim.hpp"
+#include "vkt/frame/input.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -11,7 +11,7 @@
 
 namespace ch19 {
 
-// GLFW key codes for the controls (vkt/input.hpp has the common ones).
+// GLFW key codes for the controls (vkt/frame/input.hpp has the common ones).
 constexpr int key_0 = 48, key_1 = 49, key_o = 79, key_r = 82, key_left_bracket = 91,
               key_right_bracket = 93, key_f1 = 290;
 

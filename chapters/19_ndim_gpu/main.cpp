@@ -12,14 +12,14 @@
 // them against the CPU.
 
 #include "controls.hpp"
-#include "vkt/compute.hpp"
-#include "vkt/descriptors.hpp"
-#include "vkt/ndim.hpp"
-#include "vkt/ndim_options.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
-#include "vkt/stats.hpp"
+#include "vkt/domains/ndim.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/frame/stats.hpp"
+#include "vkt/resources/compute.hpp"
+#include "vkt/resources/descriptors.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/scene/ndim_options.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -468,7 +468,7 @@ int main(int argc, char** argv) {
     spec.requirements.features = {VKT_FEATURE_10(shaderClipDistance)};
     spec.requirements.optional_features = {VKT_FEATURE_10(vertexPipelineStoresAndAtomics),
                                            VKT_FEATURE_10(pipelineStatisticsQuery)};
-    // --scene, --dim, --projection and --motion: vkt/ndim_options.hpp.
+    // --scene, --dim, --projection and --motion: vkt/scene/ndim_options.hpp.
     spec.options = vkt::ndim::scene_options();
     spec.options.insert(
         spec.options.end(),

@@ -12,16 +12,16 @@
 // onto the colour target.
 
 #include "scene_state.hpp"
-#include "vkt/barrier.hpp"
-#include "vkt/compute.hpp"
-#include "vkt/descriptors.hpp"
-#include "vkt/ndim.hpp"
-#include "vkt/ndim_options.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/runner.hpp"
-#include "vkt/shader.hpp"
-#include "vkt/stats.hpp"
-#include "vkt/upload.hpp"
+#include "vkt/core/barrier.hpp"
+#include "vkt/domains/ndim.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/frame/stats.hpp"
+#include "vkt/resources/compute.hpp"
+#include "vkt/resources/descriptors.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/resources/upload.hpp"
+#include "vkt/scene/ndim_options.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -495,7 +495,7 @@ int main(int argc, char** argv) {
     // The build's SPIR-V gives compute shaders their workgroup size as
     // LocalSizeId, which needs maintenance4 (as in chapter 13).
     spec.requirements.features = {VKT_FEATURE_13(maintenance4)};
-    // --scene, --dim, --projection and --motion: vkt/ndim_options.hpp.
+    // --scene, --dim, --projection and --motion: vkt/scene/ndim_options.hpp.
     spec.options = vkt::ndim::scene_options();
     spec.options.insert(
         spec.options.end(),

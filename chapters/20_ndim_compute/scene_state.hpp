@@ -3,8 +3,8 @@
 // shaders, the compute rasteriser's palette, the keys' state (chapter 18's
 // controls) and the CPU reference that --verify compares the GPU with.
 
-#include "vkt/input.hpp"
-#include "vkt/ndim.hpp"
+#include "vkt/domains/ndim.hpp"
+#include "vkt/frame/input.hpp"
 
 #include <algorithm>
 #include <cmath>

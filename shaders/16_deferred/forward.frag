@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // Chapter 16, --path forward: light every fragment as it is drawn, with the
 // same lights and the same shade_all() as the deferred lighting pass.
-#include "blocks.glsl"
+#include "deferred/blocks.glsl"
 
 // [forward-frag]
 layout(location = 0) in vec3 world_position;

@@ -1,8 +1,8 @@
 // Chapter 17's shared declarations: chapter 16's blocks (frame uniforms,
 // lights, shade_all), the G-buffer, the tiles' light lists, and the tile
 // frustum test. The C++ twin of the frustum maths is common/include/vkt/tiles.hpp.
-#include "../16_deferred/blocks.glsl"
-#include "../16_deferred/normal_encoding.glsl"
+#include "deferred/blocks.glsl"
+#include "deferred/normal_encoding.glsl"
 
 // [limits]
 const uint TILE_SIZE = 16;           // a tile is 16 x 16 pixels: one workgroup of 256

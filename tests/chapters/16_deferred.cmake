@@ -44,7 +44,7 @@ foreach(view albedo normal material depth)
 endforeach()
 
 # --verify: the last frame again, into float targets, read back and checked
-# (chapters/16_deferred/verify.hpp):
+# (common/scene/include/vkt/scene/deferred_verify.hpp):
 #   cpu         the lighting pass against vkt::shade_gbuffer on the read-back
 #               G-buffer: largest difference at most 2e-3 (relative above 1;
 #               lavapipe 6e-6, an H100 9e-4: GPUs may approximate pow)

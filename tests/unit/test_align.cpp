@@ -1,5 +1,5 @@
 // vkt::align_up (chapter 07): rounding a size up to a power-of-two alignment.
-#include "vkt/align.hpp"
+#include "vkt/resources/align.hpp"
 
 #include <catch2/catch_test_macros.hpp>
 

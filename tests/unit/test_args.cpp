@@ -1,4 +1,4 @@
-#include "vkt/args.hpp"
+#include "vkt/frame/args.hpp"
 
 #include <catch2/catch_test_macros.hpp>
 

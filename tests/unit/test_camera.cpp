@@ -1,7 +1,7 @@
-// The first-person camera of chapter 11 (vkt/fps_camera.hpp), against values
+// The first-person camera of chapter 11 (vkt/scene/fps_camera.hpp), against values
 // worked out by hand and against glm::lookAt.
-#include "vkt/fps_camera.hpp"
-#include "vkt/input.hpp"
+#include "vkt/frame/input.hpp"
+#include "vkt/scene/fps_camera.hpp"
 
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
@@ -111,7 +111,7 @@ TEST_CASE("the mouse turns the way it moves, and only while the cursor is captur
     CHECK(camera.forward().x > 0.0f);
     CHECK(camera.forward().y < 0.0f);
 
-    // Through the runner's accumulator (vkt/input.hpp), as in a window. A free
+    // Through the runner's accumulator (vkt/frame/input.hpp), as in a window. A free
     // cursor's movement is the user's, not the camera's.
     vkt::InputAccumulator window;
     window.cursor(10, 10);

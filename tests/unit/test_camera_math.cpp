@@ -1,6 +1,6 @@
-// The matrices of chapter 08 (vkt/camera_math.hpp), against points worked out
+// The matrices of chapter 08 (vkt/scene/camera_math.hpp), against points worked out
 // by hand.
-#include "vkt/camera_math.hpp"
+#include "vkt/scene/camera_math.hpp"
 
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>

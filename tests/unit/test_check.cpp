@@ -1,4 +1,4 @@
-#include "vkt/check.hpp"
+#include "vkt/core/check.hpp"
 
 #include <catch2/catch_test_macros.hpp>
 

@@ -1,11 +1,11 @@
-// Chapter 16's G-buffer on the CPU (vkt/gbuffer.hpp): the octahedral normal
+// Chapter 16's G-buffer on the CPU (vkt/scene/gbuffer.hpp): the octahedral normal
 // encoding, positions from depth, the reference shading of a G-buffer (a
 // light beyond its radius adds exactly nothing; lights add up), and the
-// chapter's blocks (chapters/16_deferred/blocks.hpp) against the SPIR-V.
-#include "../../chapters/16_deferred/blocks.hpp"
+// chapter's blocks (common/scene/include/vkt/scene/deferred_blocks.hpp) against the SPIR-V.
 #include "spirv_reflect.hpp"
-#include "vkt/camera_math.hpp"
-#include "vkt/gbuffer.hpp"
+#include "vkt/scene/camera_math.hpp"
+#include "vkt/scene/deferred_blocks.hpp"
+#include "vkt/scene/gbuffer.hpp"
 
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
@@ -134,7 +134,7 @@ TEST_CASE("shade_gbuffer: out of reach adds exactly 0, and lights add up", "[def
 }
 
 TEST_CASE("chapter 16's FrameUniforms matches the shaders' std140 block", "[deferred][std140]") {
-    using ch16::FrameUniforms;
+    using vkt::deferred::FrameUniforms;
     for (const char* file : {"scene.vert", "gbuffer.frag", "forward.frag", "lighting.frag"}) {
         const auto words = spirv::read(spv(file));
         const std::map<std::string, uint32_t> expected{
@@ -149,11 +149,11 @@ TEST_CASE("chapter 16's FrameUniforms matches the shaders' std140 block", "[defe
         };
         CHECK(spirv::offsets(words, "FrameUniforms") == expected);
         CHECK(spirv::struct_members(words, "FrameUniforms").at("materials").array_stride ==
-              sizeof(ch16::Material));
+              sizeof(vkt::deferred::Material));
         const std::map<std::string, uint32_t> material{
-            {"albedo", offsetof(ch16::Material, albedo)},
-            {"specular", offsetof(ch16::Material, specular)},
-            {"shininess", offsetof(ch16::Material, shininess)},
+            {"albedo", offsetof(vkt::deferred::Material, albedo)},
+            {"specular", offsetof(vkt::deferred::Material, specular)},
+            {"shininess", offsetof(vkt::deferred::Material, shininess)},
         };
         CHECK(spirv::offsets(words, "Material") == material);
     }
@@ -169,20 +169,20 @@ TEST_CASE("chapter 16's lights, object and lighting push constants match the SPI
     }
     const auto vert = spirv::read(spv("scene.vert"));
     const std::map<std::string, uint32_t> object{
-        {"model", offsetof(ch16::ObjectPush, model)},
-        {"normal_matrix", offsetof(ch16::ObjectPush, normal_matrix)},
-        {"material", offsetof(ch16::ObjectPush, material)},
+        {"model", offsetof(vkt::deferred::ObjectPush, model)},
+        {"normal_matrix", offsetof(vkt::deferred::ObjectPush, normal_matrix)},
+        {"material", offsetof(vkt::deferred::ObjectPush, material)},
     };
     CHECK(spirv::offsets(vert, "ObjectPush") == object);
     CHECK(spirv::struct_members(vert, "ObjectPush").at("normal_matrix").matrix_stride == 16);
-    CHECK(ch16::object_push_size == offsetof(ch16::ObjectPush, material) + 4);
+    CHECK(vkt::deferred::object_push_size == offsetof(vkt::deferred::ObjectPush, material) + 4);
 
     const auto frag = spirv::read(spv("lighting.frag"));
     const std::map<std::string, uint32_t> lighting{
-        {"view", offsetof(ch16::LightingPush, view)},
-        {"first_light", offsetof(ch16::LightingPush, first_light)},
-        {"light_count", offsetof(ch16::LightingPush, light_count)},
-        {"ambient", offsetof(ch16::LightingPush, ambient)},
+        {"view", offsetof(vkt::deferred::LightingPush, view)},
+        {"first_light", offsetof(vkt::deferred::LightingPush, first_light)},
+        {"light_count", offsetof(vkt::deferred::LightingPush, light_count)},
+        {"ambient", offsetof(vkt::deferred::LightingPush, ambient)},
     };
     CHECK(spirv::offsets(frag, "LightingPush") == lighting);
 }

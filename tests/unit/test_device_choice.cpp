@@ -1,4 +1,4 @@
-#include "vkt/device.hpp"
+#include "vkt/core/device.hpp"
 
 #include <catch2/catch_test_macros.hpp>
 

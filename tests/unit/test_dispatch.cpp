@@ -1,4 +1,4 @@
-// Chapter 13's dispatch arithmetic (vkt/compute.hpp): how many workgroups
+// Chapter 13's dispatch arithmetic (vkt/resources/compute.hpp): how many workgroups
 // cover n items, how many items one dispatch may cover under a device's
 // limits, and the split of a large job into dispatches; the std430 layout of
 // the particle, C++ against the compiled shader; and, on whatever device the
@@ -6,14 +6,14 @@
 // chapter's shaders, against a CPU reference and a bounds-check sentinel.
 #include "../../chapters/13_compute/particle.hpp"
 #include "spirv_reflect.hpp"
-#include "vkt/check.hpp"
-#include "vkt/compute.hpp"
-#include "vkt/descriptors.hpp"
-#include "vkt/device.hpp"
-#include "vkt/instance.hpp"
-#include "vkt/pipeline.hpp"
-#include "vkt/shader.hpp"
-#include "vkt/upload.hpp"
+#include "vkt/core/check.hpp"
+#include "vkt/core/device.hpp"
+#include "vkt/core/instance.hpp"
+#include "vkt/resources/compute.hpp"
+#include "vkt/resources/descriptors.hpp"
+#include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/resources/upload.hpp"
 
 #include <catch2/catch_test_macros.hpp>
 

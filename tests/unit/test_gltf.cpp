@@ -1,9 +1,9 @@
-// vkt/gltf.hpp (chapter 10): the glTF loader, on files these tests write
+// vkt/scene/gltf.hpp (chapter 10): the glTF loader, on files these tests write
 // themselves (JSON by hand, buffers byte by byte, a .glb container by hand).
 
-#include "vkt/check.hpp"
-#include "vkt/files.hpp"
-#include "vkt/gltf.hpp"
+#include "vkt/core/check.hpp"
+#include "vkt/core/files.hpp"
+#include "vkt/scene/gltf.hpp"
 
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>

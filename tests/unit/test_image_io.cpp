@@ -1,6 +1,6 @@
-#include "vkt/image_io.hpp"
+#include "vkt/resources/image_io.hpp"
 
-#include "vkt/check.hpp"
+#include "vkt/core/check.hpp"
 
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>

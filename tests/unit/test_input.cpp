@@ -1,4 +1,4 @@
-#include "vkt/input.hpp"
+#include "vkt/frame/input.hpp"
 
 #include <catch2/catch_test_macros.hpp>
 

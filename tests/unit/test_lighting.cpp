@@ -1,10 +1,10 @@
-// Chapter 12's lighting model (vkt/lighting.hpp) on hand-worked values, its
+// Chapter 12's lighting model (vkt/scene/lighting.hpp) on hand-worked values, its
 // shapes' windings and normals, and its blocks' C++ mirrors
 // (chapters/12_lighting/blocks.hpp) against the offsets in the compiled SPIR-V.
 #include "../../chapters/12_lighting/blocks.hpp"
-#include "../../chapters/12_lighting/meshes.hpp"
 #include "spirv_reflect.hpp"
-#include "vkt/lighting.hpp"
+#include "vkt/scene/lighting.hpp"
+#include "vkt/scene/meshes.hpp"
 
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
@@ -162,15 +162,16 @@ TEST_CASE("shade: chapter 12's centre pixel, worked by hand", "[lighting]") {
 }
 
 TEST_CASE("chapter 12's shapes are wound counter-clockwise seen from outside", "[lighting]") {
-    ch12::MeshBuilder builder;
-    const ch12::MeshRange ranges[] = {builder.floor(4), builder.cube(), builder.sphere(10, 6),
-                                      builder.cylinder(12), builder.torus(16, 8, 0.15f)};
+    vkt::shapes::MeshBuilder builder;
+    const vkt::shapes::MeshRange ranges[] = {builder.floor(4), builder.cube(),
+                                             builder.sphere(10, 6), builder.cylinder(12),
+                                             builder.torus(16, 8, 0.15f)};
     for (const auto& range : ranges) {
         REQUIRE(range.index_count % 3 == 0);
         for (uint32_t i = range.first_index; i < range.first_index + range.index_count; i += 3) {
-            const ch12::Vertex& a = builder.vertices[builder.indices[i]];
-            const ch12::Vertex& b = builder.vertices[builder.indices[i + 1]];
-            const ch12::Vertex& c = builder.vertices[builder.indices[i + 2]];
+            const vkt::shapes::Vertex& a = builder.vertices[builder.indices[i]];
+            const vkt::shapes::Vertex& b = builder.vertices[builder.indices[i + 1]];
+            const vkt::shapes::Vertex& c = builder.vertices[builder.indices[i + 2]];
             const glm::vec3 face = glm::cross(b.position - a.position, c.position - a.position);
             REQUIRE(glm::length(face) > 1e-6f);  // no triangle without area
             CHECK(glm::dot(face, a.normal + b.normal + c.normal) > 0.0f);

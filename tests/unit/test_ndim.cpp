@@ -1,7 +1,7 @@
-// The n-dimensional mathematics of chapters 18-20 (vkt/ndim.hpp): meshes,
+// The n-dimensional mathematics of chapters 18-20 (vkt/domains/ndim.hpp): meshes,
 // rotations, transforms and projection, against counts, lengths and points
 // worked out by hand.
-#include "vkt/ndim.hpp"
+#include "vkt/domains/ndim.hpp"
 
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>

@@ -1,4 +1,4 @@
-#include "vkt/owned.hpp"
+#include "vkt/core/owned.hpp"
 
 #include <catch2/catch_test_macros.hpp>
 

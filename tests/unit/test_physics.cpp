@@ -1,7 +1,7 @@
-// vkt/physics.hpp (chapter 14): overlap and penetration on hand-worked pairs,
+// vkt/domains/physics.hpp (chapter 14): overlap and penetration on hand-worked pairs,
 // resting and stacking, energy in a closed box, broad phase against brute
 // force, and bit-equal repeat runs.
-#include "vkt/physics.hpp"
+#include "vkt/domains/physics.hpp"
 
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>

@@ -1,8 +1,8 @@
-// vkt/procedural_texture.hpp (chapter 15): the textures are deterministic,
+// vkt/resources/procedural_texture.hpp (chapter 15): the textures are deterministic,
 // distinct, and have the texels worked out by hand below.
 
-#include "vkt/check.hpp"
-#include "vkt/procedural_texture.hpp"
+#include "vkt/core/check.hpp"
+#include "vkt/resources/procedural_texture.hpp"
 
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>

@@ -1,6 +1,6 @@
-#include "vkt/readback.hpp"
+#include "vkt/resources/readback.hpp"
 
-#include "vkt/check.hpp"
+#include "vkt/core/check.hpp"
 
 #include <catch2/catch_test_macros.hpp>
 

@@ -1,4 +1,4 @@
-#include "vkt/stats.hpp"
+#include "vkt/frame/stats.hpp"
 
 #include <catch2/catch_test_macros.hpp>
 

@@ -1,6 +1,6 @@
-#include "vkt/swapchain.hpp"
+#include "vkt/core/swapchain.hpp"
 
-#include "vkt/check.hpp"
+#include "vkt/core/check.hpp"
 
 #include <catch2/catch_test_macros.hpp>
 

@@ -1,8 +1,8 @@
-// vkt/texture.hpp (chapter 09): mip counts, image decoding, the CPU mip filter.
+// vkt/resources/texture.hpp (chapter 09): mip counts, image decoding, the CPU mip filter.
 
-#include "vkt/check.hpp"
-#include "vkt/files.hpp"
-#include "vkt/texture.hpp"
+#include "vkt/core/check.hpp"
+#include "vkt/core/files.hpp"
+#include "vkt/resources/texture.hpp"
 
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>

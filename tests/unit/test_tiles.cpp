@@ -1,8 +1,8 @@
-// Chapter 17's tile maths (vkt/tiles.hpp): tile counts, depth linearisation,
+// Chapter 17's tile maths (vkt/scene/tiles.hpp): tile counts, depth linearisation,
 // and the sphere-against-tile-frustum test, by hand and against brute force.
 
-#include "vkt/camera_math.hpp"
-#include "vkt/tiles.hpp"
+#include "vkt/scene/camera_math.hpp"
+#include "vkt/scene/tiles.hpp"
 
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>

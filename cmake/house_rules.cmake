@@ -1,0 +1,55 @@
+# The house rules that the configure step checks (CONTRIBUTING.md explains
+# them). Run at configure time, so a rule broken is a build that will not start.
+#
+# 1. Chapters stand alone: no file in chapters/ or shaders/NN_name/ includes
+#    another chapter's file ("../NN_..."). What two chapters share belongs in
+#    common/ (C++) or shaders/common/ (GLSL).
+# 2. common/ keeps its direction: a layer includes only itself and the layers
+#    below it (domains and core at the bottom, then resources, frame, scene).
+#    The include paths already enforce this for the compiler; this check says
+#    which file broke it, and why, before the compiler does.
+
+file(GLOB_RECURSE vkt_house_chapter_files
+     ${PROJECT_SOURCE_DIR}/chapters/*.cpp ${PROJECT_SOURCE_DIR}/chapters/*.hpp
+     ${PROJECT_SOURCE_DIR}/shaders/[0-9][0-9]_*/*)
+set(vkt_house_broken)
+foreach(file IN LISTS vkt_house_chapter_files)
+  file(STRINGS ${file} lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"\\.\\./")
+  foreach(line IN LISTS lines)
+    file(RELATIVE_PATH rel ${PROJECT_SOURCE_DIR} ${file})
+    string(STRIP "${line}" line)
+    list(APPEND vkt_house_broken "  ${rel}: ${line}")
+  endforeach()
+endforeach()
+if(vkt_house_broken)
+  list(JOIN vkt_house_broken "\n" text)
+  message(FATAL_ERROR "A chapter includes another chapter's file:\n${text}\n"
+          "What two chapters share belongs in common/ (C++) or shaders/common/ (GLSL), "
+          "naming the chapter that taught it (see CONTRIBUTING.md).")
+endif()
+
+# Each layer and the layers it may include (itself first).
+set(vkt_layer_allows_domains   domains)
+set(vkt_layer_allows_core      core)
+set(vkt_layer_allows_resources resources core)
+set(vkt_layer_allows_frame     frame resources core)
+set(vkt_layer_allows_scene     scene frame resources core domains)
+foreach(layer domains core resources frame scene)
+  file(GLOB_RECURSE files ${PROJECT_SOURCE_DIR}/common/${layer}/*.cpp
+                          ${PROJECT_SOURCE_DIR}/common/${layer}/*.hpp)
+  foreach(file IN LISTS files)
+    file(STRINGS ${file} lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"vkt/[a-z]+/")
+    foreach(line IN LISTS lines)
+      string(REGEX REPLACE ".*\"vkt/([a-z]+)/.*" "\\1" used "${line}")
+      if(NOT used IN_LIST vkt_layer_allows_${layer})
+        file(RELATIVE_PATH rel ${PROJECT_SOURCE_DIR} ${file})
+        list(APPEND vkt_house_broken "  ${rel} (layer ${layer}) includes layer ${used}")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+if(vkt_house_broken)
+  list(JOIN vkt_house_broken "\n" text)
+  message(FATAL_ERROR "An include runs against the layers of common/:\n${text}\n"
+          "A layer may include only the layers below it (see common/CMakeLists.txt).")
+endif()

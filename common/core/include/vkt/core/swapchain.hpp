@@ -1,0 +1,72 @@
+#pragma once
+// The swapchain, taught in chapter 03. The choices are pure functions of what
+// the surface offers, so the unit tests can check them without a surface.
+
+#include "vkt/core/owned.hpp"
+
+#include <span>
+#include <vector>
+
+namespace vkt {
+
+// An 8-bit RGBA or BGRA format in the sRGB colour space: `keep` if the surface
+// offers it (a recreated swapchain keeps its format, so the chapter's pipelines
+// still match), else _SRGB before _UNORM. Throws Error when there is none.
+VkSurfaceFormatKHR choose_surface_format(std::span<const VkSurfaceFormatKHR> available,
+                                         VkFormat keep = VK_FORMAT_UNDEFINED);
+
+// The format we render into: the _SRGB format with the swapchain's byte order,
+// so a plain copy carries our pixels to the swapchain image unchanged.
+VkFormat render_format_for(VkFormat swapchain_format);
+
+// FIFO (vsync, always available) normally; for --benchmark the mode that does
+// not wait for the display: IMMEDIATE, then MAILBOX, then FIFO.
+VkPresentModeKHR choose_present_mode(std::span<const VkPresentModeKHR> available, bool uncapped);
+
+// The surface's own extent where it has one (a window), else the wanted size
+// clamped to what the surface allows (a headless surface).
+VkExtent2D choose_extent(const VkSurfaceCapabilitiesKHR& capabilities, VkExtent2D wanted);
+
+// One more image than the minimum, so we never wait for the presentation
+// engine to release one, within the surface's maximum (0 means no maximum).
+uint32_t choose_image_count(const VkSurfaceCapabilitiesKHR& capabilities);
+
+// What the runner asks of a swapchain.
+struct SwapchainRequest {
+    VkExtent2D extent;                    // used where the surface lets us choose
+    bool uncapped = false;                // --benchmark: do not wait for the display
+    bool readable = false;                // --screenshot: images may be copied from
+    VkFormat keep = VK_FORMAT_UNDEFINED;  // on recreation: the format we had
+};
+
+class Swapchain {
+public:
+    Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR surface,
+              const SwapchainRequest& request, VkSwapchainKHR old_swapchain);
+
+    VkSwapchainKHR get() const { return swapchain_; }
+    VkFormat format() const { return format_.format; }
+    VkExtent2D extent() const { return extent_; }
+    VkPresentModeKHR present_mode() const { return present_mode_; }
+    // Whether the images can be copied from (asked for, and the surface allows it).
+    bool readable() const { return readable_; }
+    const std::vector<VkImage>& images() const { return images_; }
+    // Signalled when the image's frame is rendered; presenting it waits on it.
+    // One per swapchain image, not per frame in flight: the presentation engine
+    // holds the semaphore until the image comes back from the screen.
+    VkSemaphore ready_to_present(uint32_t image) const { return ready_to_present_[image]; }
+
+private:
+    SwapchainHandle swapchain_;
+    VkSurfaceFormatKHR format_{};
+    VkExtent2D extent_{};
+    VkPresentModeKHR present_mode_ = VK_PRESENT_MODE_FIFO_KHR;
+    bool readable_ = false;
+    std::vector<VkImage> images_;
+    std::vector<Semaphore> ready_to_present_;
+};
+
+const char* format_name(VkFormat format);
+const char* present_mode_name(VkPresentModeKHR mode);
+
+}  // namespace vkt

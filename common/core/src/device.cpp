@@ -1,0 +1,264 @@
+#include "vkt/core/device.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cstdlib>
+#include <cstring>
+#include <string_view>
+
+namespace vkt {
+
+FeatureChain::FeatureChain() {
+    features13_.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
+    features12_.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
+    features12_.pNext = &features13_;
+    features11_.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES;
+    features11_.pNext = &features12_;
+    features_.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+    features_.pNext = &features11_;
+}
+
+VkBool32& FeatureChain::operator[](const Feature& feature) {
+    std::byte* base = nullptr;
+    switch (feature.set) {
+        case Feature::core10:
+            base = reinterpret_cast<std::byte*>(&features_.features);
+            break;
+        case Feature::core11:
+            base = reinterpret_cast<std::byte*>(&features11_);
+            break;
+        case Feature::core12:
+            base = reinterpret_cast<std::byte*>(&features12_);
+            break;
+        case Feature::core13:
+            base = reinterpret_cast<std::byte*>(&features13_);
+            break;
+    }
+    return *reinterpret_cast<VkBool32*>(base + feature.offset);
+}
+
+bool FeatureChain::has(const Feature& feature) const {
+    return const_cast<FeatureChain&>(*this)[feature] == VK_TRUE;
+}
+
+std::span<const Feature> base_features() {
+    static const Feature base[] = {VKT_FEATURE_13(dynamicRendering),
+                                   VKT_FEATURE_13(synchronization2)};
+    return base;
+}
+
+int device_score(const DeviceCandidate& candidate) {
+    return 1000 * device_type_score(candidate.type) + int(candidate.max_image_dimension / 1024);
+}
+
+static bool has_device_extension(VkPhysicalDevice device, const char* name) {
+    uint32_t count = 0;
+    VKT_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr));
+    std::vector<VkExtensionProperties> available(count);
+    VKT_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, available.data()));
+    return std::any_of(available.begin(), available.end(),
+                       [&](const auto& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
+bool can_present(VkPhysicalDevice device, uint32_t queue_family, VkSurfaceKHR surface) {
+    if (!has_device_extension(device, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) return false;
+    VkBool32 supported = VK_FALSE;
+    return vkGetPhysicalDeviceSurfaceSupportKHR(device, queue_family, surface, &supported) ==
+               VK_SUCCESS &&
+           supported;
+}
+
+int device_type_score(VkPhysicalDeviceType type) {
+    switch (type) {
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+            return 4;
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+            return 3;
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+            return 2;
+        case VK_PHYSICAL_DEVICE_TYPE_CPU:
+            return 1;
+        default:
+            return 0;
+    }
+}
+
+// VKT_HIDE_FEATURES=name,name,...: the tests' way to play a device that lacks
+// a feature or an extension (lavapipe has nearly all of them), so the message a
+// reader with such a device would see can be checked. Names as in the Vulkan
+// structs and extension strings: bufferDeviceAddress, VK_KHR_swapchain.
+static bool hidden_by_tests(std::string_view name) {
+    const char* list = std::getenv("VKT_HIDE_FEATURES");
+    if (!list) return false;
+    std::string_view rest(list);
+    while (!rest.empty()) {
+        const size_t comma = rest.find(',');
+        if (rest.substr(0, comma) == name) return true;
+        if (comma == std::string_view::npos) break;
+        rest.remove_prefix(comma + 1);
+    }
+    return false;
+}
+
+// "lacks the dynamicRendering feature", "lacks the extension VK_KHR_swapchain"
+static std::string lacks(bool feature, std::string_view name) {
+    std::string text = feature ? "lacks the " + std::string(name) + " feature"
+                               : "lacks the extension " + std::string(name);
+    if (hidden_by_tests(name)) text += " (hidden by VKT_HIDE_FEATURES)";
+    return text;
+}
+
+static std::string why_unsuitable(VkPhysicalDevice device, VkSurfaceKHR surface,
+                                  const DeviceRequirements& requirements, uint32_t& family_out) {
+    VkPhysicalDeviceProperties properties;
+    vkGetPhysicalDeviceProperties(device, &properties);
+    if (properties.apiVersion < VK_API_VERSION_1_3)
+        return "supports only Vulkan " +
+               std::to_string(VK_API_VERSION_MAJOR(properties.apiVersion)) + "." +
+               std::to_string(VK_API_VERSION_MINOR(properties.apiVersion)) + ", not 1.3";
+
+    FeatureChain available;
+    vkGetPhysicalDeviceFeatures2(device, available.head());
+    for (const Feature& feature : base_features())
+        if (!available.has(feature) || hidden_by_tests(feature.name))
+            return lacks(true, feature.name);
+    for (const Feature& feature : requirements.features)
+        if (!available.has(feature) || hidden_by_tests(feature.name))
+            return lacks(true, feature.name);
+
+    for (const char* wanted : requirements.extensions)
+        if (!has_device_extension(device, wanted) || hidden_by_tests(wanted))
+            return lacks(false, wanted);
+
+    uint32_t count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+    for (uint32_t i = 0; i < count; ++i) {
+        const VkQueueFlags wanted = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+        if ((families[i].queueFlags & wanted) != wanted) continue;
+        if (surface && !can_present(device, i, surface)) continue;
+        family_out = i;
+        return {};
+    }
+    return surface ? "has no queue family that can draw, compute and present to this surface"
+                   : "has no queue family that can draw and compute";
+}
+
+std::vector<DeviceCandidate> survey_devices(VkInstance instance, VkSurfaceKHR surface,
+                                            const DeviceRequirements& requirements) {
+    uint32_t count = 0;
+    VKT_CHECK(vkEnumeratePhysicalDevices(instance, &count, nullptr));
+    std::vector<VkPhysicalDevice> devices(count);
+    VKT_CHECK(vkEnumeratePhysicalDevices(instance, &count, devices.data()));
+
+    std::vector<DeviceCandidate> candidates;
+    for (uint32_t i = 0; i < count; ++i) {
+        VkPhysicalDeviceProperties properties;
+        vkGetPhysicalDeviceProperties(devices[i], &properties);
+        DeviceCandidate candidate{
+            .handle = devices[i],
+            .index = i,
+            .name = properties.deviceName,
+            .type = properties.deviceType,
+            .api_version = properties.apiVersion,
+            .max_image_dimension = properties.limits.maxImageDimension2D,
+        };
+        candidate.unsuitable =
+            why_unsuitable(devices[i], surface, requirements, candidate.queue_family);
+        candidates.push_back(std::move(candidate));
+    }
+    return candidates;
+}
+
+static std::string lower(std::string_view text) {
+    std::string out(text);
+    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+const DeviceCandidate& choose_device(std::span<const DeviceCandidate> candidates,
+                                     std::string_view selector) {
+    if (candidates.empty())
+        throw Error(
+            "no Vulkan device found: is a Vulkan driver installed? "
+            "(on Debian: apt install mesa-vulkan-drivers)");
+
+    if (!selector.empty()) {
+        const DeviceCandidate* named = nullptr;
+        // All digits: an index (however large); anything else: part of a name.
+        if (std::all_of(selector.begin(), selector.end(),
+                        [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+            uint64_t index = UINT64_MAX;
+            std::from_chars(selector.data(), selector.data() + selector.size(), index);
+            if (index >= candidates.size())
+                throw Error("--device " + std::string(selector) + ": there are only " +
+                            std::to_string(candidates.size()) + " device(s), numbered from 0");
+            named = &candidates[index];
+        } else {
+            for (const auto& candidate : candidates)
+                if (lower(candidate.name).find(lower(selector)) != std::string::npos) {
+                    named = &candidate;
+                    break;
+                }
+            if (!named)
+                throw Error("--device " + std::string(selector) +
+                            ": no device has that in its name");
+        }
+        if (!named->unsuitable.empty())
+            throw Error("device " + std::to_string(named->index) + " (" + named->name + ") " +
+                        named->unsuitable);
+        return *named;
+    }
+
+    const DeviceCandidate* best = nullptr;
+    for (const auto& candidate : candidates)
+        if (candidate.unsuitable.empty() &&
+            (!best || device_score(candidate) > device_score(*best)))
+            best = &candidate;
+    if (!best) {
+        std::string reasons;
+        for (const auto& candidate : candidates)
+            reasons += "; " + candidate.name + " " + candidate.unsuitable;
+        throw Error("no Vulkan device can run this chapter" + reasons);
+    }
+    return *best;
+}
+
+Device::Device(const DeviceCandidate& chosen, const DeviceRequirements& requirements)
+    : physical_(chosen.handle), queue_family_(chosen.queue_family) {
+    vkGetPhysicalDeviceProperties(physical_, &properties_);
+
+    float priority = 1.0f;
+    VkDeviceQueueCreateInfo queue_info{
+        .sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO,
+        .queueFamilyIndex = queue_family_,
+        .queueCount = 1,
+        .pQueuePriorities = &priority,
+    };
+    // Turn on exactly what is needed: the base features, the chapter's required
+    // ones, and those optional ones this device has.
+    FeatureChain available;
+    vkGetPhysicalDeviceFeatures2(physical_, available.head());
+    for (const Feature& feature : base_features()) enabled_[feature] = VK_TRUE;
+    for (const Feature& feature : requirements.features) enabled_[feature] = VK_TRUE;
+    for (const Feature& feature : requirements.optional_features)
+        enabled_[feature] = available.has(feature) ? VK_TRUE : VK_FALSE;
+    VkDeviceCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
+        .pNext = enabled_.head(),
+        .queueCreateInfoCount = 1,
+        .pQueueCreateInfos = &queue_info,
+        .enabledExtensionCount = static_cast<uint32_t>(requirements.extensions.size()),
+        .ppEnabledExtensionNames = requirements.extensions.data(),
+    };
+    VKT_CHECK(vkCreateDevice(physical_, &info, nullptr, &device_));
+    vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
+}
+
+Device::~Device() {
+    if (device_) vkDestroyDevice(device_, nullptr);
+}
+
+}  // namespace vkt

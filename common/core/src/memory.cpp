@@ -1,0 +1,108 @@
+#include "vkt/core/memory.hpp"
+
+#include "vkt/core/check.hpp"
+
+#include <cstdio>
+#include <string>
+
+namespace vkt {
+
+uint32_t find_memory_type(VkPhysicalDevice physical, uint32_t type_bits,
+                          VkMemoryPropertyFlags wanted) {
+    VkPhysicalDeviceMemoryProperties memory;
+    vkGetPhysicalDeviceMemoryProperties(physical, &memory);
+    for (uint32_t i = 0; i < memory.memoryTypeCount; ++i)
+        if ((type_bits & (1u << i)) && (memory.memoryTypes[i].propertyFlags & wanted) == wanted)
+            return i;
+    char flags[16];
+    std::snprintf(flags, sizeof flags, "0x%x", wanted);
+    throw Error(std::string("no memory type has the properties ") + flags);
+}
+
+// One allocation for one buffer or image: fine for the handful the runner and
+// early chapters make (a real allocator suballocates; see chapter 05).
+static DeviceMemory allocate(VkPhysicalDevice physical, VkDevice device,
+                             const VkMemoryRequirements& requirements,
+                             VkMemoryPropertyFlags properties) {
+    VkMemoryAllocateInfo info{
+        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
+        .allocationSize = requirements.size,
+        .memoryTypeIndex = find_memory_type(physical, requirements.memoryTypeBits, properties),
+    };
+    VkDeviceMemory memory;
+    VKT_CHECK(vkAllocateMemory(device, &info, nullptr, &memory));
+    return DeviceMemory(device, memory);
+}
+
+Buffer create_buffer(VkPhysicalDevice physical, VkDevice device, VkDeviceSize size,
+                     VkBufferUsageFlags usage, VkMemoryPropertyFlags properties) {
+    Buffer out;
+    out.size = size;
+    VkBufferCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO,
+        .size = size,
+        .usage = usage,
+        .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
+    };
+    VkBuffer buffer;
+    VKT_CHECK(vkCreateBuffer(device, &info, nullptr, &buffer));
+    out.buffer = BufferHandle(device, buffer);
+
+    VkMemoryRequirements requirements;
+    vkGetBufferMemoryRequirements(device, buffer, &requirements);
+    out.memory = allocate(physical, device, requirements, properties);
+    VKT_CHECK(vkBindBufferMemory(device, buffer, out.memory, 0));
+    if (properties & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
+        VKT_CHECK(vkMapMemory(device, out.memory, 0, VK_WHOLE_SIZE, 0, &out.mapped));
+    return out;
+}
+
+Image create_image_2d(VkPhysicalDevice physical, VkDevice device, VkFormat format,
+                      VkExtent2D extent, VkImageUsageFlags usage, VkImageAspectFlags aspect) {
+    return create_image_2d_mips(physical, device, format, extent, 1, usage, aspect);
+}
+
+Image create_image_2d_mips(VkPhysicalDevice physical, VkDevice device, VkFormat format,
+                           VkExtent2D extent, uint32_t mip_levels, VkImageUsageFlags usage,
+                           VkImageAspectFlags aspect) {
+    if (mip_levels == 0) throw Error("create_image_2d_mips: an image needs at least one mip level");
+    Image out;
+    out.format = format;
+    out.extent = extent;
+    out.mip_levels = mip_levels;
+    VkImageCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
+        .imageType = VK_IMAGE_TYPE_2D,
+        .format = format,
+        .extent = {extent.width, extent.height, 1},
+        .mipLevels = mip_levels,
+        .arrayLayers = 1,
+        .samples = VK_SAMPLE_COUNT_1_BIT,
+        .tiling = VK_IMAGE_TILING_OPTIMAL,
+        .usage = usage,
+        .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
+        .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED,
+    };
+    VkImage image;
+    VKT_CHECK(vkCreateImage(device, &info, nullptr, &image));
+    out.image = ImageHandle(device, image);
+
+    VkMemoryRequirements requirements;
+    vkGetImageMemoryRequirements(device, image, &requirements);
+    out.memory = allocate(physical, device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    VKT_CHECK(vkBindImageMemory(device, image, out.memory, 0));
+
+    VkImageViewCreateInfo view_info{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+        .image = image,
+        .viewType = VK_IMAGE_VIEW_TYPE_2D,
+        .format = format,
+        .subresourceRange = {aspect, 0, mip_levels, 0, 1},
+    };
+    VkImageView view;
+    VKT_CHECK(vkCreateImageView(device, &view_info, nullptr, &view));
+    out.view = ImageView(device, view);
+    return out;
+}
+
+}  // namespace vkt

@@ -1,0 +1,91 @@
+#pragma once
+// The chapter runner: the command line, the window or headless surface (or
+// offscreen images), the swapchain, frames in flight, screenshots and
+// benchmarks. Chapter 03 builds it; every chapter from 03 on only says what to
+// record into each frame.
+//
+// The contract with a chapter: each frame, record() gets a command buffer and
+// the frame's colour target, an image of our own in an _SRGB format, already in
+// VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL with undefined contents. record()
+// draws into it and leaves it in COLOR_ATTACHMENT_OPTIMAL; the runner then
+// copies it to the swapchain image (or keeps it, offscreen).
+
+#include "vkt/core/device.hpp"
+#include "vkt/frame/args.hpp"
+#include "vkt/frame/gpu_timer.hpp"
+#include "vkt/frame/input.hpp"
+#include "vkt/resources/upload.hpp"
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace vkt {
+
+// What a chapter's renderer may use; it stays valid for the renderer's life.
+struct Context {
+    const Options& options;
+    std::string chapter;  // "04_triangle": where its shaders are
+    VkInstance instance;
+    VkPhysicalDevice physical;
+    VkDevice device;
+    VkQueue queue;
+    uint32_t queue_family;
+    VkFormat color_format;  // the colour target's format (always an _SRGB format)
+    VkExtent2D extent;      // the colour target's size at start (see Renderer::resize)
+    uint32_t frames_in_flight;
+    const VkPhysicalDeviceProperties& properties;  // limits, name, ...
+    const FeatureChain& features;  // what was enabled: ask it about optional features
+
+    // What the upload helpers need (chapter 05).
+    Gpu gpu() const { return {physical, device, queue, queue_family}; }
+};
+
+// [renderer-contract]
+struct Frame {
+    VkCommandBuffer cmd;
+    VkImage target;
+    VkImageView target_view;
+    VkExtent2D extent;
+    uint64_t index;  // 0, 1, 2, ...
+    double time;    // seconds: index / 60 headless or with --frames (reproducible), else wall clock
+    uint32_t slot;  // which frame in flight, 0 .. frames_in_flight - 1
+    const Input& input;  // what the user did since the last frame (chapter 11); may be empty
+    GpuTimer* timer;     // null unless --benchmark: use gpu_scope()
+
+    // Times the commands recorded while the returned object lives as a named
+    // GPU scope, which --benchmark reports (chapter 13):
+    //   { auto scope = frame.gpu_scope("simulate"); vkCmdDispatch(...); }
+    GpuScope gpu_scope(std::string_view name) const { return {timer, cmd, slot, name}; }
+};
+
+class Renderer {
+public:
+    virtual ~Renderer() = default;
+    virtual void record(const Frame& frame) = 0;
+    // The colour target changed size (the window was resized); the GPU is idle.
+    virtual void resize(VkExtent2D) {}
+};
+// [/renderer-contract]
+
+struct ChapterSpec {
+    std::string name;   // "04_triangle"
+    std::string title;  // shown in the window's title bar
+    DeviceRequirements requirements;
+    std::vector<OptionSpec> options;  // the chapter's own flags (--model, --lights, ...)
+    InputUse input = InputUse::none;  // what input the chapter wants in a window (chapter 11)
+};
+
+using RendererFactory = std::function<std::unique_ptr<Renderer>(const Context&)>;
+
+// Runs a drawing chapter; returns the process exit status:
+// 0 done, 1 an error (or any validation message), 2 bad command line.
+int run_chapter(int argc, char** argv, const ChapterSpec& spec, const RendererFactory& factory);
+
+// For the text chapters 01 and 02: parses the command line (accepting the
+// flags `flags` names), runs body, and turns exceptions into one clear line and
+// exit status 1 (2 for usage).
+int run_text_chapter(int argc, char** argv, Flags flags,
+                     const std::function<int(const Options&)>& body);
+
+}  // namespace vkt

@@ -1,0 +1,244 @@
+#include "vkt/frame/args.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace vkt {
+
+namespace {
+
+// A whole, positive decimal number that fits in 32 bits, or nothing.
+std::optional<uint32_t> parse_positive(std::string_view text) {
+    uint64_t value = 0;
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc{} || end != text.data() + text.size() || value == 0 ||
+        value > std::numeric_limits<uint32_t>::max())
+        return std::nullopt;
+    return static_cast<uint32_t>(value);
+}
+
+bool is_frame_loop_flag(std::string_view flag) {
+    return flag == "--headless" || flag == "--offscreen" || flag == "--frames" ||
+           flag == "--size" || flag == "--screenshot" || flag == "--benchmark";
+}
+
+std::string format_number(double value) {
+    char text[32];
+    // 15 significant digits: every whole number a flag takes prints in full
+    // (plain %g would write 268435456 as 2.68435e+08).
+    std::snprintf(text, sizeof text, "%.15g", value);
+    return text;
+}
+
+std::string joined(const std::vector<std::string>& words, const char* separator) {
+    std::string out;
+    for (const auto& word : words) out += (out.empty() ? "" : separator) + word;
+    return out;
+}
+
+// Checks one value of a chapter option; returns it as it will be stored.
+std::string check_option_value(const OptionSpec& spec, std::string_view text) {
+    const std::string given(text);
+    switch (spec.type) {
+        case OptionType::integer: {
+            int64_t value = 0;
+            auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+            if (error != std::errc{} || end != text.data() + text.size() || text.empty() ||
+                double(value) < spec.min || double(value) > spec.max)
+                throw UsageError(spec.name + " wants a whole number from " +
+                                 format_number(spec.min) + " to " + format_number(spec.max) +
+                                 ", not '" + given + "'");
+            return std::to_string(value);
+        }
+        case OptionType::number: {
+            double value = 0;
+            auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+            if (error != std::errc{} || end != text.data() + text.size() || text.empty() ||
+                !std::isfinite(value) || value < spec.min || value > spec.max)
+                throw UsageError(spec.name + " wants a number from " + format_number(spec.min) +
+                                 " to " + format_number(spec.max) + ", not '" + given + "'");
+            return given;
+        }
+        case OptionType::choice:
+            for (const auto& choice : spec.choices)
+                if (choice == text) return given;
+            throw UsageError(spec.name + " wants one of " + joined(spec.choices, ", ") + ", not '" +
+                             given + "'");
+        case OptionType::text:
+        default:
+            if (text.empty()) throw UsageError(spec.name + " wants a value");
+            return given;
+    }
+}
+
+std::string option_value_name(const OptionSpec& spec) {
+    if (!spec.value_name.empty()) return spec.value_name;
+    if (spec.type == OptionType::choice) return joined(spec.choices, "|");
+    return spec.type == OptionType::text ? "TEXT" : "N";
+}
+
+}  // namespace
+
+const std::string& Options::text(std::string_view name) const {
+    auto found = values.find(name);
+    if (found == values.end())
+        throw std::logic_error("chapter option " + std::string(name) + " has no value");
+    return found->second;
+}
+
+int64_t Options::integer(std::string_view name) const {
+    return std::stoll(text(name));
+}
+
+double Options::number(std::string_view name) const {
+    return std::stod(text(name));
+}
+
+Options parse_args(std::span<const char* const> args, Flags flags,
+                   std::span<const OptionSpec> chapter_options) {
+    Options options;
+    for (const auto& spec : chapter_options)
+        if (!spec.default_value.empty())
+            options.values[spec.name] = check_option_value(spec, spec.default_value);
+    for (size_t i = 0; i < args.size(); ++i) {
+        std::string_view arg = args[i];
+        // Accept both "--frames 10" and "--frames=10".
+        std::string_view flag = arg;
+        std::optional<std::string_view> inline_value;
+        if (auto eq = arg.find('='); arg.starts_with("--") && eq != std::string_view::npos) {
+            flag = arg.substr(0, eq);
+            inline_value = arg.substr(eq + 1);
+        }
+        auto value = [&]() -> std::string_view {
+            if (inline_value) return *inline_value;
+            if (i + 1 >= args.size()) throw UsageError(std::string(flag) + " needs a value");
+            return args[++i];
+        };
+        auto no_value = [&] {
+            if (inline_value) throw UsageError(std::string(flag) + " takes no value");
+        };
+
+        if (flags != Flags::frame_loop && is_frame_loop_flag(flag))
+            throw UsageError(std::string(flag) + " is not used by this chapter: it draws nothing");
+        if (flags == Flags::instance && flag == "--device")
+            throw UsageError("--device is not used by this chapter: it opens no device");
+
+        if (flag == "--help" || flag == "-h") {
+            no_value();
+            options.help = true;
+        } else if (flag == "--headless") {
+            no_value();
+            options.headless = true;
+        } else if (flag == "--offscreen") {
+            no_value();
+            options.headless = true;  // offscreen has no window either
+            options.offscreen = true;
+        } else if (flag == "--benchmark") {
+            no_value();
+            options.benchmark = true;
+        } else if (flag == "--validation") {
+            no_value();
+            options.validation = true;
+        } else if (flag == "--no-validation") {
+            no_value();
+            options.validation = false;
+        } else if (flag == "--frames") {
+            std::string_view text = value();
+            auto frames = parse_positive(text);
+            if (!frames)
+                throw UsageError("--frames wants a whole number of at least 1, not '" +
+                                 std::string(text) + "'");
+            options.frames = *frames;
+        } else if (flag == "--size") {
+            std::string_view text = value();
+            auto x = text.find('x');
+            auto w = x == std::string_view::npos ? std::nullopt : parse_positive(text.substr(0, x));
+            auto h =
+                x == std::string_view::npos ? std::nullopt : parse_positive(text.substr(x + 1));
+            // An upper bound for any device; the runner also checks the chosen device's
+            // maxImageDimension2D, which may be as small as 4096.
+            constexpr uint32_t max_side = 16384;
+            if (!w || !h || *w > max_side || *h > max_side)
+                throw UsageError("--size wants WIDTHxHEIGHT, each 1.." + std::to_string(max_side) +
+                                 ", not '" + std::string(text) + "'");
+            options.width = *w;
+            options.height = *h;
+        } else if (flag == "--screenshot") {
+            std::string_view text = value();
+            if (!text.ends_with(".png") || text.size() == 4)
+                throw UsageError(
+                    "--screenshot writes a PNG: give a file name ending in .png, not '" +
+                    std::string(text) + "'");
+            options.screenshot = text;
+        } else if (flag == "--device") {
+            std::string_view text = value();
+            if (text.empty()) throw UsageError("--device wants a name or an index");
+            options.device = text;
+        } else {
+            const OptionSpec* spec = nullptr;
+            for (const auto& candidate : chapter_options)
+                if (candidate.name == flag) spec = &candidate;
+            if (!spec) throw UsageError("unknown argument '" + std::string(arg) + "'");
+            options.values[spec->name] = check_option_value(*spec, value());
+        }
+    }
+    return options;
+}
+
+std::string usage_line(std::string_view program, Flags flags,
+                       std::span<const OptionSpec> chapter_options) {
+    std::string line = "usage: " + std::string(program);
+    if (flags == Flags::frame_loop)
+        line +=
+            " [--headless | --offscreen] [--frames N] [--size WxH] [--screenshot FILE.png]"
+            " [--benchmark]";
+    if (flags != Flags::instance) line += " [--device NAME|INDEX]";
+    line += " [--validation | --no-validation] [--help]";
+    for (const auto& spec : chapter_options)
+        line += " [" + spec.name + " " + option_value_name(spec) + "]";
+    return line;
+}
+
+std::string help_text(std::string_view program, Flags flags,
+                      std::span<const OptionSpec> chapter_options) {
+    std::string text = usage_line(program, flags, chapter_options) + "\n\n";
+    if (!chapter_options.empty()) {
+        text += "this chapter's own flags:\n";
+        for (const auto& spec : chapter_options) {
+            std::string left = "  " + spec.name + " " + option_value_name(spec);
+            std::string right = spec.help;
+            if (spec.type == OptionType::integer || spec.type == OptionType::number)
+                right += " (" + format_number(spec.min) + ".." + format_number(spec.max) + ")";
+            if (!spec.default_value.empty()) right += " [default: " + spec.default_value + "]";
+            if (left.size() < 23)
+                text += left + std::string(23 - left.size(), ' ') + right + "\n";
+            else
+                text += left + "\n" + std::string(23, ' ') + right + "\n";
+        }
+        text += "\nshared flags:\n";
+    }
+    if (flags == Flags::frame_loop)
+        text +=
+            "  --headless           no window: present to VK_EXT_headless_surface, or render\n"
+            "                       offscreen where the device cannot present to it (also the\n"
+            "                       choice when there is no display or no window can open)\n"
+            "  --offscreen          no surface at all: render into our own images only\n"
+            "  --frames N           stop after N frames; time is then frame index / 60 s\n"
+            "                       (headless default: 60 frames)\n"
+            "  --size WxH           size of the window or the headless image (default 800x600)\n"
+            "  --screenshot FILE.png  write the last frame, as presented, as a PNG\n"
+            "  --benchmark          print CPU and GPU frame times as JSON on stdout\n";
+    if (flags != Flags::instance)
+        text += "  --device NAME|INDEX  use this physical device (index, or part of its name)\n";
+    text +=
+        "  --validation         require the Khronos validation layer, with synchronisation\n"
+        "                       validation; any warning or error makes the exit status 1\n"
+        "  --no-validation      do not load the validation layer\n"
+        "                       (default: validation on when the layer is installed)\n"
+        "  --help               this text\n";
+    return text;
+}
+
+}  // namespace vkt

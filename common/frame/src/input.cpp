@@ -1,0 +1,33 @@
+#include "vkt/frame/input.hpp"
+
+namespace vkt {
+
+void InputAccumulator::key(int code, bool is_down) {
+    if (code < 0 || code >= key::count) return;  // GLFW_KEY_UNKNOWN (-1) and the like
+    if (is_down && !current_.held[size_t(code)]) current_.pressed[size_t(code)] = true;
+    current_.held[size_t(code)] = is_down;
+}
+
+void InputAccumulator::cursor(double x, double y) {
+    if (current_.cursor_captured && have_cursor_) {
+        current_.mouse_dx += x - last_x_;
+        current_.mouse_dy += y - last_y_;
+    }
+    have_cursor_ = true;
+    last_x_ = x;
+    last_y_ = y;
+}
+
+void InputAccumulator::set_captured(bool captured) {
+    current_.cursor_captured = captured;
+    have_cursor_ = false;  // the cursor jumps when it is captured or released
+}
+
+Input InputAccumulator::take() {
+    Input out = current_;
+    current_.pressed.reset();
+    current_.mouse_dx = current_.mouse_dy = current_.scroll = 0;
+    return out;
+}
+
+}  // namespace vkt

@@ -1,0 +1,46 @@
+#pragma once
+// A graphics pipeline in one call: the tidy form of chapter 04's pipeline,
+// with chapter 05's vertex input, chapter 06's push constants and chapter 08's
+// depth test as options. Later chapters name only what differs from the
+// defaults; a chapter that teaches a pipeline setting writes it out itself.
+
+#include "vkt/core/owned.hpp"
+
+#include <span>
+#include <vector>
+
+namespace vkt {
+
+PipelineLayout create_pipeline_layout(VkDevice device,
+                                      std::span<const VkDescriptorSetLayout> set_layouts = {},
+                                      std::span<const VkPushConstantRange> push_constants = {});
+
+struct GraphicsPipelineDesc {
+    VkShaderModule vertex = VK_NULL_HANDLE;
+    VkShaderModule fragment = VK_NULL_HANDLE;  // may be null (a depth-only pass)
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    std::span<const VkVertexInputBindingDescription> bindings;      // chapter 05
+    std::span<const VkVertexInputAttributeDescription> attributes;  // chapter 05
+    VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPolygonMode polygon_mode = VK_POLYGON_MODE_FILL;
+    VkCullModeFlags cull_mode = VK_CULL_MODE_NONE;
+    // Counter-clockwise in framebuffer coordinates (y down): see the
+    // conventions appendix for why a y-flipped projection keeps glTF's CCW.
+    VkFrontFace front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    std::vector<VkFormat> color_formats;
+    // Chapter 08: set to test and write depth (compare LESS by default).
+    VkFormat depth_format = VK_FORMAT_UNDEFINED;
+    bool depth_write = true;
+    VkCompareOp depth_compare = VK_COMPARE_OP_LESS;
+    bool alpha_blend = false;  // source-over blending on every colour attachment
+    const VkSpecializationInfo* vertex_specialization = nullptr;
+    const VkSpecializationInfo* fragment_specialization = nullptr;
+};
+
+// Viewport and scissor are dynamic state (set them each frame).
+Pipeline create_graphics_pipeline(VkDevice device, const GraphicsPipelineDesc& desc);
+
+// vkCmdSetViewport and vkCmdSetScissor for the whole of `extent`.
+void set_viewport_and_scissor(VkCommandBuffer cmd, VkExtent2D extent);
+
+}  // namespace vkt

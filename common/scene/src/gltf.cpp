@@ -1,0 +1,710 @@
+#include "vkt/scene/gltf.hpp"
+
+#include "vkt/core/check.hpp"
+#include "vkt/core/files.hpp"
+#include "vkt/resources/texture.hpp"
+
+// Debian builds tinygltf as a shared library (TINYGLTF_IMPLEMENTATION lives in
+// libtinygltf.so, with its own stb_image); we only include the declarations.
+#include <tiny_gltf.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <limits>
+#include <map>
+#include <optional>
+#include <set>
+#include <span>
+
+namespace vkt {
+
+namespace {
+
+// The loader's own image "decoder" for tinygltf: keep the file's bytes as they
+// are, decode them later with vkt::decode_image. An image stored in a
+// bufferView is skipped here: tinygltf hands it over without checking the
+// view against its buffer, so we read those bytes ourselves, checked.
+bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+    if (image->bufferView < 0 && bytes && size > 0) image->image.assign(bytes, bytes + size);
+    image->width = image->height = 0;  // not decoded (yet)
+    return true;
+}
+
+std::string first_line(const std::string& text) {
+    std::string line = text.substr(0, text.find('\n'));
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    return line;
+}
+
+const char* component_name(int component_type) {
+    switch (component_type) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+            return "BYTE";
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return "UNSIGNED_BYTE";
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+            return "SHORT";
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return "UNSIGNED_SHORT";
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+            return "UNSIGNED_INT";
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return "FLOAT";
+        default:
+            return "an unknown component type";
+    }
+}
+
+const char* type_name(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR:
+            return "SCALAR";
+        case TINYGLTF_TYPE_VEC2:
+            return "VEC2";
+        case TINYGLTF_TYPE_VEC3:
+            return "VEC3";
+        case TINYGLTF_TYPE_VEC4:
+            return "VEC4";
+        case TINYGLTF_TYPE_MAT2:
+            return "MAT2";
+        case TINYGLTF_TYPE_MAT3:
+            return "MAT3";
+        case TINYGLTF_TYPE_MAT4:
+            return "MAT4";
+        default:
+            return "an unknown type";
+    }
+}
+
+// What an accessor may hold for each use, as the glTF 2.0 specification lists it.
+struct AllowedFormat {
+    int type;
+    std::vector<int> components;  // component types
+    bool needs_normalized;        // integer components must be normalized
+};
+
+class Loader {
+public:
+    explicit Loader(std::filesystem::path path) : path_(std::move(path)) {}
+
+    GltfScene load() {
+        parse();
+        check_extensions();
+        load_materials();
+        walk_nodes();
+        if (scene_.draws.empty()) {
+            // Say why: what was skipped is often the reason nothing is left
+            // (a sparse accessor, points or lines), and the warnings would
+            // otherwise never be printed.
+            std::string why = "nothing to draw: no node of the scene has a mesh with triangles";
+            for (size_t i = 0; i < scene_.warnings.size(); ++i)
+                why += (i == 0 ? " (" : "; ") + scene_.warnings[i];
+            fail(scene_.warnings.empty() ? why : why + ")");
+        }
+        compute_bounds();
+        return std::move(scene_);
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& what) const {
+        throw Error(path_.string() + ": " + what);
+    }
+    void warn(const std::string& what) {
+        if (std::find(scene_.warnings.begin(), scene_.warnings.end(), what) ==
+            scene_.warnings.end())
+            scene_.warnings.push_back(what);
+    }
+
+    // --- The file: tinygltf parses JSON, .glb chunks, buffers -------------
+    void parse() {
+        std::vector<char> file = read_file(path_);  // "cannot open FILE"
+        if (file.empty()) fail("not a glTF file: it is empty");
+        if (file.size() > std::numeric_limits<unsigned int>::max())
+            fail("not a glTF file this loader reads: larger than 4 GiB");
+        tinygltf::TinyGLTF gltf;
+        gltf.SetImageLoader(keep_image_bytes, nullptr);
+        std::string err, warn_text;
+        const std::string base_dir = path_.parent_path().string();
+        const bool glb = file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
+        bool ok = false;
+        try {
+            if (glb)
+                ok = gltf.LoadBinaryFromMemory(&model_, &err, &warn_text,
+                                               reinterpret_cast<const unsigned char*>(file.data()),
+                                               static_cast<unsigned int>(file.size()), base_dir);
+            else
+                ok = gltf.LoadASCIIFromString(&model_, &err, &warn_text, file.data(),
+                                              static_cast<unsigned int>(file.size()), base_dir);
+        } catch (const std::exception& e) {  // tinygltf's JSON library may throw
+            err = e.what();
+            ok = false;
+        }
+        if (!ok)
+            fail(std::string("not a glTF file") + (glb ? " (.glb)" : "") + ": " +
+                 (err.empty() ? "tinygltf cannot parse it" : first_line(err)));
+    }
+
+    void check_extensions() {
+        for (const std::string& name : model_.extensionsRequired)
+            fail("requires extension " + name + ", which this loader does not support");
+        for (const std::string& name : model_.extensionsUsed)
+            warn("uses extension " + name + ", which this loader ignores");
+        if (!model_.skins.empty()) warn("skins are not supported: meshes are drawn unskinned");
+        if (!model_.animations.empty())
+            warn("animations are not supported: the scene stands still");
+        if (!model_.cameras.empty())
+            warn("cameras are ignored: the chapter frames the scene itself");
+    }
+
+    // --- Bounds-checked access to accessor data ---------------------------
+    // The bytes of buffer view `index`, checked against its buffer.
+    std::span<const uint8_t> view_bytes(int index, const std::string& what) const {
+        if (index < 0 || size_t(index) >= model_.bufferViews.size())
+            fail(what + ": bufferView " + std::to_string(index) + " does not exist");
+        const tinygltf::BufferView& view = model_.bufferViews[size_t(index)];
+        if (view.buffer < 0 || size_t(view.buffer) >= model_.buffers.size())
+            fail(what + ": bufferView " + std::to_string(index) + " names buffer " +
+                 std::to_string(view.buffer) + ", which does not exist");
+        const std::vector<unsigned char>& data = model_.buffers[size_t(view.buffer)].data;
+        if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
+            fail(what + ": bufferView " + std::to_string(index) + " (offset " +
+                 std::to_string(view.byteOffset) + ", length " + std::to_string(view.byteLength) +
+                 ") runs past the end of buffer " + std::to_string(view.buffer) + " (" +
+                 std::to_string(data.size()) + " bytes)");
+        return {data.data() + view.byteOffset, view.byteLength};
+    }
+
+    const tinygltf::Accessor& accessor(int index, const std::string& what) const {
+        if (index < 0 || size_t(index) >= model_.accessors.size())
+            fail(what + ": accessor " + std::to_string(index) + " does not exist");
+        return model_.accessors[size_t(index)];
+    }
+
+    // Reads accessor `index` as `count` elements of `out_components` floats
+    // each (integers normalised to 0..1 where the accessor says so; indices
+    // are read with read_indices instead). Checks its type against `allowed`
+    // and every byte against the end of its view.
+    std::vector<float> read_floats(int index, const std::string& what,
+                                   const std::vector<AllowedFormat>& allowed) const {
+        const tinygltf::Accessor& a = accessor(index, what);
+        const std::string name = what + ": accessor " + std::to_string(index);
+        bool ok = false;
+        for (const AllowedFormat& f : allowed)
+            if (a.type == f.type &&
+                std::find(f.components.begin(), f.components.end(), a.componentType) !=
+                    f.components.end() &&
+                (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || !f.needs_normalized ||
+                 a.normalized))
+                ok = true;
+        if (!ok)
+            fail(name + " is " + type_name(a.type) + " of " + component_name(a.componentType) +
+                 (a.normalized ? " (normalized)" : "") + ", which glTF does not allow here");
+        const int components = tinygltf::GetNumComponentsInType(uint32_t(a.type));
+        const int component_size = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
+        std::vector<float> out;
+        if (a.count > (size_t(1) << 28))
+            fail(name + ": count " + std::to_string(a.count) + " is too large");
+        out.assign(a.count * size_t(components), 0.0f);
+        const size_t element_size = size_t(components * component_size);
+        // One element's components, from `element`, into out[i].
+        auto decode = [&](const uint8_t* element, size_t i) {
+            for (int c = 0; c < components; ++c) {
+                const uint8_t* p = element + c * component_size;
+                float v = 0;
+                switch (a.componentType) {
+                    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+                        std::memcpy(&v, p, 4);
+                        break;
+                    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                        v = float(*p) / 255.0f;
+                        break;
+                    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+                        uint16_t s;
+                        std::memcpy(&s, p, 2);
+                        v = float(s) / 65535.0f;
+                        break;
+                    }
+                    default:
+                        break;  // excluded by `allowed`
+                }
+                out[i * size_t(components) + size_t(c)] = v;
+            }
+        };
+        if (a.bufferView >= 0) {  // no view: all zeros, as glTF says
+            std::span<const uint8_t> bytes = element_range(a, name, element_size);
+            const size_t stride = stride_of(a, element_size);
+            for (size_t i = 0; i < a.count; ++i)
+                decode(bytes.data() + a.byteOffset + i * stride, i);
+        }
+        if (a.sparse.isSparse) apply_sparse(a, name, element_size, decode);
+        return out;
+    }
+
+    // A sparse accessor replaces some of its elements: `count` indices (which
+    // elements) and as many values, each tightly packed in its own view.
+    template <typename Decode>
+    void apply_sparse(const tinygltf::Accessor& a, const std::string& name, size_t element_size,
+                      Decode& decode) const {
+        const auto& sparse = a.sparse;
+        const std::string what = name + " (sparse)";
+        if (sparse.count < 1 || size_t(sparse.count) > a.count)
+            fail(what + ": count " + std::to_string(sparse.count) + " is not between 1 and " +
+                 std::to_string(a.count));
+        const int ict = sparse.indices.componentType;
+        if (ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+            ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+            ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+            fail(what + ": indices are " + component_name(ict) +
+                 ", not UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+        const size_t count = size_t(sparse.count);
+        const size_t index_size = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(ict)));
+        // Each view must hold byteOffset + count elements (count * size <= 2^28 * 64: no overflow).
+        auto packed = [&](int view, int offset, size_t size, const char* part) {
+            std::span<const uint8_t> bytes = view_bytes(view, what + " " + part);
+            if (offset < 0 || size_t(offset) > bytes.size() ||
+                count * size > bytes.size() - size_t(offset))
+                fail(what + ": " + part + " (count " + std::to_string(count) + ", byteOffset " +
+                     std::to_string(offset) + ") run past the end of bufferView " +
+                     std::to_string(view) + " (" + std::to_string(bytes.size()) + " bytes)");
+            return bytes.data() + offset;
+        };
+        const uint8_t* indices =
+            packed(sparse.indices.bufferView, sparse.indices.byteOffset, index_size, "indices");
+        const uint8_t* values =
+            packed(sparse.values.bufferView, sparse.values.byteOffset, element_size, "values");
+        for (size_t i = 0; i < count; ++i) {
+            uint32_t target = 0;
+            if (index_size == 1) {
+                target = indices[i];
+            } else if (index_size == 2) {
+                uint16_t v;
+                std::memcpy(&v, indices + 2 * i, 2);
+                target = v;
+            } else {
+                std::memcpy(&target, indices + 4 * i, 4);
+            }
+            if (target >= a.count)
+                fail(what + ": index " + std::to_string(i) + " is " + std::to_string(target) +
+                     ", past the end of the accessor (" + std::to_string(a.count) + " elements)");
+            decode(values + i * element_size, target);
+        }
+    }
+
+    size_t stride_of(const tinygltf::Accessor& a, size_t element_size) const {
+        const size_t declared = model_.bufferViews[size_t(a.bufferView)].byteStride;
+        return declared == 0 ? element_size : declared;
+    }
+
+    // The accessor's view, after checking that every element lies inside it.
+    std::span<const uint8_t> element_range(const tinygltf::Accessor& a, const std::string& name,
+                                           size_t element_size) const {
+        std::span<const uint8_t> bytes = view_bytes(a.bufferView, name);
+        const size_t stride = stride_of(a, element_size);
+        if (stride < element_size)
+            fail(name + ": byteStride " + std::to_string(stride) +
+                 " is smaller than one element (" + std::to_string(element_size) + " bytes)");
+        // offset + stride * (count - 1) + element_size <= view length, without overflow
+        // (count is at most 2^28 here and stride at most 2^32 in any file we read).
+        const uint64_t end =
+            a.count == 0 ? uint64_t(a.byteOffset)
+                         : uint64_t(a.byteOffset) + uint64_t(stride) * (a.count - 1) + element_size;
+        if (a.byteOffset > bytes.size() || end > bytes.size())
+            fail(name + " (count " + std::to_string(a.count) + ", byteOffset " +
+                 std::to_string(a.byteOffset) + ", stride " + std::to_string(stride) +
+                 ") runs past the end of bufferView " + std::to_string(a.bufferView) + " (" +
+                 std::to_string(bytes.size()) + " bytes)");
+        return bytes;
+    }
+
+    std::vector<uint32_t> read_indices(int index, const std::string& what) const {
+        const tinygltf::Accessor& a = accessor(index, what);
+        const std::string name = what + ": index accessor " + std::to_string(index);
+        const int ct = a.componentType;
+        if (a.type != TINYGLTF_TYPE_SCALAR || (ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                                               ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                                               ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+            fail(name + " is " + type_name(a.type) + " of " + component_name(ct) +
+                 ", which glTF does not allow for indices (SCALAR of UNSIGNED_BYTE, "
+                 "UNSIGNED_SHORT or UNSIGNED_INT)");
+        if (a.count > (size_t(1) << 28))
+            fail(name + ": count " + std::to_string(a.count) + " is too large");
+        std::vector<uint32_t> out(a.count, 0);
+        if (a.bufferView < 0) return out;
+        const size_t size = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(ct)));
+        std::span<const uint8_t> bytes = element_range(a, name, size);
+        const size_t stride = stride_of(a, size);
+        for (size_t i = 0; i < a.count; ++i) {
+            const uint8_t* p = bytes.data() + a.byteOffset + i * stride;
+            if (size == 1) {
+                out[i] = *p;
+            } else if (size == 2) {
+                uint16_t v;
+                std::memcpy(&v, p, 2);
+                out[i] = v;
+            } else {
+                std::memcpy(&out[i], p, 4);
+            }
+        }
+        return out;
+    }
+
+    // --- Materials and images ---------------------------------------------
+    void load_materials() {
+        for (size_t m = 0; m < model_.materials.size(); ++m) {
+            const tinygltf::Material& source = model_.materials[m];
+            const std::string what = "material " + std::to_string(m);
+            const std::vector<double>& f = source.pbrMetallicRoughness.baseColorFactor;
+            if (f.size() != 4)
+                fail(what + ": baseColorFactor has " + std::to_string(f.size()) +
+                     " numbers, not 4");
+            GltfMaterial material;
+            material.base_color_factor =
+                glm::vec4(float(f[0]), float(f[1]), float(f[2]), float(f[3]));
+            const tinygltf::TextureInfo& info = source.pbrMetallicRoughness.baseColorTexture;
+            if (info.index >= 0) {
+                if (size_t(info.index) >= model_.textures.size())
+                    fail(what + ": baseColorTexture " + std::to_string(info.index) +
+                         " does not exist");
+                if (info.texCoord != 0)
+                    warn("a baseColorTexture uses TEXCOORD_" + std::to_string(info.texCoord) +
+                         ": only TEXCOORD_0 is read, so it is drawn with TEXCOORD_0");
+                const tinygltf::Texture& texture = model_.textures[size_t(info.index)];
+                if (texture.source < 0) {
+                    warn(
+                        "a texture has no PNG or JPEG source (an extension's image?): drawn "
+                        "untextured");
+                } else {
+                    material.base_color_image = image(texture.source);
+                }
+                check_sampler(texture.sampler);
+            }
+            if (source.normalTexture.index >= 0 || source.occlusionTexture.index >= 0 ||
+                source.emissiveTexture.index >= 0 ||
+                source.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0)
+                warn(
+                    "normal, occlusion, emissive and metallic-roughness textures are ignored "
+                    "(lighting is chapter 12's)");
+            if (source.alphaMode == "BLEND" || source.alphaMode == "MASK")
+                warn("alphaMode " + source.alphaMode +
+                     " is ignored: every material is drawn opaque");
+            scene_.materials.push_back(material);
+        }
+    }
+
+    void check_sampler(int index) {
+        if (index < 0) return;
+        if (size_t(index) >= model_.samplers.size())
+            fail("sampler " + std::to_string(index) + " does not exist");
+        const tinygltf::Sampler& s = model_.samplers[size_t(index)];
+        if (s.wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT || s.wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT)
+            warn(
+                "samplers are not mapped: every texture repeats and filters linearly, with "
+                "mipmaps");
+    }
+
+    // Decodes glTF image `index` once; returns its index in scene_.images.
+    int32_t image(int index) {
+        if (size_t(index) >= model_.images.size())
+            fail("image " + std::to_string(index) + " does not exist");
+        if (auto found = image_slots_.find(index); found != image_slots_.end())
+            return found->second;
+        const tinygltf::Image& source = model_.images[size_t(index)];
+        std::string what = path_.string() + ": image " + std::to_string(index);
+        if (!source.uri.empty() && source.uri.rfind("data:", 0) != 0)
+            what += " (" + source.uri + ")";
+        RgbaImage decoded;
+        if (source.bufferView >= 0) {
+            std::span<const uint8_t> bytes =
+                view_bytes(source.bufferView, "image " + std::to_string(index));
+            decoded = decode_image(bytes, what);
+        } else if (!source.image.empty()) {
+            decoded = decode_image(source.image, what);
+        } else if (!source.uri.empty() && source.uri.rfind("data:", 0) != 0) {
+            // tinygltf could not read the external file: say which one, as
+            // load_image_file does ("cannot open FILE").
+            decoded = load_image_file(path_.parent_path() / source.uri);
+        } else {
+            fail("image " + std::to_string(index) + " has no data (an unsupported data: URI?)");
+        }
+        if (decoded.width == 0 || decoded.height == 0)
+            fail("image " + std::to_string(index) + " is empty");
+        scene_.images.push_back(std::move(decoded));
+        const int32_t slot = int32_t(scene_.images.size() - 1);
+        image_slots_[index] = slot;
+        return slot;
+    }
+
+    uint32_t default_material() {
+        if (default_material_ < 0) {
+            scene_.materials.push_back(GltfMaterial{});
+            default_material_ = int32_t(scene_.materials.size() - 1);
+        }
+        return uint32_t(default_material_);
+    }
+
+    // --- Meshes ------------------------------------------------------------
+    // The primitives of mesh `index`, built once however many nodes use it.
+    const std::vector<uint32_t>& mesh(int index) {
+        if (auto found = mesh_primitives_.find(index); found != mesh_primitives_.end())
+            return found->second;
+        std::vector<uint32_t>& built = mesh_primitives_[index];
+        const tinygltf::Mesh& m = model_.meshes[size_t(index)];
+        for (size_t p = 0; p < m.primitives.size(); ++p) {
+            const std::string what =
+                "mesh " + std::to_string(index) + " primitive " + std::to_string(p);
+            if (auto primitive = load_primitive(m.primitives[p], what)) built.push_back(*primitive);
+        }
+        return built;
+    }
+
+    std::optional<uint32_t> load_primitive(const tinygltf::Primitive& source,
+                                           const std::string& what) {
+        const int mode = source.mode;
+        if (mode < TINYGLTF_MODE_TRIANGLES || mode > TINYGLTF_MODE_TRIANGLE_FAN) {
+            warn("points and lines are not supported: such primitives are skipped");
+            return std::nullopt;
+        }
+        if (!source.targets.empty())
+            warn("morph targets are not supported: meshes are drawn unmorphed");
+        const auto position = source.attributes.find("POSITION");
+        if (position == source.attributes.end()) {
+            warn("a primitive without POSITION is skipped");
+            return std::nullopt;
+        }
+        // Sparse vertex attributes are read (read_floats); sparse indices,
+        // which no exporter we know writes, are not.
+        if (source.indices >= 0 && accessor(source.indices, what).sparse.isSparse) {
+            warn("sparse index accessors are not supported: primitives using one are skipped");
+            return std::nullopt;
+        }
+        for (const auto& [name, accessor_index] : source.attributes)
+            if (name != "POSITION" && name != "NORMAL" && name != "TEXCOORD_0")
+                warn("attribute " + name + " is ignored");
+
+        const int F = TINYGLTF_COMPONENT_TYPE_FLOAT;
+        const std::vector<float> positions =
+            read_floats(position->second, what + " POSITION", {{TINYGLTF_TYPE_VEC3, {F}, false}});
+        const size_t count = positions.size() / 3;
+        std::vector<float> normals, uvs;
+        if (auto n = source.attributes.find("NORMAL"); n != source.attributes.end())
+            normals = read_floats(n->second, what + " NORMAL", {{TINYGLTF_TYPE_VEC3, {F}, false}});
+        if (auto t = source.attributes.find("TEXCOORD_0"); t != source.attributes.end())
+            uvs = read_floats(t->second, what + " TEXCOORD_0",
+                              {{TINYGLTF_TYPE_VEC2,
+                                {F, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                                true}});
+        if (!normals.empty() && normals.size() / 3 != count)
+            fail(what + ": NORMAL has " + std::to_string(normals.size() / 3) +
+                 " elements but POSITION has " + std::to_string(count));
+        if (!uvs.empty() && uvs.size() / 2 != count)
+            fail(what + ": TEXCOORD_0 has " + std::to_string(uvs.size() / 2) +
+                 " elements but POSITION has " + std::to_string(count));
+
+        std::vector<uint32_t> indices;
+        if (source.indices >= 0) {
+            indices = read_indices(source.indices, what);
+            for (size_t i = 0; i < indices.size(); ++i)
+                if (indices[i] >= count)
+                    fail(what + ": index " + std::to_string(i) + " is " +
+                         std::to_string(indices[i]) + ", past the end of the vertex data (" +
+                         std::to_string(count) + " vertices)");
+        } else {
+            indices.resize(count);  // non-indexed: 0, 1, 2, ...
+            for (size_t i = 0; i < count; ++i) indices[i] = uint32_t(i);
+        }
+        indices = to_triangle_list(indices, mode);
+        if (indices.empty()) {
+            warn("a primitive with no whole triangle is skipped");
+            return std::nullopt;
+        }
+
+        std::vector<GltfVertex> vertices(count);
+        for (size_t v = 0; v < count; ++v) {
+            vertices[v].position = {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]};
+            if (!normals.empty())
+                vertices[v].normal = {normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]};
+            if (!uvs.empty()) vertices[v].uv = {uvs[2 * v], uvs[2 * v + 1]};
+        }
+        if (normals.empty()) {
+            // glTF: without normals, draw flat shaded. Each triangle gets its
+            // own three vertices carrying the triangle's normal.
+            std::vector<GltfVertex> flat;
+            flat.reserve(indices.size());
+            for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+                GltfVertex a = vertices[indices[t]], b = vertices[indices[t + 1]],
+                           c = vertices[indices[t + 2]];
+                glm::vec3 n = glm::cross(b.position - a.position, c.position - a.position);
+                const float length = glm::length(n);
+                n = length > 0.0f ? n / length : glm::vec3(0, 0, 1);
+                a.normal = b.normal = c.normal = n;
+                flat.push_back(a);
+                flat.push_back(b);
+                flat.push_back(c);
+            }
+            vertices = std::move(flat);
+            for (size_t i = 0; i < indices.size(); ++i) indices[i] = uint32_t(i);
+        }
+
+        if (scene_.vertices.size() + vertices.size() > (size_t(1) << 31) ||
+            scene_.indices.size() + indices.size() > (size_t(1) << 31))
+            fail("more than 2^31 vertices or indices in all");
+        GltfPrimitive primitive;
+        primitive.first_vertex = uint32_t(scene_.vertices.size());
+        primitive.vertex_count = uint32_t(vertices.size());
+        primitive.first_index = uint32_t(scene_.indices.size());
+        primitive.index_count = uint32_t(indices.size());
+        if (source.material >= 0) {
+            if (size_t(source.material) >= model_.materials.size())
+                fail(what + ": material " + std::to_string(source.material) + " does not exist");
+            primitive.material = uint32_t(source.material);
+        } else {
+            primitive.material = default_material();
+        }
+        scene_.vertices.insert(scene_.vertices.end(), vertices.begin(), vertices.end());
+        for (uint32_t i : indices) scene_.indices.push_back(primitive.first_vertex + i);
+        scene_.primitives.push_back(primitive);
+        return uint32_t(scene_.primitives.size() - 1);
+    }
+
+    // Strips and fans become lists; a list keeps only whole triangles.
+    static std::vector<uint32_t> to_triangle_list(const std::vector<uint32_t>& in, int mode) {
+        std::vector<uint32_t> out;
+        if (mode == TINYGLTF_MODE_TRIANGLES) {
+            out.assign(in.begin(), in.begin() + std::ptrdiff_t(in.size() / 3 * 3));
+        } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            // Every second triangle swaps two corners to keep the winding.
+            for (size_t i = 2; i < in.size(); ++i) {
+                if (i % 2 == 0)
+                    out.insert(out.end(), {in[i - 2], in[i - 1], in[i]});
+                else
+                    out.insert(out.end(), {in[i - 1], in[i - 2], in[i]});
+            }
+        } else {  // fan
+            for (size_t i = 2; i < in.size(); ++i) out.insert(out.end(), {in[0], in[i - 1], in[i]});
+        }
+        return out;
+    }
+
+    // --- The node tree -----------------------------------------------------
+    void walk_nodes() {
+        std::vector<int> roots;
+        const int chosen =
+            model_.defaultScene >= 0 ? model_.defaultScene : (model_.scenes.empty() ? -1 : 0);
+        if (chosen >= 0) {
+            if (size_t(chosen) >= model_.scenes.size())
+                fail("scene " + std::to_string(chosen) + " does not exist");
+            roots = model_.scenes[size_t(chosen)].nodes;
+        } else {
+            // No scenes: draw every node that is nobody's child.
+            std::vector<bool> is_child(model_.nodes.size(), false);
+            for (const tinygltf::Node& node : model_.nodes)
+                for (int child : node.children)
+                    if (child >= 0 && size_t(child) < is_child.size())
+                        is_child[size_t(child)] = true;
+            for (size_t n = 0; n < model_.nodes.size(); ++n)
+                if (!is_child[n]) roots.push_back(int(n));
+        }
+        visited_.assign(model_.nodes.size(), false);
+        for (int root : roots) walk(root, glm::mat4(1.0f));
+    }
+
+    void walk(int index, const glm::mat4& parent) {
+        if (index < 0 || size_t(index) >= model_.nodes.size())
+            fail("node " + std::to_string(index) + " does not exist");
+        // glTF's nodes form trees: a node reached twice is a cycle or a shared
+        // child, either way not a tree (and a cycle would never end).
+        if (visited_[size_t(index)])
+            fail("node " + std::to_string(index) + " appears twice in the node tree (a cycle?)");
+        visited_[size_t(index)] = true;
+        const tinygltf::Node& node = model_.nodes[size_t(index)];
+        glm::mat4 local;
+        try {
+            local = gltf_node_matrix(node.matrix, node.translation, node.rotation, node.scale);
+        } catch (const Error& e) {
+            fail("node " + std::to_string(index) + ": " + e.what());
+        }
+        const glm::mat4 world = parent * local;  // the parent's transform applies last
+        if (node.mesh >= 0) {
+            if (size_t(node.mesh) >= model_.meshes.size())
+                fail("node " + std::to_string(index) + ": mesh " + std::to_string(node.mesh) +
+                     " does not exist");
+            for (uint32_t primitive : mesh(node.mesh)) scene_.draws.push_back({primitive, world});
+        }
+        for (int child : node.children) walk(child, world);
+    }
+
+    void compute_bounds() {
+        glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+        for (const GltfDraw& draw : scene_.draws) {
+            const GltfPrimitive& p = scene_.primitives[draw.primitive];
+            for (uint32_t v = p.first_vertex; v < p.first_vertex + p.vertex_count; ++v) {
+                const glm::vec3 w =
+                    glm::vec3(draw.world * glm::vec4(scene_.vertices[v].position, 1.0f));
+                lo = glm::min(lo, w);
+                hi = glm::max(hi, w);
+            }
+        }
+        if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z) ||
+            !std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z))
+            fail("the scene's positions are not finite numbers");
+        scene_.bounds_min = lo;
+        scene_.bounds_max = hi;
+    }
+
+    std::filesystem::path path_;
+    tinygltf::Model model_;
+    GltfScene scene_;
+    std::map<int, std::vector<uint32_t>> mesh_primitives_;
+    std::map<int, int32_t> image_slots_;
+    int32_t default_material_ = -1;
+    std::vector<bool> visited_;
+};
+
+}  // namespace
+
+glm::mat4 gltf_node_matrix(const std::vector<double>& matrix,
+                           const std::vector<double>& translation,
+                           const std::vector<double>& rotation, const std::vector<double>& scale) {
+    if (!matrix.empty()) {
+        if (matrix.size() != 16)
+            throw Error("matrix has " + std::to_string(matrix.size()) + " numbers, not 16");
+        glm::mat4 m;
+        for (int i = 0; i < 16; ++i)
+            glm::value_ptr(m)[i] = float(matrix[size_t(i)]);  // column-major, like glm
+        return m;
+    }
+    if (!translation.empty() && translation.size() != 3)
+        throw Error("translation has " + std::to_string(translation.size()) + " numbers, not 3");
+    if (!rotation.empty() && rotation.size() != 4)
+        throw Error("rotation has " + std::to_string(rotation.size()) + " numbers, not 4");
+    if (!scale.empty() && scale.size() != 3)
+        throw Error("scale has " + std::to_string(scale.size()) + " numbers, not 3");
+    glm::mat4 t(1.0f), r(1.0f), s(1.0f);
+    if (!translation.empty())
+        t[3] = glm::vec4(float(translation[0]), float(translation[1]), float(translation[2]), 1.0f);
+    if (!rotation.empty()) {
+        // glTF stores x, y, z, w; glm::quat's constructor takes w first.
+        const glm::quat q{float(rotation[3]), float(rotation[0]), float(rotation[1]),
+                          float(rotation[2])};
+        const float length = glm::length(q);
+        if (length > 0.0f) r = glm::mat4_cast(q / length);
+    }
+    if (!scale.empty())
+        s = glm::scale(glm::mat4(1.0f),
+                       glm::vec3(float(scale[0]), float(scale[1]), float(scale[2])));
+    return t * r * s;
+}
+
+GltfScene load_gltf(const std::filesystem::path& path) {
+    return Loader(path).load();
+}
+
+}  // namespace vkt
