@@ -12,6 +12,7 @@
 #include "vkt/core/owned.hpp"
 #include "vkt/frame/runner.hpp"
 #include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/rendering.hpp"
 #include "vkt/resources/shader.hpp"
 
 #include <glm/glm.hpp>
@@ -266,23 +267,10 @@ public:
     }
 
     void record(const vkt::Frame& frame) override {
-        // Clear to chapter 04's dark blue-grey, keep what we draw.
-        VkRenderingAttachmentInfo colour{
-            .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-            .imageView = frame.target_view,
-            .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-            .clearValue = {.color = {{0.02f, 0.02f, 0.04f, 1.0f}}},
-        };
-        VkRenderingInfo rendering{
-            .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-            .renderArea = {{0, 0}, frame.extent},
-            .layerCount = 1,
-            .colorAttachmentCount = 1,
-            .pColorAttachments = &colour,
-        };
-        vkCmdBeginRendering(frame.cmd, &rendering);
+        // Clear to chapter 04's dark blue-grey, keep what we draw: chapter 04's
+        // vkCmdBeginRendering and its two structs, now one call (vkt/resources/rendering.hpp).
+        vkt::begin_rendering(frame.cmd, frame.target_view, frame.extent,
+                             {{0.02f, 0.02f, 0.04f, 1.0f}});
         vkCmdBindPipeline(frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
         vkt::set_viewport_and_scissor(frame.cmd, frame.extent);
 

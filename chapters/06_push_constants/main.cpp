@@ -10,6 +10,7 @@
 
 #include "vkt/frame/runner.hpp"
 #include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/rendering.hpp"
 #include "vkt/resources/shader.hpp"
 #include "vkt/resources/upload.hpp"
 
@@ -166,22 +167,8 @@ public:
     }
 
     void record(const vkt::Frame& frame) override {
-        VkRenderingAttachmentInfo colour{
-            .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-            .imageView = frame.target_view,
-            .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-            .clearValue = {.color = {{0.02f, 0.02f, 0.04f, 1.0f}}},
-        };
-        VkRenderingInfo rendering{
-            .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-            .renderArea = {{0, 0}, frame.extent},
-            .layerCount = 1,
-            .colorAttachmentCount = 1,
-            .pColorAttachments = &colour,
-        };
-        vkCmdBeginRendering(frame.cmd, &rendering);
+        vkt::begin_rendering(frame.cmd, frame.target_view, frame.extent,
+                             {{0.02f, 0.02f, 0.04f, 1.0f}});
 
         // [draw]
         // Bound once for all twelve draws: the pipeline and both buffers.

@@ -11,6 +11,7 @@
 #include "vkt/frame/runner.hpp"
 #include "vkt/resources/descriptors.hpp"
 #include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/rendering.hpp"
 #include "vkt/resources/shader.hpp"
 #include "vkt/resources/texture.hpp"
 
@@ -338,22 +339,8 @@ public:
         Push push{projection * view, float(frame.time) * 0.5f};
 
         // A sky-blue clear: linear (0.25, 0.45, 0.80).
-        VkRenderingAttachmentInfo colour{
-            .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-            .imageView = frame.target_view,
-            .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-            .clearValue = {.color = {{0.25f, 0.45f, 0.80f, 1.0f}}},
-        };
-        VkRenderingInfo rendering{
-            .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-            .renderArea = {{0, 0}, frame.extent},
-            .layerCount = 1,
-            .colorAttachmentCount = 1,
-            .pColorAttachments = &colour,
-        };
-        vkCmdBeginRendering(frame.cmd, &rendering);
+        vkt::begin_rendering(frame.cmd, frame.target_view, frame.extent,
+                             {{0.25f, 0.45f, 0.80f, 1.0f}});
         // [draw]
         vkCmdBindPipeline(frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
         VkDescriptorSet set = set_;

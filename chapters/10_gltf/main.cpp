@@ -14,6 +14,7 @@
 #include "vkt/resources/depth.hpp"
 #include "vkt/resources/descriptors.hpp"
 #include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/rendering.hpp"
 #include "vkt/resources/shader.hpp"
 #include "vkt/resources/texture.hpp"
 #include "vkt/resources/upload.hpp"
@@ -198,31 +199,8 @@ public:
 
     void record(const vkt::Frame& frame) override {
         vkt::begin_depth_frame(frame.cmd, depth_.image);
-        VkRenderingAttachmentInfo colour{
-            .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-            .imageView = frame.target_view,
-            .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-            .clearValue = {.color = {{0.02f, 0.02f, 0.04f, 1.0f}}},
-        };
-        VkRenderingAttachmentInfo depth{
-            .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-            .imageView = depth_.view,
-            .imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-            .storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE,
-            .clearValue = {.depthStencil = {1.0f, 0}},
-        };
-        VkRenderingInfo rendering{
-            .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-            .renderArea = {{0, 0}, frame.extent},
-            .layerCount = 1,
-            .colorAttachmentCount = 1,
-            .pColorAttachments = &colour,
-            .pDepthAttachment = &depth,
-        };
-        vkCmdBeginRendering(frame.cmd, &rendering);
+        vkt::begin_rendering(frame.cmd, frame.target_view, frame.extent,
+                             {{0.02f, 0.02f, 0.04f, 1.0f}}, depth_.view);
 
         // [draw]
         // One bind of the pipeline and the two buffers for the whole scene;

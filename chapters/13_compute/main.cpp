@@ -17,6 +17,7 @@
 #include "vkt/resources/compute.hpp"
 #include "vkt/resources/descriptors.hpp"
 #include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/rendering.hpp"
 #include "vkt/resources/shader.hpp"
 #include "vkt/scene/camera_math.hpp"
 
@@ -315,22 +316,8 @@ public:
                         glm::vec3(0.0f, 1.0f, 0.0f));
         const glm::mat4 view_projection =
             vkt::vulkan_perspective(glm::radians(45.0f), aspect, 0.1f, 20.0f) * view;
-        VkRenderingAttachmentInfo colour{
-            .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-            .imageView = frame.target_view,
-            .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-            .clearValue = {.color = {{0.002f, 0.002f, 0.008f, 1.0f}}},
-        };
-        VkRenderingInfo rendering{
-            .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-            .renderArea = {{0, 0}, frame.extent},
-            .layerCount = 1,
-            .colorAttachmentCount = 1,
-            .pColorAttachments = &colour,
-        };
-        vkCmdBeginRendering(frame.cmd, &rendering);
+        vkt::begin_rendering(frame.cmd, frame.target_view, frame.extent,
+                             {{0.002f, 0.002f, 0.008f, 1.0f}});
         vkCmdBindPipeline(frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw_pipeline_);
         vkt::set_viewport_and_scissor(frame.cmd, frame.extent);
         vkCmdPushConstants(frame.cmd, draw_layout_, VK_SHADER_STAGE_VERTEX_BIT, 0,
