@@ -290,6 +290,8 @@ int main(int argc, char** argv) {
          .help = "build the model matrix from full products (O(n^5)) or row by row (O(n^3))",
          .default_value = "naive",
          .choices = {"naive", "rows"}});
+    // --dim with the default scene contradicts it: said before any device exists.
+    spec.check_options = [](const vkt::Options& options) { vkt::ndim::scene_choice(options); };
     // [/spec]
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
         return std::make_unique<NdimCpu>(context);

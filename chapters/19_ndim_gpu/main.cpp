@@ -470,6 +470,7 @@ int main(int argc, char** argv) {
                                            VKT_FEATURE_10(pipelineStatisticsQuery)};
     // --scene, --dim, --projection and --motion: vkt/scene/ndim_options.hpp.
     spec.options = vkt::ndim::scene_options();
+    spec.check_options = [](const vkt::Options& options) { vkt::ndim::scene_choice(options); };
     spec.options.insert(
         spec.options.end(),
         {

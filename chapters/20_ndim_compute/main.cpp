@@ -497,6 +497,7 @@ int main(int argc, char** argv) {
     spec.requirements.features = {VKT_FEATURE_13(maintenance4)};
     // --scene, --dim, --projection and --motion: vkt/scene/ndim_options.hpp.
     spec.options = vkt::ndim::scene_options();
+    spec.check_options = [](const vkt::Options& options) { vkt::ndim::scene_choice(options); };
     spec.options.insert(
         spec.options.end(),
         {

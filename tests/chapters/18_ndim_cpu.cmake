@@ -53,9 +53,12 @@ foreach(dim 0 1 2 13 100)
 endforeach()
 vkt_chapter_test(bad_input.18_ndim_cpu.scene 18_ndim_cpu EXIT 2 ARGS --scene hypersphere
   EXPECT "--scene wants one of default, cube, many, not 'hypersphere'")
-vkt_chapter_test(bad_input.18_ndim_cpu.dim_default_scene 18_ndim_cpu EXIT 1
+# Contradictory flags are a bad command line (status 2), found before any
+# Vulkan object exists: the usage line follows the message.
+vkt_chapter_test(bad_input.18_ndim_cpu.dim_default_scene 18_ndim_cpu EXIT 2
   ARGS --headless --frames 1 --dim 5
-  EXPECT "--dim 5: the default scene is 4-dimensional; use --scene cube or --scene many")
+  EXPECT "--dim 5: the default scene is 4-dimensional; use --scene cube or --scene many"
+         "usage: 18_ndim_cpu")
 
 # The keys, in a real window driven by events (window_ndim_keys.sh): a digit
 # turns its plane, an F key moves along its axis, Shift reverses, R resets,

@@ -114,7 +114,7 @@ foreach(dim 0 2 13 100)
 endforeach()
 vkt_chapter_test(bad_input.19_ndim_gpu.scene 19_ndim_gpu EXIT 2 ARGS --scene hypersphere
   EXPECT "--scene wants one of default, cube, many, not 'hypersphere'")
-vkt_chapter_test(bad_input.19_ndim_gpu.dim_default_scene 19_ndim_gpu EXIT 1
+vkt_chapter_test(bad_input.19_ndim_gpu.dim_default_scene 19_ndim_gpu EXIT 2
   ARGS --headless --frames 1 --dim 5
   EXPECT "--dim 5: the default scene is 4-dimensional; use --scene cube or --scene many")
 vkt_chapter_test(bad_input.19_ndim_gpu.verify 19_ndim_gpu EXIT 2 ARGS --verify gpu

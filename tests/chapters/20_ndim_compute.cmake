@@ -92,7 +92,7 @@ vkt_chapter_test(bad_input.20_ndim_compute.scene 20_ndim_compute EXIT 2 ARGS --s
   EXPECT "--scene wants one of default, cube, many, not 'hypersphere'")
 vkt_chapter_test(bad_input.20_ndim_compute.raster 20_ndim_compute EXIT 2 ARGS --raster magic
   EXPECT "--raster wants one of graphics, compute, not 'magic'")
-vkt_chapter_test(bad_input.20_ndim_compute.dim_default_scene 20_ndim_compute EXIT 1
+vkt_chapter_test(bad_input.20_ndim_compute.dim_default_scene 20_ndim_compute EXIT 2
   ARGS --headless --frames 1 --dim 5
   EXPECT "--dim 5: the default scene is 4-dimensional; use --scene cube or --scene many")
 # A target whose pixel buffer does not fit in one storage-buffer range

@@ -527,12 +527,14 @@ void ChapterRun::save_screenshot(const std::string& path) {
 
 // Turns the body's outcome into an exit status: usage errors 2, failures 1.
 int guarded(int argc, char** argv, Flags flags, std::span<const OptionSpec> chapter_options,
+            const std::function<void(const Options&)>& check_options,
             const std::function<int(const Options&)>& body) {
     const std::string program = program_name(argv);
     Options options;
     try {
         options = parse_args(std::span<const char* const>(argv + 1, size_t(std::max(argc - 1, 0))),
                              flags, chapter_options);
+        if (check_options) check_options(options);  // before any Vulkan object exists
     } catch (const UsageError& e) {
         std::fprintf(stderr, "%s: %s\n%s\n", program.c_str(), e.what(),
                      usage_line(program, flags, chapter_options).c_str());
@@ -562,20 +564,21 @@ int report_validation(const std::string& program, const ValidationCounts* counts
 }  // namespace
 
 int run_chapter(int argc, char** argv, const ChapterSpec& spec, const RendererFactory& factory) {
-    return guarded(argc, argv, Flags::frame_loop, spec.options, [&](const Options& options) {
-        std::shared_ptr<const ValidationCounts> counts;
-        {
-            ChapterRun run(options, spec);
-            if (run.validation()) counts = run.counts();
-            run.run(factory);
-        }  // everything destroyed: the layer has said all it will say
-        return report_validation(spec.name, counts.get());
-    });
+    return guarded(argc, argv, Flags::frame_loop, spec.options, spec.check_options,
+                   [&](const Options& options) {
+                       std::shared_ptr<const ValidationCounts> counts;
+                       {
+                           ChapterRun run(options, spec);
+                           if (run.validation()) counts = run.counts();
+                           run.run(factory);
+                       }  // everything destroyed: the layer has said all it will say
+                       return report_validation(spec.name, counts.get());
+                   });
 }
 
 int run_text_chapter(int argc, char** argv, Flags flags,
                      const std::function<int(const Options&)>& body) {
-    return guarded(argc, argv, flags, {}, body);
+    return guarded(argc, argv, flags, {}, {}, body);
 }
 
 }  // namespace vkt

@@ -1,7 +1,5 @@
 #include "vkt/scene/ndim_options.hpp"
 
-#include <stdexcept>
-
 namespace vkt::ndim {
 
 // [scene-options]
@@ -41,9 +39,9 @@ SceneChoice scene_choice(const Options& options) {
     SceneChoice choice;
     choice.scene = options.text("--scene");
     if (choice.scene == "default" && options.has("--dim"))
-        throw std::runtime_error("--dim " + options.text("--dim") +
-                                 ": the default scene is 4-dimensional; use --scene cube or "
-                                 "--scene many to choose n");
+        throw UsageError("--dim " + options.text("--dim") +
+                         ": the default scene is 4-dimensional; use --scene cube or "
+                         "--scene many to choose n");
     choice.n = options.has("--dim") ? int(options.integer("--dim")) : 4;
     choice.orthographic = options.text("--projection") == "orthographic";
     choice.still = options.text("--motion") == "still";

@@ -74,6 +74,10 @@ struct ChapterSpec {
     DeviceRequirements requirements;
     std::vector<OptionSpec> options;  // the chapter's own flags (--model, --lights, ...)
     InputUse input = InputUse::none;  // what input the chapter wants in a window (chapter 11)
+    // Checks between the chapter's own flags (two that contradict each other),
+    // run right after parsing, before any Vulkan object exists: throw
+    // UsageError, and the chapter exits with status 2 like any bad argument.
+    std::function<void(const Options&)> check_options;
 };
 
 using RendererFactory = std::function<std::unique_ptr<Renderer>(const Context&)>;
