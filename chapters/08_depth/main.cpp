@@ -18,6 +18,7 @@
 #include "vkt/resources/pipeline.hpp"
 #include "vkt/resources/shader.hpp"
 #include "vkt/resources/upload.hpp"
+#include "vkt/scene/coloured_cube.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -32,29 +33,8 @@ namespace {
 using ch08::FrameUniforms;
 using ch08::ObjectUniforms;
 
-struct Vertex {
-    glm::vec3 position;
-    glm::vec3 colour;
-};
-
-// Chapter 07's cube: edge 1, a colour per face, counter-clockwise from outside.
-void make_cube(std::vector<Vertex>& vertices, std::vector<uint16_t>& indices) {
-    const glm::vec3 colours[6] = {{0.8f, 0.1f, 0.1f}, {0.1f, 0.6f, 0.6f}, {0.1f, 0.7f, 0.1f},
-                                  {0.6f, 0.1f, 0.6f}, {0.1f, 0.2f, 0.8f}, {0.8f, 0.7f, 0.1f}};
-    for (int face = 0; face < 6; ++face) {
-        const int axis = face / 2;
-        const float sign = face % 2 ? -1.0f : 1.0f;
-        glm::vec3 n(0.0f), u(0.0f), v(0.0f);
-        n[axis] = sign;
-        u[(axis + 1) % 3] = 1.0f;
-        v[(axis + 2) % 3] = sign;
-        const uint16_t first = uint16_t(vertices.size());
-        for (glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)})
-            vertices.push_back({0.5f * (n + c.x * u + c.y * v), colours[face]});
-        indices.insert(indices.end(), {first, uint16_t(first + 1), uint16_t(first + 2), first,
-                                       uint16_t(first + 2), uint16_t(first + 3)});
-    }
-}
+// Chapter 07's cube: edge 1, a colour per face (vkt/scene/coloured_cube.hpp).
+using Vertex = vkt::shapes::ColouredVertex;
 
 // [choose-format]
 // The depth formats, best first. D32_SFLOAT: 32-bit float depth, the most
@@ -153,7 +133,7 @@ public:
 
         std::vector<Vertex> vertices;
         std::vector<uint16_t> indices;
-        make_cube(vertices, indices);
+        vkt::shapes::make_coloured_cube(vertices, indices);
         index_count_ = uint32_t(indices.size());
         const vkt::Gpu gpu = context.gpu();
         vertex_buffer_ =

@@ -1,5 +1,7 @@
 #include "vkt/resources/texture.hpp"
 
+#include "vkt/core/barrier.hpp"
+
 #include "vkt/core/check.hpp"
 #include "vkt/core/files.hpp"
 
@@ -153,25 +155,8 @@ void mip_barrier(VkCommandBuffer cmd, VkImage image, uint32_t base, uint32_t cou
                  VkImageLayout old_layout, VkImageLayout new_layout,
                  VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
                  VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
-    VkImageMemoryBarrier2 barrier{
-        .sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
-        .srcStageMask = src_stage,
-        .srcAccessMask = src_access,
-        .dstStageMask = dst_stage,
-        .dstAccessMask = dst_access,
-        .oldLayout = old_layout,
-        .newLayout = new_layout,
-        .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-        .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-        .image = image,
-        .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, base, count, 0, 1},
-    };
-    VkDependencyInfo dependency{
-        .sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
-        .imageMemoryBarrierCount = 1,
-        .pImageMemoryBarriers = &barrier,
-    };
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    image_barrier(cmd, image, {VK_IMAGE_ASPECT_COLOR_BIT, base, count, 0, 1}, old_layout,
+                  new_layout, src_stage, src_access, dst_stage, dst_access);
 }
 
 // Where a sampled texture is read from: any shader stage of any later command.

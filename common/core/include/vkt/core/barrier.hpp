@@ -13,4 +13,11 @@ void image_barrier(VkCommandBuffer cmd, VkImage image, VkImageLayout old_layout,
                    VkAccessFlags2 dst_access,
                    VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT);
 
+// The same over part of the image: some mip levels or layers (chapter 09's
+// mip chain changes layout one level at a time).
+void image_barrier(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceRange& range,
+                   VkImageLayout old_layout, VkImageLayout new_layout,
+                   VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                   VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access);
+
 }  // namespace vkt
