@@ -4,19 +4,27 @@
 # 1. Chapters stand alone: no file in chapters/ or shaders/NN_name/ includes
 #    another chapter's file ("../NN_..."). What two chapters share belongs in
 #    common/ (C++) or shaders/common/ (GLSL).
+#    (also runnable on its own: cmake -DROOT=<tree> -P cmake/house_rules.cmake,
+#    which the tests do on fixtures that break each rule)
 # 2. common/ keeps its direction: a layer includes only itself and the layers
 #    below it (domains and core at the bottom, then resources, frame, scene).
 #    The include paths already enforce this for the compiler; this check says
 #    which file broke it, and why, before the compiler does.
 
+if(CMAKE_SCRIPT_MODE_FILE)
+  cmake_policy(VERSION 3.25)  # -P mode starts with old policies
+endif()
+if(NOT ROOT)
+  set(ROOT ${PROJECT_SOURCE_DIR})
+endif()
 file(GLOB_RECURSE vkt_house_chapter_files
-     ${PROJECT_SOURCE_DIR}/chapters/*.cpp ${PROJECT_SOURCE_DIR}/chapters/*.hpp
-     ${PROJECT_SOURCE_DIR}/shaders/[0-9][0-9]_*/*)
+     ${ROOT}/chapters/*.cpp ${ROOT}/chapters/*.hpp
+     ${ROOT}/shaders/[0-9][0-9]_*/*)
 set(vkt_house_broken)
 foreach(file IN LISTS vkt_house_chapter_files)
   file(STRINGS ${file} lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"\\.\\./")
   foreach(line IN LISTS lines)
-    file(RELATIVE_PATH rel ${PROJECT_SOURCE_DIR} ${file})
+    file(RELATIVE_PATH rel ${ROOT} ${file})
     string(STRIP "${line}" line)
     list(APPEND vkt_house_broken "  ${rel}: ${line}")
   endforeach()
@@ -35,14 +43,14 @@ set(vkt_layer_allows_resources resources core)
 set(vkt_layer_allows_frame     frame resources core)
 set(vkt_layer_allows_scene     scene frame resources core domains)
 foreach(layer domains core resources frame scene)
-  file(GLOB_RECURSE files ${PROJECT_SOURCE_DIR}/common/${layer}/*.cpp
-                          ${PROJECT_SOURCE_DIR}/common/${layer}/*.hpp)
+  file(GLOB_RECURSE files ${ROOT}/common/${layer}/*.cpp
+                          ${ROOT}/common/${layer}/*.hpp)
   foreach(file IN LISTS files)
     file(STRINGS ${file} lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"vkt/[a-z]+/")
     foreach(line IN LISTS lines)
       string(REGEX REPLACE ".*\"vkt/([a-z]+)/.*" "\\1" used "${line}")
       if(NOT used IN_LIST vkt_layer_allows_${layer})
-        file(RELATIVE_PATH rel ${PROJECT_SOURCE_DIR} ${file})
+        file(RELATIVE_PATH rel ${ROOT} ${file})
         list(APPEND vkt_house_broken "  ${rel} (layer ${layer}) includes layer ${used}")
       endif()
     endforeach()

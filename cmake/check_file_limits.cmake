@@ -1,0 +1,35 @@
+# Lists every file past its page and fails if there is one (CTest: house.file_limits).
+#   cmake -DROOT=<repository> -P cmake/check_file_limits.cmake
+# A chapter's main.cpp reads beside its book page: at most 450 lines. A
+# chapter's local header holds one pass or one part: at most 250. A source of
+# common/ is one helper, small enough to read in one sitting: at most 450.
+if(CMAKE_SCRIPT_MODE_FILE)
+  cmake_policy(VERSION 3.25)  # -P mode starts with old policies
+endif()
+if(NOT ROOT)
+  get_filename_component(ROOT ${CMAKE_CURRENT_LIST_DIR}/.. ABSOLUTE)
+endif()
+set(over "")
+# A macro, not a function: it adds to `over` in the caller's scope.
+macro(vkt_limit limit)
+  foreach(file IN ITEMS ${ARGN})
+    file(READ ${file} text)
+    string(REGEX MATCHALL "\n" newlines "${text}")
+    list(LENGTH newlines n)
+    if(n GREATER ${limit})
+      file(RELATIVE_PATH rel ${ROOT} ${file})
+      string(APPEND over "  ${rel}: ${n} lines (limit ${limit})\n")
+    endif()
+  endforeach()
+endmacro()
+file(GLOB mains ${ROOT}/chapters/*/main.cpp)
+file(GLOB chapter_headers ${ROOT}/chapters/*/*.hpp ${ROOT}/chapters/*/*.h)
+file(GLOB_RECURSE common_sources ${ROOT}/common/*.cpp ${ROOT}/common/*.hpp)
+vkt_limit(450 ${mains})
+vkt_limit(250 ${chapter_headers})
+vkt_limit(450 ${common_sources})
+if(over)
+  message(FATAL_ERROR "Files past their page:\n${over}"
+          "Split along the concepts (CONTRIBUTING.md, 'No file past its page').")
+endif()
+message(STATUS "every chapter main.cpp and common/ source within 450 lines, every chapter header within 250")

@@ -1,0 +1,2 @@
+#include "../16_a/scene.hpp"
+int main() {}

@@ -1,0 +1,1 @@
+#include "vkt/frame/runner.hpp"  // core must not know the runner
