@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# From a fresh Debian 12 machine to a chapter's picture, in one command (as root,
-# or as a user with sudo):
+# From a fresh machine to a chapter's picture, in one command (as root, or as a
+# user with sudo):
 #   scripts/quickstart.sh [NN_name]
-# Installs the packages (Debian + bookworm-backports), configures and builds
+# Installs the packages (scripts/install-deps.sh: Debian 12 with
+# bookworm-backports, or Ubuntu 24.04 with Ubuntu's own; on any other system it
+# changes nothing, says what to install, and this stops), configures and builds
 # the release preset, and runs a chapter (the newest by default): in a window
 # when there is a display, else headless, writing its picture to NN_name.png.
 set -euo pipefail
@@ -11,7 +13,8 @@ scripts/install-deps.sh
 cmake --preset release
 cmake --build --preset release
 
-chapter=${1:-$(basename "$(ls -d chapters/[0-9][0-9]_*/ | sort | tail -n 1)")}
+chapters=(chapters/[0-9][0-9]_*/) # a glob expands sorted: the newest is last
+chapter=${1:-$(basename "${chapters[-1]}")}
 exe=build/release/bin/$chapter
 [ -x "$exe" ] || { echo "no chapter named '$chapter' (see chapters/)" >&2; exit 2; }
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
