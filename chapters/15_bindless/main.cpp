@@ -13,7 +13,11 @@
 // - Indirect multi-draw: one vkCmdDrawIndexedIndirect reads a draw per object
 //   from a buffer. --draw loop issues the same draws one vkCmdDrawIndexed at a
 //   time instead, for the comparison the book measures.
+//
+// scene.hpp builds the objects (plain C++); address_buffer.hpp makes the
+// buffers the shaders read through GPU addresses.
 
+#include "address_buffer.hpp"
 #include "scene.hpp"
 
 #include "vkt/core/check.hpp"
@@ -33,7 +37,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
-#include <cstring>
 #include <string>
 #include <vector>
 
@@ -59,75 +62,6 @@ static_assert(offsetof(Push, vertices) == 64 && offsetof(Push, resident_textures
 constexpr uint32_t kMaxTextures = 1024;
 // Descriptor writes per frame while the textures "stream in" (see record()).
 constexpr uint32_t kTexturesPerFrame = 8;
-
-// [address-buffer]
-// A device-local buffer whose GPU address shaders may use, filled with data.
-// Two things differ from an ordinary buffer: the usage SHADER_DEVICE_ADDRESS,
-// and the memory must be allocated with the DEVICE_ADDRESS flag (the feature
-// bufferDeviceAddress allows both). vkGetBufferDeviceAddress then gives the
-// 64-bit address of its first byte.
-vkt::Buffer create_address_buffer(const vkt::Gpu& gpu, const void* data, VkDeviceSize size,
-                                  VkDeviceAddress& address) {
-    vkt::Buffer out;
-    out.size = size;
-    const VkBufferCreateInfo info{
-        .sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO,
-        .size = size,
-        .usage = VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-        .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
-    };
-    VkBuffer buffer;
-    VKT_CHECK(vkCreateBuffer(gpu.device, &info, nullptr, &buffer));
-    out.buffer = vkt::BufferHandle(gpu.device, buffer);
-
-    VkMemoryRequirements requirements;
-    vkGetBufferMemoryRequirements(gpu.device, buffer, &requirements);
-    const VkMemoryAllocateFlagsInfo flags{
-        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO,
-        .flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT,
-    };
-    const VkMemoryAllocateInfo allocate{
-        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
-        .pNext = &flags,
-        .allocationSize = requirements.size,
-        .memoryTypeIndex = vkt::find_memory_type(gpu.physical, requirements.memoryTypeBits,
-                                                 VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
-    };
-    VkDeviceMemory memory;
-    VKT_CHECK(vkAllocateMemory(gpu.device, &allocate, nullptr, &memory));
-    out.memory = vkt::DeviceMemory(gpu.device, memory);
-    VKT_CHECK(vkBindBufferMemory(gpu.device, buffer, memory, 0));
-
-    const VkBufferDeviceAddressInfo address_info{
-        .sType = VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO,
-        .buffer = buffer,
-    };
-    address = vkGetBufferDeviceAddress(gpu.device, &address_info);
-    // [/address-buffer]
-
-    // Filled as in chapter 05, through a staging buffer; the barrier makes the
-    // copy visible to the vertex shader's loads through the address.
-    vkt::Buffer staging = vkt::create_host_buffer(gpu, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-    std::memcpy(staging.mapped, data, size);
-    vkt::one_time_submit(gpu, [&](VkCommandBuffer cmd) {
-        const VkBufferCopy region{.size = size};
-        vkCmdCopyBuffer(cmd, staging.buffer, buffer, 1, &region);
-        const VkMemoryBarrier2 barrier{
-            .sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-            .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
-            .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
-            .dstStageMask = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
-            .dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
-        };
-        const VkDependencyInfo dependency{
-            .sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
-            .memoryBarrierCount = 1,
-            .pMemoryBarriers = &barrier,
-        };
-        vkCmdPipelineBarrier2(cmd, &dependency);
-    });
-    return out;
-}
 
 class Bindless : public vkt::Renderer {
 public:
@@ -173,10 +107,10 @@ public:
         index_buffer_ = vkt::create_device_buffer(gpu, scene.indices.data(),
                                                   scene.indices.size() * sizeof(uint16_t),
                                                   VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-        vertex_buffer_ = create_address_buffer(
+        vertex_buffer_ = ch15::create_address_buffer(
             gpu, scene.vertices.data(), scene.vertices.size() * sizeof(Vertex), vertex_address_);
-        object_buffer_ = create_address_buffer(gpu, objects.data(), objects.size() * sizeof(Object),
-                                               object_address_);
+        object_buffer_ = ch15::create_address_buffer(
+            gpu, objects.data(), objects.size() * sizeof(Object), object_address_);
 
         // The textures: slot 0 the grey checker, slots 1.. the procedural ones.
         // (create_texture gives each its own sampler; the set uses one shared.)
@@ -187,6 +121,8 @@ public:
         sampler_ = vkt::create_sampler(device_, 0.0f);
         const auto slot_count = uint32_t(textures_.size());
 
+        // Chapter 07's helpers (vkt/resources/descriptors.hpp) take no flags
+        // and no pNext; this set's flags are the lesson, so it is written out.
         // [set-layout]
         // Binding 0: one sampler, immutable (baked into the layout).
         // Binding 1: up to kMaxTextures sampled images, with four flags:
@@ -274,6 +210,7 @@ public:
         write_textures(0, 1);
         // [/pool-and-set]
 
+        // The pipeline from the helpers of chapters 04-08: nothing new in it.
         const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                        sizeof(Push)};
         layout_ = vkt::create_pipeline_layout(device_, {&set_layout, 1}, {&push, 1});

@@ -9,9 +9,10 @@
 // every plane and projects it, O(n^2) per vertex and no matrix anywhere. The
 // dimension n is a specialization constant: one SPIR-V file for every n.
 // --verify cpu captures the projected vertices in a storage buffer and checks
-// them against the CPU.
+// them against the CPU (verify.hpp).
 
-#include "controls.hpp"
+#include "invocation_counter.hpp"
+#include "verify.hpp"
 #include "vkt/domains/ndim.hpp"
 #include "vkt/frame/runner.hpp"
 #include "vkt/frame/stats.hpp"
@@ -19,6 +20,7 @@
 #include "vkt/resources/descriptors.hpp"
 #include "vkt/resources/pipeline.hpp"
 #include "vkt/resources/shader.hpp"
+#include "vkt/scene/ndim_controls.hpp"
 #include "vkt/scene/ndim_options.hpp"
 
 #include <algorithm>
@@ -62,8 +64,9 @@ public:
         const nd::SceneChoice choice = nd::scene_choice(options);
         const std::string& scene = choice.scene;
         n_ = choice.n;
-        controls_ = ch19::Controls(
-            n_, choice.orthographic ? nd::Projection::orthographic : nd::Projection::perspective);
+        controls_ = nd::Controls(
+            n_, choice.orthographic ? nd::Projection::orthographic : nd::Projection::perspective,
+            "19_ndim_gpu");
         still_ = choice.still;
         verify_ = options.has("--verify");
         verify_frame_ = options.frames.value_or(1) - 1;
@@ -187,24 +190,11 @@ public:
                                                     .color_formats = {context.color_format},
                                                     .vertex_specialization = &specialization});
         // [/pipeline]
-        // --benchmark: how many times the vertex shader ran per frame (a
-        // pipeline statistics query, one per frame in flight), which shows
-        // how many shaded vertices the post-transform cache reused.
-        if (benchmark_ && context.features.has(VKT_FEATURE_10(pipelineStatisticsQuery))) {
-            const VkQueryPoolCreateInfo info{
-                .sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO,
-                .queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS,
-                .queryCount = context.frames_in_flight,
-                .pipelineStatistics = VK_QUERY_PIPELINE_STATISTIC_VERTEX_SHADER_INVOCATIONS_BIT,
-            };
-            VkQueryPool pool = VK_NULL_HANDLE;
-            VKT_CHECK(vkCreateQueryPool(device_, &info, nullptr, &pool));
-            statistics_ = vkt::QueryPool(device_, pool);
-            statistics_issued_.assign(context.frames_in_flight, false);
-            index_count_ = 0;
-            for (const nd::SceneObject& object : scene_.objects)
-                index_count_ += meshes_[size_t(object.mesh)].index_count;
-        }
+        // --benchmark: how many times the vertex shader ran per frame
+        // (invocation_counter.hpp), which shows how many shaded vertices the
+        // post-transform cache reused.
+        if (benchmark_ && context.features.has(VKT_FEATURE_10(pipelineStatisticsQuery)))
+            invocations_ = ch19::InvocationCounter(device_, context.frames_in_flight);
         if (verify_) {
             // The capture pass draws nothing: no fragment shader, no target.
             vkt::ShaderModule capture = vkt::load_shader(device_, context.chapter, "capture.vert");
@@ -222,22 +212,19 @@ public:
         if (benchmark_)
             std::fprintf(stderr, "19_ndim_gpu: CPU transforms and draws per frame, ms: %s\n",
                          vkt::json_summary(cpu_ms_).c_str());
-        // The runner has waited for the device: the last count of each slot
-        // is ready too.
-        for (size_t slot = 0; slot < statistics_issued_.size(); ++slot) {
-            uint64_t count = 0;
-            if (statistics_issued_[slot] &&
-                vkGetQueryPoolResults(device_, statistics_, uint32_t(slot), 1, sizeof(count),
-                                      &count, sizeof(count), VK_QUERY_RESULT_64_BIT) == VK_SUCCESS)
-                invocations_.push_back(double(count));
+        const std::vector<double> invocations = invocations_.finish();
+        if (invocations.empty()) return;
+        uint64_t indices = 0, vertices = 0;
+        for (const nd::SceneObject& object : scene_.objects) {
+            indices += meshes_[size_t(object.mesh)].index_count;
+            vertices += meshes_[size_t(object.mesh)].vertex_count;
         }
-        if (!invocations_.empty())
-            std::fprintf(stderr,
-                         "19_ndim_gpu: vertex shader invocations per frame: %s, for %llu indices "
-                         "and %llu vertices\n",
-                         vkt::json_summary(invocations_).c_str(),
-                         static_cast<unsigned long long>(index_count_),
-                         static_cast<unsigned long long>(object_vertices()));
+        std::fprintf(stderr,
+                     "19_ndim_gpu: vertex shader invocations per frame: %s, for %llu indices "
+                     "and %llu vertices\n",
+                     vkt::json_summary(invocations).c_str(),
+                     static_cast<unsigned long long>(indices),
+                     static_cast<unsigned long long>(vertices));
     }
 
     void record(const vkt::Frame& frame) override {
@@ -252,21 +239,13 @@ public:
         // position, scale, angles. Coherent memory: the submit makes it visible.
         auto* out = static_cast<float*>(transforms_[frame.slot].mapped);
         for (size_t o = 0; o < scene_.objects.size(); ++o) {
-            const std::vector<float> packed = pose(o).packed();
+            const std::vector<float> packed =
+                controls_.pose(scene_.objects[o], spin_time_).packed();
             std::memcpy(out + o * floats_per_object_, packed.data(), packed.size() * sizeof(float));
         }
         // [/write-transforms]
         if (verify_ && frame.index == verify_frame_) verify(frame);
-        if (statistics_) {
-            // This slot's fence has been waited for: its last count is ready.
-            if (statistics_issued_[frame.slot]) {
-                uint64_t count = 0;
-                VKT_CHECK(vkGetQueryPoolResults(device_, statistics_, frame.slot, 1, sizeof(count),
-                                                &count, sizeof(count), VK_QUERY_RESULT_64_BIT));
-                invocations_.push_back(double(count));
-            }
-            vkCmdResetQueryPool(frame.cmd, statistics_, frame.slot, 1);
-        }
+        invocations_.start_frame(frame.cmd, frame.slot);
 
         VkRenderingAttachmentInfo colour{
             .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
@@ -288,12 +267,9 @@ public:
             // The transform happens inside the draws, in the vertex shader:
             // one scope times transform and rasterisation together.
             auto scope = frame.gpu_scope("raster");
-            if (statistics_) vkCmdBeginQuery(frame.cmd, statistics_, frame.slot, 0);
+            invocations_.begin(frame.cmd, frame.slot);
             draw_objects(frame.cmd, frame.slot, frame.extent, pipeline_);
-            if (statistics_) {
-                vkCmdEndQuery(frame.cmd, statistics_, frame.slot);
-                statistics_issued_[frame.slot] = true;
-            }
+            invocations_.end(frame.cmd, frame.slot);
         }
         vkCmdEndRendering(frame.cmd);
         if (benchmark_)
@@ -309,21 +285,6 @@ private:
         uint32_t vertex_count;
         float inverse_radius;
     };
-
-    size_t object_vertices() const {
-        size_t count = 0;
-        for (const nd::SceneObject& object : scene_.objects)
-            count += meshes_[size_t(object.mesh)].vertex_count;
-        return count;
-    }
-
-    // Object o's transform this frame: its spin so far and what the keys did.
-    nd::Transform pose(size_t o) const {
-        nd::Transform t = scene_.objects[o].at(spin_time_);
-        for (size_t p = 0; p < t.angles.size(); ++p) t.angles[p] += controls_.angles[p];
-        for (int k = 0; k < n_; ++k) t.position[size_t(k)] += controls_.offset[size_t(k)];
-        return t;
-    }
 
     Push frame_push(VkExtent2D extent) const {
         const float aspect = float(extent.width) / float(extent.height);
@@ -362,7 +323,7 @@ private:
     // --verify cpu: the same draws with the capture pipeline, in a pass with
     // no attachments, on their own submit; then every vertex of every object
     // the GPU wrote is compared with the CPU's transform and projection, both
-    // the per-plane path and chapter 18's matrix.
+    // the per-plane path and chapter 18's matrix (verify.hpp).
     void verify(const vkt::Frame& frame) {
         std::memset(capture_.mapped, 0, size_t(capture_.size));
         vkt::one_time_submit(gpu_, [&](VkCommandBuffer cmd) {
@@ -376,56 +337,17 @@ private:
                                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
                                 VK_ACCESS_2_HOST_READ_BIT);
         });
-        const auto* captured = static_cast<const float*>(capture_.mapped);
-        const Push push = frame_push(frame.extent);
-        std::vector<float> world(static_cast<size_t>(n_));
-        double plane_error = 0.0, matrix_error = 0.0;
-        size_t checked = 0, mismatched = 0, missing = 0, clipped = 0;
-        for (size_t o = 0; o < scene_.objects.size(); ++o) {
-            const nd::Transform t = pose(o);
-            const nd::Matrix model = nd::model_matrix(t);
-            const MeshRange& range = meshes_[size_t(scene_.objects[o].mesh)];
-            const nd::Mesh& mesh = scene_.meshes[size_t(scene_.objects[o].mesh)];
-            for (size_t v = 0; v < mesh.vertex_count(); ++v) {
-                const float* gpu =
-                    captured + (o * vertex_count_ + size_t(range.first_vertex) + v) * 4;
-                if (gpu[3] != 1.0f) {
-                    ++missing;
-                    continue;
-                }
-                float by_plane[2] = {0, 0}, by_matrix[2] = {0, 0};
-                nd::transform_point(t, mesh.vertex(v), world);
-                const bool visible =
-                    nd::project_to_2d(world, controls_.projection, scene_.eye, by_plane);
-                nd::transform_point(model, mesh.vertex(v), world);
-                nd::project_to_2d(world, controls_.projection, scene_.eye, by_matrix);
-                ++checked;
-                if (visible != (gpu[2] == 1.0f)) ++mismatched;
-                if (!visible) {
-                    ++clipped;
-                    continue;
-                }
-                // Relative to the coordinate, or to the half screen (1 in clip
-                // units) for a point on the screen: a point near an eye lands
-                // far outside, where a float has fewer digits to spare.
-                for (int c = 0; c < 2; ++c) {
-                    const double g = gpu[c], p = by_plane[c] * push.to_clip[c],
-                                 m = by_matrix[c] * push.to_clip[c];
-                    plane_error =
-                        std::max(plane_error, std::abs(g - p) / std::max(1.0, std::abs(p)));
-                    matrix_error =
-                        std::max(matrix_error, std::abs(g - m) / std::max(1.0, std::abs(m)));
-                }
-            }
-        }
+        const ch19::Comparison c =
+            ch19::compare_with_cpu(scene_, controls_, spin_time_, frame_push(frame.extent).to_clip,
+                                   static_cast<const float*>(capture_.mapped));
         std::fprintf(stderr,
                      "19_ndim_gpu: verify cpu: %zu vertices of %zu objects, GPU vs CPU max error "
                      "%.3g (per-plane path), %.3g (chapter 18's matrix), relative, "
                      "tolerance %.0e; %zu clipped, %zu visibility mismatches, %zu not written\n",
-                     checked, scene_.objects.size(), plane_error, matrix_error, verify_tolerance,
-                     clipped, mismatched, missing);
-        if (missing > 0 || mismatched > 0 || !(plane_error <= verify_tolerance) ||
-            !(matrix_error <= verify_tolerance))
+                     c.checked, scene_.objects.size(), c.plane_error, c.matrix_error,
+                     verify_tolerance, c.clipped, c.mismatched, c.missing);
+        if (c.missing > 0 || c.mismatched > 0 || !(c.plane_error <= verify_tolerance) ||
+            !(c.matrix_error <= verify_tolerance))
             throw std::runtime_error("verify cpu: the GPU's vertices differ from the CPU's");
     }
     // [/verify]
@@ -433,7 +355,7 @@ private:
     vkt::Gpu gpu_;
     VkDevice device_;
     int n_ = 4;
-    ch19::Controls controls_{4, nd::Projection::perspective};  // the keys (controls.hpp)
+    nd::Controls controls_{4, nd::Projection::perspective};  // chapter 18's keys
     bool still_ = false, benchmark_ = false, verify_ = false;
     uint64_t verify_frame_ = 0;
     std::vector<double> cpu_ms_;
@@ -450,10 +372,7 @@ private:
     std::vector<VkDescriptorSet> sets_;
     vkt::PipelineLayout layout_;
     vkt::Pipeline pipeline_, capture_pipeline_;
-    vkt::QueryPool statistics_;
-    std::vector<bool> statistics_issued_;
-    std::vector<double> invocations_;
-    uint64_t index_count_ = 0;
+    ch19::InvocationCounter invocations_;  // --benchmark, where the device can
 };
 
 }  // namespace

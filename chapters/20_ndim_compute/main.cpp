@@ -9,8 +9,9 @@
 // With --raster compute, a second compute pass draws the lines itself into a
 // storage buffer of one word per pixel (one invocation per line, atomicMax
 // per pixel), laid out as the colour target's pixels, and a copy moves it
-// onto the colour target.
+// onto the colour target (compute_raster.hpp).
 
+#include "compute_raster.hpp"
 #include "scene_state.hpp"
 #include "vkt/core/barrier.hpp"
 #include "vkt/domains/ndim.hpp"
@@ -21,6 +22,7 @@
 #include "vkt/resources/pipeline.hpp"
 #include "vkt/resources/shader.hpp"
 #include "vkt/resources/upload.hpp"
+#include "vkt/scene/ndim_controls.hpp"
 #include "vkt/scene/ndim_options.hpp"
 
 #include <algorithm>
@@ -28,6 +30,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -36,9 +39,7 @@ namespace {
 
 namespace nd = vkt::ndim;
 
-using ch20::ObjectInfo, ch20::Projected, ch20::Push;
-
-constexpr uint32_t group = 64;  // local_size_x of both compute shaders
+using ch20::group, ch20::ObjectInfo, ch20::Projected, ch20::Push;
 
 class NdimCompute : public vkt::Renderer {
 public:
@@ -49,12 +50,12 @@ public:
         const std::string& scene = choice.scene;
         n_ = choice.n;
         still_ = choice.still;
-        compute_raster_ = options.text("--raster") == "compute";
         verify_ = options.has("--verify");
         verify_frame_ = options.frames.value_or(1) - 1;
         benchmark_ = options.benchmark;
         scene_ = nd::make_scene(scene, n_, still_);
-        keys_ = ch20::Keys(n_, choice.orthographic);
+        keys_ = nd::Controls(
+            n_, choice.orthographic ? nd::Projection::orthographic : nd::Projection::perspective);
 
         // [static-buffers]
         // Built once: each mesh's coordinates (shared by all its objects),
@@ -113,7 +114,7 @@ public:
                      "20_ndim_compute: %s scene, n = %d, %zu objects, %u vertices, %u lines per "
                      "frame, raster %s, eye at %.3g\n",
                      scene.c_str(), n_, scene_.objects.size(), vertex_total_, line_total_,
-                     compute_raster_ ? "compute" : "graphics", scene_.eye);
+                     options.text("--raster").c_str(), scene_.eye);
 
         // [descriptors]
         // One set layout for all the passes: 0 coordinates, 1 object table,
@@ -146,7 +147,6 @@ public:
 
         // [transform-pipeline]
         // n as a specialization constant: the shader's point is float x[N].
-        const VkSpecializationMapEntry entry{.constantID = 0, .offset = 0, .size = sizeof(int)};
         // A GPU hides memory latency with many invocations in flight, one
         // per vertex. A CPU device such as lavapipe runs them 8 or 16 at a
         // time in the SIMD lanes of a core and pays for each one's set-up,
@@ -194,73 +194,16 @@ public:
                                                     .topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST,
                                                     .color_formats = {context.color_format}});
         // [/line-pipeline]
-        if (compute_raster_) {
-            // [raster-pipeline]
-            // The rasteriser writes the target's own pixel layout, so the
-            // palette (raster.comp) is built in the target's byte order.
-            if (context.color_format != VK_FORMAT_B8G8R8A8_SRGB &&
-                context.color_format != VK_FORMAT_R8G8B8A8_SRGB)
-                throw std::runtime_error(
-                    "--raster compute: the colour target is neither "
-                    "B8G8R8A8_SRGB nor R8G8B8A8_SRGB");
-            const bool bgra = context.color_format == VK_FORMAT_B8G8R8A8_SRGB;
-            const std::vector<uint32_t> words = ch20::palette(bgra);
-            palette_ =
-                vkt::create_device_buffer(gpu_, words.data(), words.size() * sizeof(uint32_t),
-                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-            for (VkDescriptorSet set : sets_)
-                vkt::write_buffer_descriptor(device_, set, 6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                             palette_.buffer, 0, VK_WHOLE_SIZE);
-            // The background, as the target stores it: (0.006, 0.006, 0.012)
-            // sRGB-encoded is (18, 18, 29), level 0 below every line's.
-            background_ = bgra ? 29u | 18u << 8 | 18u << 16 : 18u | 18u << 8 | 29u << 16;
-            // Invocations per line: enough for about 2^18 invocations in all
-            // on a GPU (a few per core), from 1 (250 n-cubes) to 32 (one
-            // 4-cube). A CPU device wants only enough workgroups to keep its
-            // cores busy, 2^12 invocations: more lanes per line there only
-            // add each invocation's set-up (250 4-cubes: 1.3x faster so).
-            const uint64_t wanted = cpu ? 1u << 12 : 1u << 18;
-            lanes_ = 1;
-            while (lanes_ < 32 && uint64_t(line_total_) * lanes_ * 2 <= wanted) lanes_ *= 2;
-            const VkSpecializationInfo lanes{.mapEntryCount = 1,
-                                             .pMapEntries = &entry,
-                                             .dataSize = sizeof(int),
-                                             .pData = &lanes_};
-            vkt::ShaderModule raster = vkt::load_shader(device_, context.chapter, "raster.comp");
-            raster_ = vkt::create_compute_pipeline(device_, raster, layout_, &lanes);
-            max_groups_x_ = context.properties.limits.maxComputeWorkGroupCount[0];
-            max_storage_range_ = context.properties.limits.maxStorageBufferRange;
-            // [/raster-pipeline]
-            resize(context.extent);
-        }
+        // --raster compute: the lines drawn by a compute pass instead
+        // (compute_raster.hpp), through the same sets and pipeline layout.
+        if (options.text("--raster") == "compute")
+            raster_.emplace(context, layout_, sets_, line_total_);
     }
 
-    // [pixel-buffer]
-    // The compute rasteriser's target: one 32-bit word per pixel, row after
-    // row, written with atomics (STORAGE), filled with the background each
-    // frame (TRANSFER_DST) and copied to the colour target (TRANSFER_SRC).
-    // It follows the window's size.
+    // The compute rasteriser's pixel buffer follows the window's size.
     void resize(VkExtent2D extent) override {
-        if (!compute_raster_) return;
-        // One descriptor sees the whole buffer, so it must fit in one
-        // storage-buffer range (at least 128 MiB: 5,792x5,792 pixels).
-        const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
-        if (bytes > max_storage_range_)
-            throw std::runtime_error("--raster compute: " + std::to_string(extent.width) + "x" +
-                                     std::to_string(extent.height) + " needs a pixel buffer of " +
-                                     std::to_string(bytes) +
-                                     " bytes, more than this device's maxStorageBufferRange (" +
-                                     std::to_string(max_storage_range_) + ")");
-        pixels_ = vkt::create_buffer(gpu_.physical, device_, bytes,
-                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                         VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                                         VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                     VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        for (VkDescriptorSet set : sets_)
-            vkt::write_buffer_descriptor(device_, set, 5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                         pixels_.buffer, 0, VK_WHOLE_SIZE);
+        if (raster_) raster_->resize(extent, sets_);
     }
-    // [/pixel-buffer]
 
     // With --benchmark, the CPU's share: building the poses each frame.
     ~NdimCompute() override {
@@ -285,7 +228,7 @@ public:
         const Push push{
             {1.0f / (scene_.view_half_height * aspect), -1.0f / scene_.view_half_height},
             scene_.eye,
-            keys_.orthographic ? 1u : 0u,
+            keys_.projection == nd::Projection::orthographic ? 1u : 0u,
             uint32_t(scene_.objects.size()),
             line_total_,
             {frame.extent.width, frame.extent.height}};
@@ -297,9 +240,9 @@ public:
             auto scope = frame.gpu_scope("transform");
             record_transform(cmd, frame.slot, push);
         }
-        if (compute_raster_) {
+        if (raster_) {
             auto scope = frame.gpu_scope("raster");
-            record_compute_raster(frame);
+            raster_->record(frame, projected);
             return;
         }
         // [draw]
@@ -372,58 +315,6 @@ private:
         vkCmdBeginRendering(frame.cmd, &rendering);
     }
 
-    // [compute-raster]
-    // Fill the words with the background (after the previous frame's copy
-    // has read them), rasterise every line into them, copy them onto the
-    // colour target.
-    void record_compute_raster(const vkt::Frame& frame) {
-        const VkCommandBuffer cmd = frame.cmd;
-        // The specification counts vkCmdFillBuffer among the clear commands
-        // (CLEAR stage); validation layers before 2024 (Debian 12's among
-        // them) count it as a copy. ALL_TRANSFER covers both.
-        vkt::buffer_barrier(cmd, pixels_.buffer, VK_PIPELINE_STAGE_2_COPY_BIT,
-                            VK_ACCESS_2_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                            VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        vkCmdFillBuffer(cmd, pixels_.buffer, 0, VK_WHOLE_SIZE, background_);
-        vkt::buffer_barrier(
-            cmd, pixels_.buffer, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-        vkt::buffer_barrier(
-            cmd, projected_[frame.slot].buffer, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-            VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-        // lanes_ invocations per line (raster.comp), the workgroups laid
-        // out in rows of at most max_groups_x_.
-        const uint64_t groups = vkt::dispatch_count(uint64_t(line_total_) * lanes_, group);
-        const uint64_t rows = vkt::dispatch_count(groups, max_groups_x_);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, raster_);
-        vkCmdDispatch(cmd, uint32_t(rows == 1 ? groups : max_groups_x_), uint32_t(rows), 1);
-
-        // The words are the target's pixels already: a buffer-to-image copy
-        // takes the buffer's bytes as texels of the target's own format (4
-        // bytes each, rows tightly packed), bits unchanged. The target goes
-        // to its transfer layout for the copy and back to the layout the
-        // runner expects after record().
-        vkt::buffer_barrier(cmd, pixels_.buffer, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
-                            VK_ACCESS_2_TRANSFER_READ_BIT);
-        vkt::image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_NONE,
-                           VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        const VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-                                       .imageExtent = {frame.extent.width, frame.extent.height, 1}};
-        vkCmdCopyBufferToImage(cmd, pixels_.buffer, frame.target,
-                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        vkt::image_barrier(
-            cmd, frame.target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
-            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
-    }
-    // [/compute-raster]
-
     // [verify]
     // --verify: run the transform pass alone on the last frame's poses, read
     // the projected vertices back and compare each with the CPU reference
@@ -461,29 +352,24 @@ private:
     vkt::Gpu gpu_;
     VkDevice device_;
     int n_ = 4;
-    bool still_ = false, compute_raster_ = false;
-    bool verify_ = false, benchmark_ = false;
+    bool still_ = false, verify_ = false, benchmark_ = false;
     std::vector<double> cpu_ms_;
     uint64_t verify_frame_ = 0;
     nd::Scene scene_;
-    ch20::Keys keys_{4, false};  // what the keys changed (scene_state.hpp)
+    nd::Controls keys_{4, nd::Projection::perspective};  // chapter 18's keys
     double last_time_ = 0.0;
     float spin_time_ = 0.0f;
     uint32_t vertex_total_ = 0, line_total_ = 0, max_vertices_ = 0;
     uint32_t vertices_per_lane_ = 1;  // transform.comp: vertices per invocation
     size_t pose_floats_ = 0;
-    vkt::Buffer coords_, objects_, ends_, palette_;
+    vkt::Buffer coords_, objects_, ends_;
     std::vector<vkt::Buffer> poses_, projected_;  // [slot]
-    vkt::Buffer pixels_;                          // --raster compute
     vkt::DescriptorSetLayout set_layout_;
     vkt::DescriptorPool pool_;
     std::vector<VkDescriptorSet> sets_;  // [slot]
     vkt::PipelineLayout layout_;
-    vkt::Pipeline transform_, lines_, raster_;
-    uint32_t max_groups_x_ = 65535;   // maxComputeWorkGroupCount[0]
-    uint32_t max_storage_range_ = 0;  // maxStorageBufferRange
-    int lanes_ = 1;                   // raster.comp's LANES
-    uint32_t background_ = 0;         // --raster compute: the clear value, as the target stores it
+    vkt::Pipeline transform_, lines_;
+    std::optional<ch20::ComputeRaster> raster_;  // --raster compute
 };
 
 }  // namespace

@@ -1,10 +1,11 @@
 #pragma once
 // Chapter 20's CPU side, apart from Vulkan: the structures shared with the
-// shaders, the compute rasteriser's palette, the keys' state (chapter 18's
-// controls) and the CPU reference that --verify compares the GPU with.
+// shaders, the compute rasteriser's palette and the CPU reference that
+// --verify compares the GPU with. The keys are chapter 18's
+// (vkt/scene/ndim_controls.hpp).
 
 #include "vkt/domains/ndim.hpp"
-#include "vkt/frame/input.hpp"
+#include "vkt/scene/ndim_controls.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -33,9 +34,12 @@ struct ObjectInfo {
 };
 static_assert(sizeof(Projected) == 16 && sizeof(ObjectInfo) == 16 && sizeof(Push) == 32);
 
+constexpr uint32_t group = 64;  // local_size_x of both compute shaders
+
 // [palette]
-// The compute rasteriser's colours: word `level` (1..255, the depth
-// t = (level - 1) / 127 - 1) is chapter 18's depth colour, sRGB-encoded as an
+// The compute rasteriser's colours: word `level` (1..255; raster.comp stores
+// the depth d = -1..1 as level 1 + (0.5 + 0.5 d) * 254, so t = (level - 1) / 254
+// runs 0 far .. 1 near) is chapter 18's depth colour, sRGB-encoded as an
 // _SRGB target stores it, in the target's byte order, with the level in the
 // top byte (the target's alpha), so that atomicMax keeps the nearest line.
 inline std::vector<uint32_t> palette(bool bgra) {
@@ -54,53 +58,6 @@ inline std::vector<uint32_t> palette(bool bgra) {
 }
 // [/palette]
 
-// [controls]
-// The keys of chapter 18: 1..9, 0 turn the planes of the current page,
-// [ and ] change the page, F1..F12 move along the axes, Shift reverses,
-// Space pauses, O switches the projection, R resets. Headless, input is
-// always empty and the picture depends on the frame index alone.
-struct Keys {
-    int n = 4, page = 0;
-    bool paused = false, orthographic = false;
-    std::vector<float> angles, offset;  // added to every object's pose
-
-    Keys(int dim, bool ortho)
-        : n(dim),
-          orthographic(ortho),
-          angles(size_t(nd::plane_count(dim)), 0.0f),
-          offset(size_t(dim), 0.0f) {}
-
-    void steer(const vkt::Input& input, float dt) {
-        constexpr int key_0 = 48, key_1 = 49, key_o = 79, key_r = 82, key_left_bracket = 91,
-                      key_right_bracket = 93, key_f1 = 290;  // GLFW key codes
-        const float sign = input.shift() ? -1.0f : 1.0f;
-        const int planes = nd::plane_count(n), pages = (planes + 9) / 10;
-        if (input.went_down(key_right_bracket) || input.went_down(key_left_bracket))
-            page = (page + (input.went_down(key_right_bracket) ? 1 : pages - 1)) % pages;
-        for (int key = 0; key < 10; ++key) {
-            const int plane = page * 10 + key, code = key == 9 ? key_0 : key_1 + key;
-            if (plane < planes && input.down(code)) angles[size_t(plane)] += sign * dt;
-        }
-        for (int axis = 0; axis < std::min(n, 12); ++axis)
-            if (input.down(key_f1 + axis)) offset[size_t(axis)] += sign * 1.5f * dt;
-        if (input.went_down(vkt::key::space)) paused = !paused;
-        if (input.went_down(key_o)) orthographic = !orthographic;
-        if (input.went_down(key_r)) {
-            std::fill(angles.begin(), angles.end(), 0.0f);
-            std::fill(offset.begin(), offset.end(), 0.0f);
-        }
-    }
-
-    // An object's pose at `time`: its start plus spin * time, plus the keys.
-    nd::Transform pose(const nd::SceneObject& object, float time) const {
-        nd::Transform t = object.at(time);
-        for (size_t p = 0; p < t.angles.size(); ++p) t.angles[p] += angles[p];
-        for (int k = 0; k < n; ++k) t.position[size_t(k)] += offset[size_t(k)];
-        return t;
-    }
-};
-// [/controls]
-
 // --verify: the largest differences between the GPU's projected vertices
 // (every object's, in scene order) and vkt::ndim's per-plane transform_point
 // and project_to_2d, a different path from the matrix the shader uses.
@@ -109,12 +66,10 @@ struct Comparison {
     double position = 0.0, depth = 0.0;               // clip units; depth units (-1..1)
 };
 
-inline Comparison compare_with_cpu(const nd::Scene& scene, const Keys& keys, float time,
+inline Comparison compare_with_cpu(const nd::Scene& scene, const nd::Controls& keys, float time,
                                    const Push& push, const Projected* gpu) {
     Comparison c;
     std::vector<float> world(size_t(scene.dim));
-    const auto kind =
-        keys.orthographic ? nd::Projection::orthographic : nd::Projection::perspective;
     for (const nd::SceneObject& object : scene.objects) {
         const nd::Transform t = keys.pose(object, time);
         const nd::Mesh& mesh = scene.meshes[size_t(object.mesh)];
@@ -122,7 +77,7 @@ inline Comparison compare_with_cpu(const nd::Scene& scene, const Keys& keys, flo
             const Projected& g = gpu[c.vertices++];
             nd::transform_point(t, mesh.vertex(i), world);
             float xy[2];
-            const bool visible = nd::project_to_2d(world, kind, scene.eye, xy);
+            const bool visible = nd::project_to_2d(world, keys.projection, scene.eye, xy);
             const double depth = (world.back() - t.position.back()) / mesh.radius();
             c.depth = std::max(c.depth, std::abs(depth - g.depth));
             if (visible != (g.colour >> 24 != 0)) ++c.mismatched;

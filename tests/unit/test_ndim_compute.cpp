@@ -1,8 +1,8 @@
 // Chapter 20's CPU side (chapters/20_ndim_compute/scene_state.hpp): the
 // compute rasteriser's palette orders lines by depth and holds chapter 18's
-// colours; the keys' pose adds to the scene's; and the --verify comparison
-// reports 0 for vertices projected exactly as the CPU does, and catches a
-// wrong one.
+// colours; and the --verify comparison reports 0 for vertices projected
+// exactly as the CPU does, and catches a wrong one. (The keys' pose:
+// test_ndim_controls.cpp.)
 #include "../../chapters/20_ndim_compute/scene_state.hpp"
 
 #include <catch2/catch_approx.hpp>
@@ -46,24 +46,11 @@ TEST_CASE("the palette: level 0 is empty, the top byte is the level, colours as 
     }
 }
 
-TEST_CASE("the keys' pose adds their angles and offsets to the scene's", "[ndim_compute]") {
-    const vkt::ndim::Scene scene = vkt::ndim::make_scene("cube", 5, false);
-    ch20::Keys keys(5, false);
-    const vkt::ndim::Transform plain = keys.pose(scene.objects[0], 0.5f);
-    CHECK(plain.angles == scene.objects[0].at(0.5f).angles);
-    keys.angles[3] = 0.25f;
-    keys.offset[4] = -1.0f;
-    const vkt::ndim::Transform moved = keys.pose(scene.objects[0], 0.5f);
-    CHECK(moved.angles[3] == Catch::Approx(plain.angles[3] + 0.25f));
-    CHECK(moved.position[4] == Catch::Approx(plain.position[4] - 1.0f));
-    CHECK(moved.angles[2] == plain.angles[2]);
-}
-
 TEST_CASE("compare_with_cpu: 0 for the CPU's own projection, and it sees a wrong vertex",
           "[ndim_compute]") {
     namespace nd = vkt::ndim;
     const nd::Scene scene = nd::make_scene("default", 4, false);
-    const ch20::Keys keys(4, false);
+    const vkt::ndim::Controls keys(4, vkt::ndim::Projection::perspective);
     const ch20::Push push{{0.5f, -0.25f}, scene.eye, 0, 2, 0, {320, 240}};
     std::vector<ch20::Projected> gpu;
     std::vector<float> world(4);

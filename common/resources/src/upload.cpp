@@ -46,17 +46,12 @@ Buffer create_host_buffer(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlags 
         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
 }
 
-Buffer create_device_buffer(const Gpu& gpu, const void* data, VkDeviceSize size,
-                            VkBufferUsageFlags usage) {
-    if (size == 0) throw Error("create_device_buffer: an empty buffer cannot be created");
+void upload_to_buffer(const Gpu& gpu, VkBuffer buffer, const void* data, VkDeviceSize size) {
     Buffer staging = create_host_buffer(gpu, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     std::memcpy(staging.mapped, data, size);  // coherent: no flush needed
-    Buffer buffer =
-        create_buffer(gpu.physical, gpu.device, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                      VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     one_time_submit(gpu, [&](VkCommandBuffer cmd) {
         VkBufferCopy region{.srcOffset = 0, .dstOffset = 0, .size = size};
-        vkCmdCopyBuffer(cmd, staging.buffer, buffer.buffer, 1, &region);
+        vkCmdCopyBuffer(cmd, staging.buffer, buffer, 1, &region);
         // Waiting for the fence tells the CPU the copy is done, but it is no
         // memory dependency for later GPU work: this barrier makes the copy
         // visible to any read by any later command on the queue.
@@ -74,6 +69,15 @@ Buffer create_device_buffer(const Gpu& gpu, const void* data, VkDeviceSize size,
         };
         vkCmdPipelineBarrier2(cmd, &dependency);
     });
+}
+
+Buffer create_device_buffer(const Gpu& gpu, const void* data, VkDeviceSize size,
+                            VkBufferUsageFlags usage) {
+    if (size == 0) throw Error("create_device_buffer: an empty buffer cannot be created");
+    Buffer buffer =
+        create_buffer(gpu.physical, gpu.device, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                      VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    upload_to_buffer(gpu, buffer.buffer, data, size);
     return buffer;
 }
 

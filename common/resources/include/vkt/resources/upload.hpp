@@ -27,6 +27,12 @@ void one_time_submit(const Gpu& gpu, const std::function<void(VkCommandBuffer)>&
 Buffer create_device_buffer(const Gpu& gpu, const void* data, VkDeviceSize size,
                             VkBufferUsageFlags usage);
 
+// Copies data[0..size) into the start of `buffer` (made with TRANSFER_DST)
+// through a host-visible staging buffer, as create_device_buffer does; for a
+// buffer the caller made itself (chapter 15: memory with a GPU address).
+// The copy is finished and visible to every later command when this returns.
+void upload_to_buffer(const Gpu& gpu, VkBuffer buffer, const void* data, VkDeviceSize size);
+
 // A host-visible, host-coherent buffer, mapped for its lifetime: for data the
 // CPU rewrites every frame (one per frame in flight, see chapter 07).
 Buffer create_host_buffer(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlags usage);

@@ -1,0 +1,160 @@
+#pragma once
+// Chapter 20's second way to draw the lines (--raster compute): a compute
+// pass that rasterises every line into a storage buffer of one word per
+// pixel (raster.comp: one invocation per line, atomicMax per pixel), laid
+// out as the colour target's pixels, and a copy that moves it onto the
+// colour target. It reads the projected vertices and line ends that the
+// transform pass and main.cpp set up, through the same descriptor sets.
+
+#include "scene_state.hpp"
+
+#include "vkt/core/barrier.hpp"
+#include "vkt/frame/runner.hpp"
+#include "vkt/resources/compute.hpp"
+#include "vkt/resources/descriptors.hpp"
+#include "vkt/resources/shader.hpp"
+#include "vkt/resources/upload.hpp"
+
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ch20 {
+
+class ComputeRaster {
+public:
+    // [raster-pipeline]
+    // The rasteriser writes the target's own pixel layout, so the palette
+    // (raster.comp) is built in the target's byte order; binding 6 of each
+    // set is the palette, binding 5 the pixels (resize).
+    ComputeRaster(const vkt::Context& context, VkPipelineLayout layout,
+                  std::span<const VkDescriptorSet> sets, uint32_t line_total)
+        : gpu_(context.gpu()), device_(context.device), line_total_(line_total) {
+        if (context.color_format != VK_FORMAT_B8G8R8A8_SRGB &&
+            context.color_format != VK_FORMAT_R8G8B8A8_SRGB)
+            throw std::runtime_error(
+                "--raster compute: the colour target is neither "
+                "B8G8R8A8_SRGB nor R8G8B8A8_SRGB");
+        const bool bgra = context.color_format == VK_FORMAT_B8G8R8A8_SRGB;
+        const std::vector<uint32_t> words = palette(bgra);
+        palette_ = vkt::create_device_buffer(gpu_, words.data(), words.size() * sizeof(uint32_t),
+                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        for (VkDescriptorSet set : sets)
+            vkt::write_buffer_descriptor(device_, set, 6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                         palette_.buffer, 0, VK_WHOLE_SIZE);
+        // The background, as the target stores it: (0.006, 0.006, 0.012)
+        // sRGB-encoded is (18, 18, 29), level 0 below every line's.
+        background_ = bgra ? 29u | 18u << 8 | 18u << 16 : 18u | 18u << 8 | 29u << 16;
+        // Invocations per line: enough for about 2^18 invocations in all
+        // on a GPU (a few per core), from 1 (250 n-cubes) to 32 (one
+        // 4-cube). A CPU device wants only enough workgroups to keep its
+        // cores busy, 2^12 invocations: more lanes per line there only
+        // add each invocation's set-up (250 4-cubes: 1.3x faster so).
+        const bool cpu = context.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+        const uint64_t wanted = cpu ? 1u << 12 : 1u << 18;
+        lanes_ = 1;
+        while (lanes_ < 32 && uint64_t(line_total_) * lanes_ * 2 <= wanted) lanes_ *= 2;
+        const VkSpecializationMapEntry entry{.constantID = 0, .offset = 0, .size = sizeof(int)};
+        const VkSpecializationInfo lanes{
+            .mapEntryCount = 1, .pMapEntries = &entry, .dataSize = sizeof(int), .pData = &lanes_};
+        vkt::ShaderModule raster = vkt::load_shader(device_, context.chapter, "raster.comp");
+        pipeline_ = vkt::create_compute_pipeline(device_, raster, layout, &lanes);
+        max_groups_x_ = context.properties.limits.maxComputeWorkGroupCount[0];
+        max_storage_range_ = context.properties.limits.maxStorageBufferRange;
+        resize(context.extent, sets);
+    }
+    // [/raster-pipeline]
+
+    // [pixel-buffer]
+    // The compute rasteriser's target: one 32-bit word per pixel, row after
+    // row, written with atomics (STORAGE), filled with the background each
+    // frame (TRANSFER_DST) and copied to the colour target (TRANSFER_SRC).
+    // It follows the window's size.
+    void resize(VkExtent2D extent, std::span<const VkDescriptorSet> sets) {
+        // One descriptor sees the whole buffer, so it must fit in one
+        // storage-buffer range (at least 128 MiB: 5,792x5,792 pixels).
+        const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
+        if (bytes > max_storage_range_)
+            throw std::runtime_error("--raster compute: " + std::to_string(extent.width) + "x" +
+                                     std::to_string(extent.height) + " needs a pixel buffer of " +
+                                     std::to_string(bytes) +
+                                     " bytes, more than this device's maxStorageBufferRange (" +
+                                     std::to_string(max_storage_range_) + ")");
+        pixels_ = vkt::create_buffer(gpu_.physical, device_, bytes,
+                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                         VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                         VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                     VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        for (VkDescriptorSet set : sets)
+            vkt::write_buffer_descriptor(device_, set, 5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                         pixels_.buffer, 0, VK_WHOLE_SIZE);
+    }
+    // [/pixel-buffer]
+
+    // [compute-raster]
+    // Fill the words with the background (after the previous frame's copy
+    // has read them), rasterise every line into them, copy them onto the
+    // colour target. The frame's descriptor set is bound already (by the
+    // transform pass, same layout); `projected` is what that pass wrote.
+    void record(const vkt::Frame& frame, VkBuffer projected) const {
+        const VkCommandBuffer cmd = frame.cmd;
+        // The specification counts vkCmdFillBuffer among the clear commands
+        // (CLEAR stage); validation layers before 2024 (Debian 12's among
+        // them) count it as a copy. ALL_TRANSFER covers both.
+        vkt::buffer_barrier(cmd, pixels_.buffer, VK_PIPELINE_STAGE_2_COPY_BIT,
+                            VK_ACCESS_2_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                            VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        vkCmdFillBuffer(cmd, pixels_.buffer, 0, VK_WHOLE_SIZE, background_);
+        vkt::buffer_barrier(
+            cmd, pixels_.buffer, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        vkt::buffer_barrier(cmd, projected, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+        // lanes_ invocations per line (raster.comp), the workgroups laid
+        // out in rows of at most max_groups_x_.
+        const uint64_t groups = vkt::dispatch_count(uint64_t(line_total_) * lanes_, group);
+        const uint64_t rows = vkt::dispatch_count(groups, max_groups_x_);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+        vkCmdDispatch(cmd, uint32_t(rows == 1 ? groups : max_groups_x_), uint32_t(rows), 1);
+
+        // The words are the target's pixels already: a buffer-to-image copy
+        // takes the buffer's bytes as texels of the target's own format (4
+        // bytes each, rows tightly packed), bits unchanged. The target goes
+        // to its transfer layout for the copy and back to the layout the
+        // runner expects after record().
+        vkt::buffer_barrier(cmd, pixels_.buffer, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                            VK_ACCESS_2_TRANSFER_READ_BIT);
+        vkt::image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_NONE,
+                           VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        const VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                                       .imageExtent = {frame.extent.width, frame.extent.height, 1}};
+        vkCmdCopyBufferToImage(cmd, pixels_.buffer, frame.target,
+                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        vkt::image_barrier(
+            cmd, frame.target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
+    }
+    // [/compute-raster]
+
+private:
+    vkt::Gpu gpu_;
+    VkDevice device_;
+    uint32_t line_total_;
+    vkt::Buffer palette_, pixels_;
+    vkt::Pipeline pipeline_;
+    uint32_t max_groups_x_ = 65535;   // maxComputeWorkGroupCount[0]
+    uint32_t max_storage_range_ = 0;  // maxStorageBufferRange
+    int lanes_ = 1;                   // raster.comp's LANES
+    uint32_t background_ = 0;         // the clear value, as the target stores it
+};
+
+}  // namespace ch20
