@@ -20,6 +20,7 @@
 #include "vkt/resources/compute.hpp"
 #include "vkt/resources/descriptors.hpp"
 #include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/rendering.hpp"
 #include "vkt/resources/shader.hpp"
 #include "vkt/resources/upload.hpp"
 #include "vkt/scene/ndim_controls.hpp"
@@ -299,20 +300,8 @@ private:
     // [/dispatch]
 
     void begin_rendering(const vkt::Frame& frame) {
-        VkRenderingAttachmentInfo colour{
-            .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-            .imageView = frame.target_view,
-            .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-            .clearValue = {.color = {{0.006f, 0.006f, 0.012f, 1.0f}}},
-        };
-        VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-                                  .renderArea = {{0, 0}, frame.extent},
-                                  .layerCount = 1,
-                                  .colorAttachmentCount = 1,
-                                  .pColorAttachments = &colour};
-        vkCmdBeginRendering(frame.cmd, &rendering);
+        vkt::begin_rendering(frame.cmd, frame.target_view, frame.extent,
+                             {{0.006f, 0.006f, 0.012f, 1.0f}});
     }
 
     // [verify]
