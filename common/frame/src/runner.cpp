@@ -544,6 +544,10 @@ int guarded(int argc, char** argv, Flags flags, std::span<const OptionSpec> chap
     }
     try {
         return body(options);
+    } catch (const UsageError& e) {  // from ChapterSpec::check: flags that contradict each other
+        std::fprintf(stderr, "%s: %s\n%s\n", program.c_str(), e.what(),
+                     usage_line(program, flags, chapter_options).c_str());
+        return 2;
     } catch (const std::exception& e) {
         std::fflush(stdout);
         std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());
@@ -563,6 +567,7 @@ int report_validation(const std::string& program, const ValidationCounts* counts
 
 int run_chapter(int argc, char** argv, const ChapterSpec& spec, const RendererFactory& factory) {
     return guarded(argc, argv, Flags::frame_loop, spec.options, [&](const Options& options) {
+        if (spec.check) spec.check(options);  // before any instance or device
         std::shared_ptr<const ValidationCounts> counts;
         {
             ChapterRun run(options, spec);

@@ -74,6 +74,10 @@ struct ChapterSpec {
     DeviceRequirements requirements;
     std::vector<OptionSpec> options;  // the chapter's own flags (--model, --lights, ...)
     InputUse input = InputUse::none;  // what input the chapter wants in a window (chapter 11)
+    // Checks flags against each other (a choice that contradicts another):
+    // throw UsageError, and the run ends with the usage line and exit status 2
+    // before any instance or device exists. Not called for --help.
+    std::function<void(const Options&)> check;
 };
 
 using RendererFactory = std::function<std::unique_ptr<Renderer>(const Context&)>;
