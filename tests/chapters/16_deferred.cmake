@@ -84,9 +84,12 @@ vkt_chapter_test(bad_input.16_deferred.bad_view 16_deferred EXIT 2 ARGS --view s
   EXPECT "--view wants one of lit, albedo, normal, material, depth, not 'specular'")
 vkt_chapter_test(bad_input.16_deferred.bad_path 16_deferred EXIT 2 ARGS --path tiled
   EXPECT "--path wants one of deferred, forward, not 'tiled'")
-vkt_chapter_test(bad_input.16_deferred.view_needs_deferred 16_deferred EXIT 1
-  ARGS --headless --frames 1 --path forward --view normal
-  EXPECT "--view normal shows a G-buffer target: it needs --path deferred")
-vkt_chapter_test(bad_input.16_deferred.verify_forward_path 16_deferred EXIT 1
+
+# Flags that contradict each other are bad input too: found before any device
+# is made (the usage line shows it), exit status 2.
+vkt_chapter_test(bad_input.16_deferred.view_needs_deferred 16_deferred EXIT 2
+  ARGS --headless --frames 1 --path forward --view albedo
+  EXPECT "--view albedo shows a G-buffer target: it needs --path deferred" "usage: 16_deferred")
+vkt_chapter_test(bad_input.16_deferred.verify_forward_path 16_deferred EXIT 2
   ARGS --headless --frames 1 --path forward --verify cpu
-  EXPECT "--verify renders both paths itself")
+  EXPECT "--verify renders both paths itself" "usage: 16_deferred")

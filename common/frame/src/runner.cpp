@@ -530,22 +530,28 @@ int guarded(int argc, char** argv, Flags flags, std::span<const OptionSpec> chap
             const std::function<void(const Options&)>& check_options,
             const std::function<int(const Options&)>& body) {
     const std::string program = program_name(argv);
+    const auto usage = [&](const UsageError& e) {
+        std::fprintf(stderr, "%s: %s\n%s\n", program.c_str(), e.what(),
+                     usage_line(program, flags, chapter_options).c_str());
+        return 2;
+    };
     Options options;
     try {
         options = parse_args(std::span<const char* const>(argv + 1, size_t(std::max(argc - 1, 0))),
                              flags, chapter_options);
-        if (check_options) check_options(options);  // before any Vulkan object exists
+        if (options.help) {
+            std::fputs(help_text(program, flags, chapter_options).c_str(), stdout);
+            return 0;
+        }
+        // Flags that contradict each other, before any Vulkan object exists.
+        if (check_options) check_options(options);
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "%s: %s\n%s\n", program.c_str(), e.what(),
-                     usage_line(program, flags, chapter_options).c_str());
-        return 2;
-    }
-    if (options.help) {
-        std::fputs(help_text(program, flags, chapter_options).c_str(), stdout);
-        return 0;
+        return usage(e);
     }
     try {
         return body(options);
+    } catch (const UsageError& e) {  // a chapter may find a bad flag later, too
+        return usage(e);
     } catch (const std::exception& e) {
         std::fflush(stdout);
         std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());

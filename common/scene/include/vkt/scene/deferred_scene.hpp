@@ -1,6 +1,6 @@
 #pragma once
-// Chapter 16's scene: materials, shapes and moving lights, each a function of
-// time so that a frame's picture is reproducible. The shapes are chapter 12's
+// Chapter 16's scene: materials, shapes, moving lights and the camera, each a
+// function of time so that a frame's picture is reproducible. The shapes are chapter 12's
 // (meshes.hpp).
 
 #include "vkt/scene/camera_math.hpp"
@@ -105,6 +105,27 @@ inline std::vector<vkt::PointLight> make_lights(uint32_t count, float t) {
     return lights;
 }
 // [/scene]
+
+// [frame-uniforms]
+// The camera looks at the middle of the floor from above and in front.
+inline const glm::vec3 eye(0.0f, 6.0f, 10.0f);
+
+// The frame's uniform block (blocks.glsl): the camera, the light count, the
+// ambient light, the materials.
+inline FrameUniforms frame_uniforms(float aspect, uint32_t light_count) {
+    FrameUniforms frame{};
+    frame.view = glm::lookAt(eye, glm::vec3(0.0f, 0.3f, 0.0f), glm::vec3(0, 1, 0));
+    frame.proj = vkt::vulkan_perspective(glm::radians(45.0f), aspect, 0.1f, 100.0f);
+    frame.inverse_view_proj = glm::inverse(frame.proj * frame.view);
+    frame.camera_position = eye;
+    frame.light_count = light_count;
+    frame.ambient = glm::vec3(0.03f);
+    frame.depth_view_far = 20.0f;
+    const std::vector<Material> materials = make_materials();
+    std::copy(materials.begin(), materials.end(), frame.materials);
+    return frame;
+}
+// [/frame-uniforms]
 
 inline ObjectPush object_push(const Object& object) {
     const glm::mat3 normals = vkt::normal_matrix(object.model);
