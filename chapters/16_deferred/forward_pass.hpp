@@ -5,6 +5,7 @@
 
 #include "vkt/resources/depth.hpp"
 #include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/rendering.hpp"
 #include "vkt/resources/shader.hpp"
 #include "vkt/scene/gbuffer_pass.hpp"
 
@@ -46,31 +47,8 @@ public:
                 VkImageView target, std::span<const vkt::deferred::Object> objects,
                 bool verify = false) const {
         vkt::begin_depth_frame(cmd, depth_.image);
-        const VkRenderingAttachmentInfo colour{
-            .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-            .imageView = target,
-            .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-            .clearValue = {.color = {{0.02f, 0.02f, 0.04f, 1.0f}}},  // lighting.frag's background
-        };
-        const VkRenderingAttachmentInfo depth{
-            .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-            .imageView = depth_.view,
-            .imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-            .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-            .storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE,
-            .clearValue = {.depthStencil = {1.0f, 0}},
-        };
-        const VkRenderingInfo rendering{
-            .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-            .renderArea = {{0, 0}, extent},
-            .layerCount = 1,
-            .colorAttachmentCount = 1,
-            .pColorAttachments = &colour,
-            .pDepthAttachment = &depth,
-        };
-        vkCmdBeginRendering(cmd, &rendering);
+        // Cleared to lighting.frag's background; depth as in chapter 08.
+        vkt::begin_rendering(cmd, target, extent, {{0.02f, 0.02f, 0.04f, 1.0f}}, depth_.view);
         vkt::set_viewport_and_scissor(cmd, extent);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                           verify ? verify_pipeline_ : pipeline_);
