@@ -64,7 +64,10 @@ NEAR_MARKER_RE = re.compile(r"^//\s*\[\s*/?\s*[A-Za-z0-9_-]+\s*\]\s*$")
 INCLUDE_RE = re.compile(r"^\s*\{\{#include\s+([^\s:{}]+):([A-Za-z0-9_-]+)\s*\}\}\s*$")
 DIRECTIVE_RE = re.compile(r"\{\{#")
 FENCE_RE = re.compile(r"^(\s*)(`{3,}|~{3,})\s*([^`\s]*)")
-PAGE_RE = re.compile(r"^(index|\d\d_[a-z0-9_]+|appendix_[a-z0-9_]+)\.md$")
+# The book has three parts after its index: the chapters (NN_name.md), the
+# appendices (appendix_name.md) and the performance part (performance.md, its
+# front page, then perf_NN_name.md per measured chapter and perf_name.md).
+PAGE_RE = re.compile(r"^(index|performance|\d\d_[a-z0-9_]+|appendix_[a-z0-9_]+|perf_[a-z0-9_]+)\.md$")
 IMAGE_SUFFIXES = (".png", ".jpg", ".jpeg", ".gif", ".svg", ".webp")
 
 
@@ -202,8 +205,22 @@ def page_order(names: list[str]) -> list[str]:
             return (0, 0, name)
         if name.startswith("appendix_"):
             return (2, 0, name)
+        if name == "performance.md":
+            return (3, 0, name)
+        if name.startswith("perf_"):
+            number = name[5:7]
+            return (3, int(number) if number.isdigit() else 100, name)
         return (1, int(name[:2]), name)
     return sorted(names, key=key)
+
+
+def part_of(name: str) -> str:
+    """The part of the book a page belongs to, as the sidebar labels it."""
+    if name.startswith("appendix_"):
+        return "Appendices"
+    if name == "performance.md" or name.startswith("perf_"):
+        return "Performance"
+    return ""
 
 
 def inside_root(root: Path, target: Path) -> bool:
@@ -438,6 +455,8 @@ code, pre, kbd {
 .sidebar a:hover { background: var(--current); }
 .sidebar a.current { background: var(--current); color: var(--text); font-weight: 600;
   border-left: 3px solid var(--accent); }
+.sidebar li.part { margin: 1rem 0 0.3rem; padding: 0 0.5rem; font-size: 0.78rem; font-weight: 700;
+  letter-spacing: 0.06em; text-transform: uppercase; color: var(--muted); }
 .sidebar ol.sections { margin: 0.15rem 0 0.4rem 0.75rem; font-size: 0.86rem; }
 .sidebar ol.sections a { padding: 0.12rem 0.5rem; color: var(--muted); }
 .content { flex: 1 1 auto; min-width: 0; padding: 1.25rem 2rem 3rem; }
@@ -505,7 +524,11 @@ def pygments_css() -> str:
 
 def sidebar(pages: list[Page], current: Page | None, prefix: str) -> str:
     items = []
+    part = ""
     for page in pages:
+        if part_of(page.md_name) != part:
+            part = part_of(page.md_name)
+            items.append(f'<li class="part">{html.escape(part)}</li>')
         mark = ' class="current" aria-current="page"' if page is current else ""
         item = f'<li><a href="{prefix}{page.html_name}"{mark}>{html.escape(page.title)}</a>'
         if page is current and page.toc:
@@ -598,8 +621,8 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     names = sorted(p.name for p in book.glob("*.md") if p.is_file())
     for name in names:
         if not PAGE_RE.match(name):
-            problems.append(f"book/{name}: a page must be called index.md, NN_name.md or "
-                            "appendix_name.md (lower case)")
+            problems.append(f"book/{name}: a page must be called index.md, NN_name.md, "
+                            "appendix_name.md, performance.md or perf_name.md (lower case)")
     names = [n for n in names if PAGE_RE.match(n)]
     if "index.md" not in names:
         problems.append("book/index.md does not exist")
