@@ -20,6 +20,13 @@ pages or to a heading, a link to a file that does not exist, or an unknown
 code language. A picture that does not exist (yet) is only a warning, shown
 as a placeholder, unless --strict is given.
 
+Every chapter page (NN_name.md) must end with the sections "What you should
+see", "Try it" (at least three exercises, one with a command that checks it)
+and "Recap" (linking into the page), and its prose must hold no lab notes: no
+load average, driver version or commit id. Those belong in the performance
+part (performance.md and perf_*.md), which the sidebar shows as a part of its
+own after the appendices.
+
 Links to repository files (`../chapters/04_triangle/main.cpp`) become pages of
 their own under DIR/src/, with line numbers; each include's caption links to
 the quoted lines there. Pictures are copied into DIR/images/.
@@ -312,6 +319,72 @@ def expand_page(root: Path, book: Path, page: Page, sources: Sources, problems: 
     if not page.title:
         problems.append(f"{where}: the page has no '# ' title heading")
     page.markdown = "\n".join(out) + "\n"
+
+
+# --------------------------------------------------------------------------
+# What a chapter page must be
+# --------------------------------------------------------------------------
+
+# Every chapter page ends the same way, so a reader always knows where to look.
+CHAPTER_ENDING = ("What you should see", "Try it", "Recap")
+# Lab notes belong in the performance part (performance.md, perf_*.md), not in
+# a chapter: machine load, driver versions and commit ids date a page and teach
+# nothing. Program output quoted in a code block may show what it shows.
+LAB_NOTES = (
+    (re.compile(r"load average", re.I), "a load average"),
+    (re.compile(r"\bdriver (?:version )?\d"), "a driver version"),
+    (re.compile(r"\bMesa \d"), "a Mesa version"),
+    (re.compile(r"\b\d{3}\.\d{2,3}\.\d{2}\b"), "a driver version"),
+    (re.compile(r"\b\d\.\d\.\d{3}\b"), "a Vulkan SDK or layer version"),
+    (re.compile(r"(?<![0-9A-Za-z_-])(?=[0-9a-f]*[a-f])(?=[0-9a-f]*[0-9])[0-9a-f]{7,40}(?![0-9A-Za-z_])"),
+     "a commit id"),
+)
+
+
+def check_chapter_page(book: Path, page: Page) -> list[str]:
+    """The ending every chapter page shares, and no lab notes in its prose."""
+    where = f"book/{page.md_name}"
+    problems = []
+    lines = (book / page.md_name).read_text(encoding="utf-8").splitlines()
+    sections: list[tuple[str, int]] = []   # level-2 headings and their lines
+    fence = None
+    for number, line in enumerate(lines, start=1):
+        match = FENCE_RE.match(line)
+        if fence is None and match:
+            fence = match.group(2)
+            continue
+        if fence is not None:
+            if match and match.group(2).startswith(fence) and not match.group(3):
+                fence = None
+            continue
+        if line.startswith("## "):
+            sections.append((line[3:].strip(), number))
+        if line.startswith("    ") or line.startswith("\t"):
+            continue  # an indented code block: quoted program output
+        for pattern, what in LAB_NOTES:
+            found = pattern.search(line)
+            if found:
+                problems.append(f"{where}:{number}: {what} ('{found.group(0)}') belongs in the "
+                                "performance part, not in a chapter page")
+    last = tuple(name for name, _ in sections[-len(CHAPTER_ENDING):])
+    if last != CHAPTER_ENDING:
+        problems.append(f"{where}: a chapter page must end with the sections "
+                        + ", ".join(f"'## {name}'" for name in CHAPTER_ENDING)
+                        + " (its last sections are " + ", ".join(f"'{n}'" for n in last) + ")")
+        return problems
+    start = {name: number for name, number in sections}
+    try_it = lines[start["Try it"]:start["Recap"] - 1]
+    items = [line for line in try_it if line.startswith("- ")]
+    if len(items) < 3:
+        problems.append(f"{where}:{start['Try it']}: 'Try it' has {len(items)} exercise(s); "
+                        "a chapter page gives at least three")
+    if not any("`ctest " in line or "--verify" in line or "`./build/" in line for line in try_it):
+        problems.append(f"{where}:{start['Try it']}: no exercise in 'Try it' gives a command "
+                        "(a ctest line, a --verify run or a ./build/ command) that checks it")
+    if "](#" not in "\n".join(lines[start["Recap"]:]):
+        problems.append(f"{where}:{start['Recap']}: the 'Recap' links nothing on the page; "
+                        "link each call or structure to where the page first uses it")
+    return problems
 
 
 ATTR_RE = re.compile(r'\b(href|src)="([^"]*)"')
@@ -647,6 +720,9 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
         for folder in sorted(chapters.iterdir()):
             if folder.is_dir() and folder.name[:2].isdigit() and f"{folder.name}.md" not in page_names_md:
                 problems.append(f"chapters/{folder.name} has no page book/{folder.name}.md")
+    for page in pages:
+        if page.md_name[:2].isdigit():
+            problems.extend(check_chapter_page(book, page))
     for page in pages:
         golden = f"tests/golden/{page.md_name[:-3]}.png"
         if page.md_name[:2].isdigit() and (root / golden).exists() and golden not in page.markdown:
