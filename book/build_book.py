@@ -20,6 +20,13 @@ pages or to a heading, a link to a file that does not exist, or an unknown
 code language. A picture that does not exist (yet) is only a warning, shown
 as a placeholder, unless --strict is given.
 
+Every chapter page (NN_name.md) must end with the sections "What you should
+see", "Try it" (at least three exercises, one with a command that checks it)
+and "Recap" (linking into the page), and its prose must hold no lab notes: no
+load average, driver version or commit id. Those belong in the performance
+part (performance.md and perf_*.md), which the sidebar shows as a part of its
+own after the appendices.
+
 Links to repository files (`../chapters/04_triangle/main.cpp`) become pages of
 their own under DIR/src/, with line numbers; each include's caption links to
 the quoted lines there. Pictures are copied into DIR/images/.
@@ -64,7 +71,10 @@ NEAR_MARKER_RE = re.compile(r"^//\s*\[\s*/?\s*[A-Za-z0-9_-]+\s*\]\s*$")
 INCLUDE_RE = re.compile(r"^\s*\{\{#include\s+([^\s:{}]+):([A-Za-z0-9_-]+)\s*\}\}\s*$")
 DIRECTIVE_RE = re.compile(r"\{\{#")
 FENCE_RE = re.compile(r"^(\s*)(`{3,}|~{3,})\s*([^`\s]*)")
-PAGE_RE = re.compile(r"^(index|\d\d_[a-z0-9_]+|appendix_[a-z0-9_]+)\.md$")
+# The book has three parts after its index: the chapters (NN_name.md), the
+# appendices (appendix_name.md) and the performance part (performance.md, its
+# front page, then perf_NN_name.md per measured chapter and perf_name.md).
+PAGE_RE = re.compile(r"^(index|performance|\d\d_[a-z0-9_]+|appendix_[a-z0-9_]+|perf_[a-z0-9_]+)\.md$")
 IMAGE_SUFFIXES = (".png", ".jpg", ".jpeg", ".gif", ".svg", ".webp")
 
 
@@ -202,8 +212,22 @@ def page_order(names: list[str]) -> list[str]:
             return (0, 0, name)
         if name.startswith("appendix_"):
             return (2, 0, name)
+        if name == "performance.md":
+            return (3, 0, name)
+        if name.startswith("perf_"):
+            number = name[5:7]
+            return (3, int(number) if number.isdigit() else 100, name)
         return (1, int(name[:2]), name)
     return sorted(names, key=key)
+
+
+def part_of(name: str) -> str:
+    """The part of the book a page belongs to, as the sidebar labels it."""
+    if name.startswith("appendix_"):
+        return "Appendices"
+    if name == "performance.md" or name.startswith("perf_"):
+        return "Performance"
+    return ""
 
 
 def inside_root(root: Path, target: Path) -> bool:
@@ -295,6 +319,72 @@ def expand_page(root: Path, book: Path, page: Page, sources: Sources, problems: 
     if not page.title:
         problems.append(f"{where}: the page has no '# ' title heading")
     page.markdown = "\n".join(out) + "\n"
+
+
+# --------------------------------------------------------------------------
+# What a chapter page must be
+# --------------------------------------------------------------------------
+
+# Every chapter page ends the same way, so a reader always knows where to look.
+CHAPTER_ENDING = ("What you should see", "Try it", "Recap")
+# Lab notes belong in the performance part (performance.md, perf_*.md), not in
+# a chapter: machine load, driver versions and commit ids date a page and teach
+# nothing. Program output quoted in a code block may show what it shows.
+LAB_NOTES = (
+    (re.compile(r"load average", re.I), "a load average"),
+    (re.compile(r"\bdriver (?:version )?\d"), "a driver version"),
+    (re.compile(r"\bMesa \d"), "a Mesa version"),
+    (re.compile(r"\b\d{3}\.\d{2,3}\.\d{2}\b"), "a driver version"),
+    (re.compile(r"\b\d\.\d\.\d{3}\b"), "a Vulkan SDK or layer version"),
+    (re.compile(r"(?<![0-9A-Za-z_-])(?=[0-9a-f]*[a-f])(?=[0-9a-f]*[0-9])[0-9a-f]{7,40}(?![0-9A-Za-z_])"),
+     "a commit id"),
+)
+
+
+def check_chapter_page(book: Path, page: Page) -> list[str]:
+    """The ending every chapter page shares, and no lab notes in its prose."""
+    where = f"book/{page.md_name}"
+    problems = []
+    lines = (book / page.md_name).read_text(encoding="utf-8").splitlines()
+    sections: list[tuple[str, int]] = []   # level-2 headings and their lines
+    fence = None
+    for number, line in enumerate(lines, start=1):
+        match = FENCE_RE.match(line)
+        if fence is None and match:
+            fence = match.group(2)
+            continue
+        if fence is not None:
+            if match and match.group(2).startswith(fence) and not match.group(3):
+                fence = None
+            continue
+        if line.startswith("## "):
+            sections.append((line[3:].strip(), number))
+        if line.startswith("    ") or line.startswith("\t"):
+            continue  # an indented code block: quoted program output
+        for pattern, what in LAB_NOTES:
+            found = pattern.search(line)
+            if found:
+                problems.append(f"{where}:{number}: {what} ('{found.group(0)}') belongs in the "
+                                "performance part, not in a chapter page")
+    last = tuple(name for name, _ in sections[-len(CHAPTER_ENDING):])
+    if last != CHAPTER_ENDING:
+        problems.append(f"{where}: a chapter page must end with the sections "
+                        + ", ".join(f"'## {name}'" for name in CHAPTER_ENDING)
+                        + " (its last sections are " + ", ".join(f"'{n}'" for n in last) + ")")
+        return problems
+    start = {name: number for name, number in sections}
+    try_it = lines[start["Try it"]:start["Recap"] - 1]
+    items = [line for line in try_it if line.startswith("- ")]
+    if len(items) < 3:
+        problems.append(f"{where}:{start['Try it']}: 'Try it' has {len(items)} exercise(s); "
+                        "a chapter page gives at least three")
+    if not any("`ctest " in line or "--verify" in line or "`./build/" in line for line in try_it):
+        problems.append(f"{where}:{start['Try it']}: no exercise in 'Try it' gives a command "
+                        "(a ctest line, a --verify run or a ./build/ command) that checks it")
+    if "](#" not in "\n".join(lines[start["Recap"]:]):
+        problems.append(f"{where}:{start['Recap']}: the 'Recap' links nothing on the page; "
+                        "link each call or structure to where the page first uses it")
+    return problems
 
 
 ATTR_RE = re.compile(r'\b(href|src)="([^"]*)"')
@@ -438,6 +528,8 @@ code, pre, kbd {
 .sidebar a:hover { background: var(--current); }
 .sidebar a.current { background: var(--current); color: var(--text); font-weight: 600;
   border-left: 3px solid var(--accent); }
+.sidebar li.part { margin: 1rem 0 0.3rem; padding: 0 0.5rem; font-size: 0.78rem; font-weight: 700;
+  letter-spacing: 0.06em; text-transform: uppercase; color: var(--muted); }
 .sidebar ol.sections { margin: 0.15rem 0 0.4rem 0.75rem; font-size: 0.86rem; }
 .sidebar ol.sections a { padding: 0.12rem 0.5rem; color: var(--muted); }
 .content { flex: 1 1 auto; min-width: 0; padding: 1.25rem 2rem 3rem; }
@@ -505,7 +597,11 @@ def pygments_css() -> str:
 
 def sidebar(pages: list[Page], current: Page | None, prefix: str) -> str:
     items = []
+    part = ""
     for page in pages:
+        if part_of(page.md_name) != part:
+            part = part_of(page.md_name)
+            items.append(f'<li class="part">{html.escape(part)}</li>')
         mark = ' class="current" aria-current="page"' if page is current else ""
         item = f'<li><a href="{prefix}{page.html_name}"{mark}>{html.escape(page.title)}</a>'
         if page is current and page.toc:
@@ -598,8 +694,8 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     names = sorted(p.name for p in book.glob("*.md") if p.is_file())
     for name in names:
         if not PAGE_RE.match(name):
-            problems.append(f"book/{name}: a page must be called index.md, NN_name.md or "
-                            "appendix_name.md (lower case)")
+            problems.append(f"book/{name}: a page must be called index.md, NN_name.md, "
+                            "appendix_name.md, performance.md or perf_name.md (lower case)")
     names = [n for n in names if PAGE_RE.match(n)]
     if "index.md" not in names:
         problems.append("book/index.md does not exist")
@@ -624,6 +720,9 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
         for folder in sorted(chapters.iterdir()):
             if folder.is_dir() and folder.name[:2].isdigit() and f"{folder.name}.md" not in page_names_md:
                 problems.append(f"chapters/{folder.name} has no page book/{folder.name}.md")
+    for page in pages:
+        if page.md_name[:2].isdigit():
+            problems.extend(check_chapter_page(book, page))
     for page in pages:
         golden = f"tests/golden/{page.md_name[:-3]}.png"
         if page.md_name[:2].isdigit() and (root / golden).exists() and golden not in page.markdown:

@@ -6,14 +6,15 @@
 //                     [--isolate DIR] -- ARGS...
 //   vkt_chapter_check --png FILE [--pixel X,Y,R,G,B[,TOL]]...
 //
-// It runs PATH ARGS (with --screenshot DIR/NAME.png added when --golden is
-// given), keeps its stdout and stderr in DIR/NAME.stdout / .stderr, and fails
-// unless: the exit status is N (default 0); with exit 0 and --validation in
-// ARGS, stderr says "validation: 0 warnings, 0 errors"; every REGEX matches
-// stdout or stderr; and the screenshot is within vkt::Tolerance of the golden
-// image, and every --pixel of the screenshot has that colour (within TOL,
-// default 1). The --png form checks the pixels of an existing picture. A
-// failed comparison leaves NAME.png (rendered) and NAME.diff.png.
+// It runs PATH ARGS (with --screenshot DIR/NAME.png added when --golden or a
+// --pixel is given and ARGS names no screenshot of its own), keeps its stdout
+// and stderr in DIR/NAME.stdout / .stderr, and fails unless: the exit status
+// is N (default 0); with exit 0 and --validation in ARGS, stderr says
+// "validation: 0 warnings, 0 errors"; every REGEX matches stdout or stderr;
+// every --pixel of the screenshot has that colour (within TOL, default 1);
+// and the screenshot is within vkt::Tolerance of the golden image. The --png
+// form checks the pixels of an existing picture. A failed comparison leaves
+// NAME.png (rendered) and NAME.diff.png.
 // With VKT_BLESS=1 in the environment the screenshot replaces the golden image.
 // --isolate DIR runs a copy of the executable from DIR/bin, so that it finds
 // DIR/shaders (prepared by the test: empty, or holding corrupt SPIR-V) instead
@@ -156,7 +157,15 @@ int main(int argc, char** argv) {
     fs::remove(diff);
     std::vector<std::string> args{exe.string()};
     args.insert(args.end(), chapter_args.begin(), chapter_args.end());
-    if (!golden.empty()) {
+    // Hand-worked pixels need a picture even without a golden image to
+    // compare it with; a test that names its own screenshot checks it later
+    // with --png.
+    const bool own_screenshot =
+        std::find(chapter_args.begin(), chapter_args.end(), "--screenshot") != chapter_args.end();
+    if (!golden.empty() && own_screenshot)
+        return fail("--golden takes the checker's own screenshot: leave --screenshot out of ARGS");
+    const bool picture = !golden.empty() || (!pixels.empty() && !own_screenshot);
+    if (picture) {
         args.push_back("--screenshot");
         args.push_back(screenshot.string());
     }
@@ -186,6 +195,14 @@ int main(int argc, char** argv) {
             !std::regex_search(err, std::regex(pattern)))
             return fail("no output matches /" + pattern + "/");
 
+    if (!pixels.empty() && own_screenshot)
+        return fail(
+            "--pixel needs the checker's own screenshot; check a picture the chapter "
+            "wrote itself with --png FILE");
+    if (picture && golden.empty()) {
+        if (!fs::exists(screenshot)) return fail("the chapter wrote no screenshot");
+        if (int failed = check_pixels(vkt::read_png(screenshot), pixels)) return failed;
+    }
     if (!golden.empty()) {
         if (!fs::exists(screenshot)) return fail("the chapter wrote no screenshot");
         // The hand-worked pixels come first: not even blessing may contradict them.

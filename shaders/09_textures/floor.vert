@@ -17,8 +17,8 @@ const vec2 kCorners[6] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1),
 
 void main() {
     vec2 xz = kCorners[gl_VertexIndex] * kHalfSize;
-    // Texture coordinates beyond 0..1: the sampler's REPEAT addressing tiles
-    // the texture 100 times across the floor.
+    // Texture coordinates beyond 0..1: uv runs from -100 to 100, and the
+    // sampler's REPEAT addressing tiles the texture 200 times across the floor.
     uv = (xz + vec2(0.0, push.scroll)) / kTile;
     gl_Position = push.view_projection * vec4(xz.x, 0.0, xz.y, 1.0);
 }
