@@ -475,7 +475,9 @@ def search_sections(page: Page) -> list[tuple[str, str, str]]:
     heading_re = re.compile(r'<h([1-4])\b[^>]*\bid="([^"]*)"[^>]*>(.*?)</h\1>', re.S)
 
     def plain(fragment: str) -> str:
-        return re.sub(r"\s+", " ", html.unescape(re.sub(r"<[^>]+>", " ", fragment))).strip()
+        # Block tags part words; inline ones (a highlighter's <span>s) do not.
+        spaced = re.sub(r"</?(?:p|br|li|ul|ol|div|h\d|pre|table|tr|td|th|blockquote)\b[^>]*>", " ", fragment)
+        return re.sub(r"\s+", " ", html.unescape(re.sub(r"<[^>]+>", "", spaced))).strip()
     sections = []
     matches = list(heading_re.finditer(page.body))
     if not matches or matches[0].start() > 0:

@@ -9,9 +9,9 @@ signalling ready_to_present[image] and done[slot]) and presents.
 
 from svg import BLUE, BLUE_FILL, GREEN, GREEN_FILL, GREY, GREY_FILL, MUTED, PURPLE, RED, Svg, text_width
 
-W, H = 1000, 490
+W, H = 1000, 496
 LEFT, RIGHT = 112, 986           # the lanes' time axis, in pixels
-CPU_Y, GPU_Y, PE_Y = 78, 204, 330  # the top of each lane
+CPU_Y, GPU_Y, PE_Y = 84, 210, 336  # the top of each lane
 LANE_H = 40
 # Durations in pixels: the GPU (a frame in 310) is slower than the CPU (226),
 # so from frame 2 on the CPU waits for the fence of the frame two back.
@@ -29,6 +29,8 @@ def main() -> None:
             "image_acquired before the copy into the swapchain image and signals ready_to_present "
             "for presentation and done for the CPU.")
 
+    s.text(10, 26, "The runner's loop over time: two frames in flight, three swapchain images", size=15,
+           bold=True)
     for y, name, sub in ((CPU_Y, "CPU", "the runner"), (GPU_Y, "GPU queue", "submissions"),
                          (PE_Y, "Presentation", "engine")):
         s.rect(LEFT - 6, y - 8, RIGHT - LEFT + 10, LANE_H + 16, fill="#fafbfc", stroke="#e4e8ec", rx=6)
@@ -80,7 +82,8 @@ def main() -> None:
         w0, w1 = fr["wait"]
         if w1 - w0 > 1:
             s.rect(w0, CPU_Y + 8, w1 - w0, LANE_H - 16, fill="#ffffff", stroke=RED, rx=3, dash="3 2")
-            s.text((w0 + w1) / 2, CPU_Y + LANE_H / 2 + 4, "wait", size=11, anchor="middle", fill=RED)
+            if w1 - w0 > 36:
+                s.text((w0 + w1) / 2, CPU_Y + LANE_H / 2 + 4, "wait", size=11, anchor="middle", fill=RED)
         block(fr["acquire"], CPU_Y, "acquire", slot, size=11)
         block(fr["record"], CPU_Y, f"record {fr['f']}", slot)
         block(fr["submit"], CPU_Y, "submit", slot, size=11)
@@ -146,7 +149,6 @@ def main() -> None:
     s.text(LEFT + 36, ly, "fence: the GPU tells the CPU", size=12)
     s.rect(LEFT + 250, ly - 12, 30, 14, fill="#ffffff", stroke=RED, rx=3, dash="3 2")
     s.text(LEFT + 286, ly, "vkWaitForFences blocks (here the GPU is the slower)", size=12)
-    s.text(RIGHT, ly, "three swapchain images", size=12, anchor="end", fill=MUTED)
     s.write()
 
 
