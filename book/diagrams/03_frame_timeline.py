@@ -29,7 +29,7 @@ def main() -> None:
             "image_acquired before the copy into the swapchain image and signals ready_to_present "
             "for presentation and done for the CPU.")
 
-    s.text(10, 26, "The runner's loop over time: two frames in flight, three swapchain images", size=15,
+    s.text(10, 26, "The runner's loop over time: two frames in flight (and here three swapchain images)", size=15,
            bold=True)
     for y, name, sub in ((CPU_Y, "CPU", "the runner"), (GPU_Y, "GPU queue", "submissions"),
                          (PE_Y, "Presentation", "engine")):
