@@ -31,18 +31,31 @@ Links to repository files (`../chapters/04_triangle/main.cpp`) become pages of
 their own under DIR/src/, with line numbers; each include's caption links to
 the quoted lines there. Pictures are copied into DIR/images/.
 
-Needs only the standard library, python3-markdown and python3-pygments
-(Debian 12: markdown 3.4, pygments 2.14).
+Diagrams are drawn at build time: a page shows `diagrams/NAME.svg`, and the
+builder makes it from book/diagrams/NAME.py (a script that prints the SVG, with
+book/diagrams/svg.py) or book/diagrams/NAME.dot (Graphviz's dot), into
+DIR/images/NAME.svg. A diagram that fails to draw, or has no text, is an error.
+
+Each page gets the sidebar (sticky on a wide screen, with a search box at its
+top; on a phone a bar at the top of the page links to it), and the builder
+writes search-index.js, the text of every page by section, for the search in
+book/theme/search.js. The stylesheet is book/theme/style.css.
+
+Needs the standard library, python3-markdown and python3-pygments (Debian 12:
+markdown 3.4, pygments 2.14), and Graphviz's dot for the .dot diagrams.
 """
 
 from __future__ import annotations
 
 import argparse
 import html
+import json
 import os
 import re
 import shutil
+import subprocess
 import sys
+import xml.etree.ElementTree as ElementTree
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 
@@ -76,6 +89,12 @@ FENCE_RE = re.compile(r"^(\s*)(`{3,}|~{3,})\s*([^`\s]*)")
 # front page, then perf_NN_name.md per measured chapter and perf_name.md).
 PAGE_RE = re.compile(r"^(index|performance|\d\d_[a-z0-9_]+|appendix_[a-z0-9_]+|perf_[a-z0-9_]+)\.md$")
 IMAGE_SUFFIXES = (".png", ".jpg", ".jpeg", ".gif", ".svg", ".webp")
+# A picture `NAME.svg` that does not exist is drawn from NAME.py or NAME.dot beside it.
+DIAGRAM_SOURCES = (".py", ".dot")
+# The stylesheet and the search script, next to this file.
+THEME = Path(__file__).resolve().parent / "theme"
+# A chapter's list of its sources and how to run it: kept apart from the list before it.
+CHAPTER_FILES_RE = re.compile(r"^- (Sources|Run it):")
 
 
 class BookError(Exception):
@@ -266,6 +285,10 @@ def expand_page(root: Path, book: Path, page: Page, sources: Sources, problems: 
                                 "a fenced code block")
             elif not page.title and line.startswith("# "):
                 page.title = line[2:].strip()
+            elif CHAPTER_FILES_RE.match(line) and len(out) >= 2 and out[-1] == "" and out[-2].strip():
+                # Markdown would continue the list above (the chapter's new
+                # ideas) across the blank line; an HTML comment ends it.
+                out.extend(["<!-- the chapter's files -->", ""])
             out.append(line)
             continue
 
@@ -395,6 +418,8 @@ class Assets:
     images: dict[str, Path] = field(default_factory=dict)        # output name -> source file
     missing_images: dict[str, str] = field(default_factory=dict)  # output name -> rel path
     source_pages: set[str] = field(default_factory=set)           # rel paths to render
+    diagrams: dict[str, Path] = field(default_factory=dict)       # output name -> .py or .dot
+    diagram_svgs: dict[str, str] = field(default_factory=dict)    # output name -> the SVG drawn
 
 
 def rewrite_links(root: Path, book: Path, page: Page, page_names: set[str], assets: Assets,
@@ -434,9 +459,15 @@ def rewrite_links(root: Path, book: Path, page: Page, page_names: set[str], asse
             os.path.normpath((Path("book") / path_text).as_posix())
         if path_text.lower().endswith(IMAGE_SUFFIXES):
             name = PurePosixPath(rel).name
-            if target.is_file():
+            diagram = diagram_source(target)
+            if diagram is not None:
+                known = assets.diagrams.get(name)
+                if name in assets.images or (known is not None and known != diagram):
+                    problems.append(f"{at(path_text)}: two different images are called {name}")
+                assets.diagrams[name] = diagram
+            elif target.is_file():
                 known = assets.images.get(name)
-                if known is not None and known.resolve() != target.resolve():
+                if name in assets.diagrams or (known is not None and known.resolve() != target.resolve()):
                     problems.append(f"{at(path_text)}: two different images are called {name}")
                 assets.images[name] = target
             else:
@@ -455,6 +486,110 @@ def rewrite_links(root: Path, book: Path, page: Page, page_names: set[str], asse
         return f'{attr}="{html.escape(new)}"'
 
     page.body = ATTR_RE.sub(fix, page.body)
+
+
+def diagram_source(target: Path) -> Path | None:
+    """NAME.py or NAME.dot beside a picture NAME.svg that does not exist, else None."""
+    if target.suffix.lower() != ".svg" or target.exists():
+        return None
+    for suffix in DIAGRAM_SOURCES:
+        source = target.with_suffix(suffix)
+        if source.is_file():
+            return source
+    return None
+
+
+def render_diagram(root: Path, source: Path) -> str:
+    """Draws one diagram and checks that it is an SVG with text; BookError if not."""
+    rel = source.resolve().relative_to(root.resolve()).as_posix()
+    if source.suffix == ".py":
+        command = [sys.executable, source.name]
+    else:
+        dot = shutil.which("dot")
+        if dot is None:
+            raise BookError(f"{rel}: drawing it needs Graphviz's dot (on Debian: apt install graphviz)")
+        command = [dot, "-Tsvg", source.name]
+    try:
+        run = subprocess.run(command, cwd=source.parent, capture_output=True, text=True, timeout=120,
+                             env=dict(os.environ, PYTHONDONTWRITEBYTECODE="1"))
+    except (OSError, subprocess.TimeoutExpired) as error:
+        raise BookError(f"{rel}: cannot draw the diagram: {error}") from None
+    if run.returncode != 0:
+        last = (run.stderr.strip().splitlines() or ["no message"])[-1]
+        raise BookError(f"{rel}: drawing the diagram failed (exit status {run.returncode}): {last}")
+    svg = run.stdout
+    if source.suffix == ".dot":
+        # Graphviz sizes its drawing in points; in a browser 1 pt is 4/3 px, which
+        # would show the text a third larger than the .dot file asks for.
+        svg = re.sub(r'<svg width="([0-9.]+)pt" height="([0-9.]+)pt"', r'<svg width="\1" height="\2"', svg,
+                     count=1)
+        svg = re.sub(r"<!-- Generated by graphviz[^>]*-->\n?", "", svg)
+    try:
+        tree = ElementTree.fromstring(svg)
+    except ElementTree.ParseError as error:
+        raise BookError(f"{rel}: the diagram is not well-formed SVG: {error}") from None
+    if not tree.tag.endswith("svg"):
+        raise BookError(f"{rel}: the diagram's output is not an SVG")
+    if not any(el.tag.endswith("text") and "".join(el.itertext()).strip() for el in tree.iter()):
+        raise BookError(f"{rel}: the diagram has no text (labels must be SVG text, not paths)")
+    return svg
+
+
+INLINE_CODE_RE = re.compile(r"<code>(.*?)</code>", re.S)
+PRE_RE = re.compile(r"<pre\b.*?</pre>", re.S)
+
+
+def polish(body: str) -> str:
+    """Small fixes to a page's HTML: flags that do not break, the chapter's list of
+    files marked as such, diagrams and charts that open full size."""
+    def flags(match: re.Match) -> str:
+        # "--size 640x480": a line may break between words, never inside a flag.
+        words = re.split(r"( +)", match.group(1))
+        return "<code>" + "".join(
+            f'<span class="flag">{w}</span>' if w.startswith("-") and len(w) <= 48 else w
+            for w in words) + "</code>"
+    parts, at = [], 0
+    for pre in PRE_RE.finditer(body):
+        parts.append(INLINE_CODE_RE.sub(flags, body[at:pre.start()]))
+        parts.append(pre.group(0))
+        at = pre.end()
+    parts.append(INLINE_CODE_RE.sub(flags, body[at:]))
+    body = "".join(parts)
+    body = re.sub(r"<ul>(\s*<li>(?:Sources|Run it):)", r'<ul class="chapter-files">\1', body)
+    body = re.sub(r'(<img\b[^>]*\bsrc="(images/[^"]+\.svg)"[^>]*>)', r'<a class="figure" href="\2">\1</a>', body)
+    return body
+
+
+def search_sections(page: Page) -> list[tuple[str, str, str]]:
+    """The page cut at its headings: (anchor, heading, plain text) for each part."""
+    heading_re = re.compile(r'<h([1-4])\b[^>]*\bid="([^"]*)"[^>]*>(.*?)</h\1>', re.S)
+
+    def plain(fragment: str) -> str:
+        # Block tags part words; inline ones (a highlighter's <span>s) do not.
+        spaced = re.sub(r"</?(?:p|br|li|ul|ol|div|h\d|pre|table|tr|td|th|blockquote)\b[^>]*>", " ", fragment)
+        return re.sub(r"\s+", " ", html.unescape(re.sub(r"<[^>]+>", "", spaced))).strip()
+    sections = []
+    matches = list(heading_re.finditer(page.body))
+    if not matches or matches[0].start() > 0:
+        end = matches[0].start() if matches else len(page.body)
+        sections.append(("", page.title, plain(page.body[:end])))
+    for i, match in enumerate(matches):
+        end = matches[i + 1].start() if i + 1 < len(matches) else len(page.body)
+        sections.append((html.unescape(match.group(2)), plain(match.group(3)), plain(page.body[match.end():end])))
+    return [section for section in sections if section[2] or section[1]]
+
+
+def search_index(pages: list[Page]) -> str:
+    def kind(page: Page) -> str:
+        if page.md_name == "index.md":
+            return "index"
+        return "chapter" if page.md_name[:2].isdigit() else "appendix"
+    data = {"pages": [[p.html_name, p.title, kind(p)] for p in pages], "sections": []}
+    for number, page in enumerate(pages):
+        for anchor, heading, text in search_sections(page):
+            data["sections"].append([number, anchor, heading, text])
+    return ("// The book's search index, written by book/build_book.py; read by search.js.\n"
+            "window.BOOK_SEARCH_INDEX = " + json.dumps(data, ensure_ascii=False, separators=(",", ":")) + ";\n")
 
 
 def convert(page: Page) -> None:
@@ -487,101 +622,6 @@ def missing_image_placeholders(body: str, missing: dict[str, str]) -> str:
 # --------------------------------------------------------------------------
 # HTML
 # --------------------------------------------------------------------------
-
-STYLE_CSS = """\
-/* The book's stylesheet, written by book/build_book.py. */
-:root {
-  --text: #1f2328; --muted: #59636e; --background: #ffffff; --panel: #f6f8fa;
-  --border: #d1d9e0; --link: #0b5cad; --accent: #8a3ffc; --current: #e8e0fb;
-  --code-background: #f6f8fa; --target: #fff3b0;
-}
-@media (prefers-color-scheme: dark) {
-  :root {
-    --text: #e6e6e6; --muted: #a0a7b0; --background: #16181c; --panel: #1d2026;
-    --border: #343a43; --link: #7ab7ff; --accent: #b794ff; --current: #2f2a45;
-    --code-background: #1d2026; --target: #4a4215;
-  }
-}
-* { box-sizing: border-box; }
-html { -webkit-text-size-adjust: 100%; text-size-adjust: 100%; }
-body {
-  margin: 0; color: var(--text); background: var(--background);
-  font-family: system-ui, -apple-system, "Segoe UI", Roboto, "Noto Sans", "DejaVu Sans", sans-serif;
-  font-size: 17px; line-height: 1.6;
-}
-a { color: var(--link); }
-a:hover { text-decoration-thickness: 2px; }
-code, pre, kbd {
-  font-family: ui-monospace, "SFMono-Regular", "DejaVu Sans Mono", Menlo, Consolas, monospace;
-  font-size: 0.88em;
-}
-.layout { display: flex; min-height: 100vh; }
-.sidebar {
-  flex: 0 0 17rem; background: var(--panel); border-right: 1px solid var(--border);
-  padding: 1.25rem 1rem 2rem; font-size: 0.92rem; line-height: 1.45;
-}
-.sidebar .book-title { font-weight: 700; font-size: 1.05rem; margin: 0 0 1rem; }
-.sidebar .book-title a { color: var(--text); text-decoration: none; }
-.sidebar ol { list-style: none; margin: 0; padding: 0; }
-.sidebar li { margin: 0.1rem 0; }
-.sidebar a { display: block; padding: 0.25rem 0.5rem; border-radius: 6px; text-decoration: none; }
-.sidebar a:hover { background: var(--current); }
-.sidebar a.current { background: var(--current); color: var(--text); font-weight: 600;
-  border-left: 3px solid var(--accent); }
-.sidebar li.part { margin: 1rem 0 0.3rem; padding: 0 0.5rem; font-size: 0.78rem; font-weight: 700;
-  letter-spacing: 0.06em; text-transform: uppercase; color: var(--muted); }
-.sidebar ol.sections { margin: 0.15rem 0 0.4rem 0.75rem; font-size: 0.86rem; }
-.sidebar ol.sections a { padding: 0.12rem 0.5rem; color: var(--muted); }
-.content { flex: 1 1 auto; min-width: 0; padding: 1.25rem 2rem 3rem; }
-article, .pager { max-width: 50rem; margin: 0 auto; }
-.pager { display: flex; justify-content: space-between; gap: 1rem; font-size: 0.95rem; }
-.pager a { text-decoration: none; }
-.pager .next { margin-left: auto; text-align: right; }
-.pager.bottom { border-top: 1px solid var(--border); margin-top: 2.5rem; padding-top: 1rem; }
-h1, h2, h3, h4 { line-height: 1.25; margin: 1.8em 0 0.6em; }
-h1 { font-size: 2rem; margin-top: 0.8em; }
-h2 { font-size: 1.45rem; border-bottom: 1px solid var(--border); padding-bottom: 0.25em; }
-h3 { font-size: 1.15rem; }
-p, ul, ol, table, pre, blockquote { margin: 0 0 1em; }
-img { max-width: 100%; height: auto; }
-article img { display: block; margin: 0.5rem auto 1.25rem; border: 1px solid var(--border);
-  image-rendering: auto; }
-.missing-image { display: block; padding: 2rem 1rem; margin: 0.5rem 0 1.25rem; text-align: center;
-  border: 2px dashed var(--border); color: var(--muted); }
-:not(pre) > code { background: var(--code-background); padding: 0.05em 0.25em; border-radius: 4px;
-  overflow-wrap: anywhere; }
-pre { overflow-x: auto; padding: 0.85rem 1rem; background: var(--code-background);
-  border: 1px solid var(--border); border-radius: 8px; line-height: 1.45; tab-size: 4; }
-.highlight { margin: 0 0 0.3rem; }
-.highlight pre { margin: 0; }
-p.source { margin: 0 0 1.4rem; font-size: 0.82rem; text-align: right; }
-p.source a { color: var(--muted); }
-blockquote { margin-left: 0; padding: 0.4rem 1rem; border-left: 4px solid var(--accent);
-  background: var(--panel); }
-blockquote p:last-child { margin-bottom: 0; }
-table { border-collapse: collapse; display: block; overflow-x: auto; max-width: 100%; }
-th, td { border: 1px solid var(--border); padding: 0.35rem 0.7rem; text-align: left; vertical-align: top; }
-th { background: var(--panel); }
-hr { border: 0; border-top: 1px solid var(--border); margin: 2rem 0; }
-/* Source pages: the whole file with line numbers; a linked line is highlighted. */
-.source-file .highlight pre { padding-left: 0.5rem; }
-.source-file .linenos { color: var(--muted); user-select: none; padding-right: 0.8rem; }
-.source-file span[id^="L-"]:target { background: var(--target); }
-.source-file .quoted-in { color: var(--muted); font-size: 0.92rem; }
-@media (max-width: 52rem) {
-  body { font-size: 16px; }
-  .layout { flex-direction: column; }
-  .sidebar { order: 2; border-right: 0; border-top: 1px solid var(--border); flex: none; }
-  .content { order: 1; padding: 1rem 1rem 2rem; }
-  h1 { font-size: 1.6rem; }
-  pre { padding: 0.7rem; font-size: 0.8rem; }
-}
-@media print {
-  .sidebar, .pager { display: none; }
-  .content { padding: 0; }
-}
-"""
-
 
 def pygments_css() -> str:
     light = HtmlFormatter(style="default").get_style_defs(".highlight")
@@ -635,11 +675,22 @@ def document(title: str, book_title: str, prefix: str, side: str, content: str) 
 <title>{html.escape(full_title)}</title>
 <link rel="stylesheet" href="{prefix}style.css">
 <link rel="stylesheet" href="{prefix}pygments.css">
+<script src="{prefix}search.js" defer></script>
 </head>
 <body>
+<header class="topbar">
+<a class="book-title" href="{prefix}index.html">{html.escape(book_title)}</a>
+<a class="jump" href="#contents">Contents and search</a>
+</header>
 <div class="layout">
-<nav class="sidebar" aria-label="Pages of the book">
+<nav class="sidebar" id="contents" aria-label="Pages of the book">
 <p class="book-title"><a href="{prefix}index.html">{html.escape(book_title)}</a></p>
+<form class="search" role="search" action="{prefix}index.html">
+<input type="search" name="q" placeholder="Search the book (press /)" aria-label="Search the book"
+ autocomplete="off" spellcheck="false">
+<p class="search-status" aria-live="polite"></p>
+<ol class="search-results"></ol>
+</form>
 {side}
 </nav>
 <div class="content">
@@ -745,13 +796,19 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     for page in pages:
         convert(page)
         rewrite_links(root, book, page, page_names, assets, problems, warnings, anchors)
-        page.body = missing_image_placeholders(page.body, assets.missing_images)
+        page.body = polish(missing_image_placeholders(page.body, assets.missing_images))
     by_name = {p.md_name: p for p in pages}
     for where, target, anchor in anchors:
         if anchor not in by_name[target].ids:
             problems.append(f"{where}: link to {target}#{anchor}, which has no such heading")
 
     assets.source_pages |= {inc.rel for p in pages for inc in p.includes}
+
+    for name, source in sorted(assets.diagrams.items()):
+        try:
+            assets.diagram_svgs[name] = render_diagram(root, source)
+        except BookError as error:
+            problems.append(str(error))
 
     if strict:
         problems += warnings
@@ -762,16 +819,21 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
 
     written = 0
     out.mkdir(parents=True, exist_ok=True)
-    (out / "style.css").write_text(STYLE_CSS, encoding="utf-8")
+    shutil.copyfile(THEME / "style.css", out / "style.css")
+    shutil.copyfile(THEME / "search.js", out / "search.js")
     (out / "pygments.css").write_text(pygments_css(), encoding="utf-8")
-    written += 2
+    (out / "search-index.js").write_text(search_index(pages), encoding="utf-8")
+    written += 4
     for i, page in enumerate(pages):
         (out / page.html_name).write_text(render_page(pages, i), encoding="utf-8")
         written += 1
-    if assets.images:
+    if assets.images or assets.diagram_svgs:
         (out / "images").mkdir(exist_ok=True)
         for name, path in sorted(assets.images.items()):
             shutil.copyfile(path, out / "images" / name)
+            written += 1
+        for name, svg in sorted(assets.diagram_svgs.items()):
+            (out / "images" / name).write_text(svg, encoding="utf-8")
             written += 1
     for rel in sorted(assets.source_pages):
         target = out / source_page_name(rel)

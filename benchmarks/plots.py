@@ -1,0 +1,303 @@
+#!/usr/bin/python3
+"""The book's charts, drawn from the raw results in benchmarks/results/ as SVG.
+
+    /usr/bin/python3 benchmarks/plots.py                 # every chart, into book/images/
+    /usr/bin/python3 benchmarks/plots.py --out DIR       # somewhere else
+    /usr/bin/python3 benchmarks/plots.py --list          # which chart comes from which files
+
+Each chart has labelled axes with their units, logarithmic axes where the data
+spans decades, a legend, the device and the date of the measurement in its
+title, and the frame budgets of 60 and 144 frames a second drawn and labelled
+where they fall inside it. Text stays text in the SVG (searchable, and checked
+by tests/book_browser.py through the ids x-axis-label, y-axis-label, legend
+and title). Needs Debian's python3-matplotlib; run it with /usr/bin/python3.
+
+The charts (CHARTS below):
+  14_physics_bench.svg                   results/physics.jsonl (physics_bench)
+  17_tiled_deferred_bench_lavapipe.svg   results/17_tiled_deferred-lavapipe.md (bench-lights.sh --tiled)
+  17_tiled_deferred_bench_h100.svg       results/17_tiled_deferred-h100.md
+  20_ndim_compute_bench.svg              results/2026-11-23-idle-{18,19,20}_*-lavapipe.txt
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import re
+import statistics
+import subprocess
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+RESULTS = HERE / "results"
+
+# Frame budgets: a frame at 60 and at 144 frames a second.
+BUDGETS = [(1000.0 / 60.0, "60 fps"), (1000.0 / 144.0, "144 fps")]
+# The book's palette (book/diagrams/svg.py): one colour per path or chapter.
+RED, ORANGE, BLUE, CYAN, GREEN, GREY = "#c0362c", "#d9822b", "#1f5fbf", "#1a9bb0", "#1e7b34", "#6e7781"
+
+
+@dataclass
+class Chart:
+    output: str                       # file name in the output folder
+    inputs: list[str]                 # files under benchmarks/results/
+    draw: Callable                    # draw(chart, axes) -> (device, date): fills in the axes
+    options: dict = field(default_factory=dict)
+
+    def paths(self) -> list[Path]:
+        return [RESULTS / name for name in self.inputs]
+
+
+# ----------------------------------------------------------------------------------------------
+# Reading the results
+# ----------------------------------------------------------------------------------------------
+
+def measured_on(path: Path) -> str:
+    """The date of a results file: from its name, else from the commit that added it."""
+    match = re.search(r"\d{4}-\d{2}-\d{2}", path.name)
+    if match:
+        return match.group(0)
+    try:
+        run = subprocess.run(["git", "log", "--diff-filter=A", "--format=%cs", "--", path.name],
+                             cwd=path.parent, capture_output=True, text=True, timeout=30)
+        dates = run.stdout.split()
+        if run.returncode == 0 and dates:
+            return dates[-1]
+    except OSError:
+        pass
+    import datetime
+    return datetime.date.fromtimestamp(path.stat().st_mtime).isoformat()
+
+
+def number(cell: str) -> float | None:
+    try:
+        return float(cell.replace(",", ""))
+    except ValueError:
+        return None
+
+
+def table_rows(path: Path) -> list[dict]:
+    """The rows of a Markdown table, as {header: cell}."""
+    rows, header = [], None
+    for line in path.read_text().splitlines():
+        if not line.startswith("|"):
+            continue
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if header is None:
+            header = cells
+        elif not set("".join(cells)) <= set("-: "):
+            rows.append(dict(zip(header, cells)))
+    return rows
+
+
+def runner_runs(path: Path) -> list[tuple[list[str], dict]]:
+    """(command line, JSON) for each run in a benchmark script's raw output: a line
+    "# CHAPTER ARGS..." followed by the runner's JSON line."""
+    runs, header = [], None
+    for line in path.read_text().splitlines():
+        if line.startswith("# "):
+            header = line[2:].split()
+        elif line.startswith("{") and header:
+            runs.append((header, json.loads(line)))
+            header = None
+    return runs
+
+
+def short_device(name: str) -> str:
+    """'llvmpipe (LLVM 15.0.6, 256 bits)' -> 'lavapipe (llvmpipe, LLVM 15.0.6)'."""
+    match = re.match(r"llvmpipe \((LLVM [0-9.]+)", name)
+    return f"lavapipe (llvmpipe, {match.group(1)}), 2 CPU cores" if match else name
+
+
+# ----------------------------------------------------------------------------------------------
+# The charts
+# ----------------------------------------------------------------------------------------------
+
+def draw_physics(chart: Chart, ax) -> tuple[str, str]:
+    path = chart.paths()[0]
+    rows = [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
+    boxes = [r["boxes"] for r in rows]
+    series = [("step_brute_force_ms", "whole step, brute-force pairs", RED, "-", "o"),
+              ("step_sweep_ms", "whole step, sort-and-sweep", BLUE, "-", "o"),
+              ("pairs_brute_force_ms", "pair finding alone, brute force", ORANGE, "--", "s"),
+              ("pairs_sweep_ms", "pair finding alone, sort-and-sweep", CYAN, "--", "s")]
+    for key, label, colour, style, marker in series:
+        ax.plot(boxes, [r[key] for r in rows], style, marker=marker, color=colour, label=label, linewidth=2,
+                markersize=5)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xticks(boxes)
+    ax.set_xticklabels([f"{b:,}" for b in boxes])
+    ax.minorticks_off()
+    ax.set_xlabel("boxes in the world")
+    ax.set_ylabel("time per physics step (ms, median)")
+    return chart.options["device"], measured_on(path)
+
+
+def draw_lights(chart: Chart, ax) -> tuple[str, str]:
+    path = chart.paths()[0]
+    rows = table_rows(path)
+    lights = [number(r["lights"]) for r in rows]
+    series = [("forward ms", "forward (chapter 16's forward path)", RED, "o"),
+              ("deferred ms (G-buffer + lighting)", "deferred (chapter 16)", ORANGE, "o"),
+              ("tiled fragment ms", "tiled, fragment lighting", BLUE, "s"),
+              ("tiled compute ms", "tiled, compute lighting", CYAN, "s")]
+    for column, label, colour, marker in series:
+        points = [(x, number(r[column])) for x, r in zip(lights, rows) if number(r[column]) is not None]
+        ax.plot([p[0] for p in points], [p[1] for p in points], "-", marker=marker, color=colour, label=label,
+                linewidth=2, markersize=5)
+    ax.set_xscale("log", base=4)
+    ax.set_yscale("log")
+    ax.set_xticks(lights)
+    ax.set_xticklabels([f"{int(x):,}" for x in lights])
+    ax.minorticks_off()
+    ax.set_xlabel("lights in the scene")
+    ax.set_ylabel("GPU time per frame (ms, median)")
+    device, size = rows[0]["device"], rows[0]["size"].replace("x", "\u00d7")
+    return f"{short_device(device)}, {size}", measured_on(path)
+
+
+def draw_ndim(chart: Chart, ax) -> tuple[str, str]:
+    """Median frame time against n for chapters 18, 19 and 20, one n-cube and 250;
+    where a file holds several runs of one case, the median of their medians."""
+    samples: dict[tuple[str, str], dict[int, list[float]]] = {}
+    device, size = "", ""
+    for path in chart.paths():
+        for args, run in runner_runs(path):
+            chapter = args[0][:2]
+            if chapter not in ("18", "19", "20") or "--dim" not in args:
+                continue
+            options = {a for a in args[1:] if a.startswith("--")}
+            if options - {"--scene", "--dim", "--raster", "--frames"}:
+                continue  # 18's --matrix, 19's --edge-order: not the chapters' defaults
+            scene = args[args.index("--scene") + 1]
+            series = chapter + (" " + args[args.index("--raster") + 1] if chapter == "20" else "")
+            n = int(args[args.index("--dim") + 1])
+            samples.setdefault((series, scene), {}).setdefault(n, []).append(run["cpu_frame_ms"]["median"])
+            device, size = run["device"], f"{run['width']}\u00d7{run['height']}"
+    names = {"18": ("chapter 18: CPU transform", RED), "19": ("chapter 19: vertex shader", GREEN),
+             "20 graphics": ("chapter 20: compute transform, line draw", ORANGE),
+             "20 compute": ("chapter 20: compute transform, compute raster", BLUE)}
+    from matplotlib.lines import Line2D
+    for (series, scene), points in sorted(samples.items(), key=lambda kv: (list(names).index(kv[0][0]), kv[0][1])):
+        label, colour = names[series]
+        ns = sorted(points)
+        ms = [statistics.median(points[n]) for n in ns]
+        many = scene == "many"
+        ax.plot(ns, ms, "-" if many else ":", color=colour, linewidth=2.4 if many else 1.6,
+                marker="o", markersize=6, markerfacecolor=colour if many else "white", markeredgewidth=1.5)
+    # The legend: a colour per chapter, a line style per scene.
+    chart.options["handles"] = (
+        [Line2D([], [], color=colour, linewidth=2.4, label=label) for label, colour in names.values()] +
+        [Line2D([], [], color=GREY, linewidth=2.4, marker="o", label="solid, filled: 250 n-cubes"),
+         Line2D([], [], color=GREY, linewidth=1.6, linestyle=":", marker="o", markerfacecolor="white",
+                markeredgewidth=1.5, label="dotted, hollow: one n-cube")])
+    ax.set_yscale("log")
+    ax.set_xticks([4, 8, 12])
+    ax.set_xlim(3.5, 12.5)
+    ax.set_xlabel("dimensions n")
+    ax.set_ylabel("frame time (ms, median)")
+    dates = sorted(measured_on(p) for p in chart.paths())
+    return f"{short_device(device)}, {size}", dates[-1]
+
+
+CHARTS = [
+    Chart("14_physics_bench.svg", ["physics.jsonl"], draw_physics,
+          {"title": "Chapter 14: one physics step against the number of boxes",
+           "device": "CPU only: AMD EPYC, one thread"}),
+    Chart("17_tiled_deferred_bench_lavapipe.svg", ["17_tiled_deferred-lavapipe.md"], draw_lights,
+          {"title": "Chapters 16 and 17: GPU time per frame against the number of lights"}),
+    Chart("17_tiled_deferred_bench_h100.svg", ["17_tiled_deferred-h100.md"], draw_lights,
+          {"title": "Chapters 16 and 17: GPU time per frame against the number of lights"}),
+    Chart("20_ndim_compute_bench.svg", ["2026-11-23-idle-18_ndim_cpu-lavapipe.txt",
+                                        "2026-11-23-idle-19_ndim_gpu-lavapipe.txt",
+                                        "2026-11-23-idle-20_ndim_compute-lavapipe.txt"], draw_ndim,
+          {"title": "Chapters 18 to 20: frame time against the number of dimensions"}),
+]
+
+
+# ----------------------------------------------------------------------------------------------
+# Drawing and writing
+# ----------------------------------------------------------------------------------------------
+
+def render(chart: Chart, target: Path) -> None:
+    import matplotlib
+    matplotlib.use("svg")
+    import matplotlib.pyplot as plt
+    from matplotlib.ticker import FuncFormatter
+
+    matplotlib.rcParams.update({
+        "svg.fonttype": "none",          # text stays text
+        "svg.hashsalt": "vulkan-book",   # the same ids every run: a re-run changes nothing
+        "font.family": "DejaVu Sans",
+        "font.size": 11,
+        "axes.spines.top": False,
+        "axes.spines.right": False,
+        "axes.grid": True,
+        "grid.color": "#e3e6ea",
+        "grid.linewidth": 0.8,
+        "axes.edgecolor": "#59636e",
+        "axes.titlesize": 12.5,
+    })
+    figure, ax = plt.subplots(figsize=(8.4, 5.6))
+    device, date = chart.draw(chart, ax)
+
+    def plain(value, _):
+        return f"{value:,.0f}" if value >= 1 else f"{value:g}"
+    ax.yaxis.set_major_formatter(FuncFormatter(plain))
+
+    low, high = ax.get_ylim()
+    for ms, name in BUDGETS:
+        if low < ms < high:
+            ax.axhline(ms, color=GREY, linestyle=(0, (5, 4)), linewidth=1.2, zorder=1)
+            ax.annotate(f"{name} budget: {ms:.1f} ms", xy=(1.0, ms), xycoords=("axes fraction", "data"),
+                        xytext=(-4, 3), textcoords="offset points", ha="right", va="bottom", fontsize=9.5,
+                        color="#3d444d", bbox={"boxstyle": "round,pad=0.2", "facecolor": "white",
+                                                "edgecolor": "none", "alpha": 0.85})
+    ax.set_ylim(low, high)
+    title = ax.set_title(f"{chart.options['title']}\n{device}; measured {date}", loc="left")
+    # Below the axes, where it hides no data.
+    legend = ax.legend(handles=chart.options.get("handles"), loc="upper center", bbox_to_anchor=(0.5, -0.13),
+                       ncol=2, fontsize=9.5, frameon=False)
+    title.set_gid("title")
+    ax.xaxis.label.set_gid("x-axis-label")
+    ax.yaxis.label.set_gid("y-axis-label")
+    legend.set_gid("legend")
+    figure.tight_layout()
+    figure.savefig(target, format="svg", metadata={"Date": None, "Creator": "benchmarks/plots.py"})
+    plt.close(figure)
+
+
+def main(argv: list[str]) -> int:
+    parser = argparse.ArgumentParser(prog="plots.py", description="Draw the book's charts from benchmarks/results/.")
+    parser.add_argument("--out", type=Path, default=ROOT / "book" / "images",
+                        help="where the SVGs go (default: book/images)")
+    parser.add_argument("--list", action="store_true", help="list the charts and their inputs, draw nothing")
+    args = parser.parse_args(argv)
+    if args.list:
+        for chart in CHARTS:
+            print(f"{chart.output}: {', '.join('benchmarks/results/' + i for i in chart.inputs)}")
+        return 0
+    try:
+        import matplotlib  # noqa: F401
+    except ImportError:
+        print("plots.py: error: needs matplotlib: apt install python3-matplotlib, and run it with /usr/bin/python3",
+              file=sys.stderr)
+        return 1
+    args.out.mkdir(parents=True, exist_ok=True)
+    for chart in CHARTS:
+        missing = [str(p) for p in chart.paths() if not p.is_file()]
+        if missing:
+            print(f"plots.py: error: {chart.output}: no such results file: {', '.join(missing)}", file=sys.stderr)
+            return 1
+        render(chart, args.out / chart.output)
+        print(f"plots.py: wrote {args.out / chart.output}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,440 @@
+#!/usr/bin/python3
+"""Opens every page of the built book in headless Chromium and checks what a reader sees.
+
+    /usr/bin/python3 tests/book_browser.py BOOK_DIR [--chromium PATH] [--pages REGEX]
+
+BOOK_DIR is the output of book/build_book.py. Every HTML page in it is loaded
+at 1280 and at 400 pixels wide (the second as a phone: a mobile viewport), and
+the run fails on:
+
+  - a picture that did not load (an <img> that is not complete, or 0 pixels wide);
+  - horizontal overflow: the page wider than the window, so it scrolls sideways;
+  - a console error, an uncaught exception, or a resource that failed to load;
+  - a broken link: a file:// link to a file that does not exist, or to an
+    anchor that the target page does not have.
+
+It also types `vkCmdPipelineBarrier2` into the search box of the index and
+checks that chapter 03 is the first result, and checks that every chart that
+benchmarks/plots.py draws is in the book with labelled axes and a legend (as
+SVG text).
+
+Chromium is driven through its DevTools protocol over a WebSocket, with the
+standard library only. It runs with a fresh profile and no network; the book
+is read from file:// URLs. Without Chromium the test fails and says how to
+install it (Debian: apt install chromium). Exit status: 0 all good, 1 a
+problem (one line each), 2 the command line was wrong.
+"""
+
+from __future__ import annotations
+
+import argparse
+import base64
+import html
+import json
+import os
+import re
+import shutil
+import signal
+import socket
+import struct
+import subprocess
+import sys
+import tempfile
+import time
+import urllib.parse
+import urllib.request
+import xml.etree.ElementTree as ElementTree
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+WIDTHS = (1280, 400)
+FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+         "--disable-component-update", "--disable-sync", "--no-first-run",
+         "--no-default-browser-check", "--disable-extensions", "--hide-scrollbars",
+         "--remote-debugging-port=0", "--remote-debugging-address=127.0.0.1"]
+SEARCH_TERM = "vkCmdPipelineBarrier2"
+SEARCH_FIRST = "03_swapchain.html"
+
+
+class Failure(Exception):
+    pass
+
+
+# ----------------------------------------------------------------------------------------------
+# A WebSocket client, just enough for the DevTools protocol (RFC 6455, text frames).
+# ----------------------------------------------------------------------------------------------
+
+class WebSocket:
+    def __init__(self, url: str, timeout: float):
+        parts = urllib.parse.urlsplit(url)
+        self.sock = socket.create_connection((parts.hostname, parts.port), timeout=timeout)
+        key = base64.b64encode(os.urandom(16)).decode()
+        request = (f"GET {parts.path} HTTP/1.1\r\nHost: {parts.hostname}:{parts.port}\r\n"
+                   "Upgrade: websocket\r\nConnection: Upgrade\r\n"
+                   f"Sec-WebSocket-Key: {key}\r\nSec-WebSocket-Version: 13\r\n\r\n")
+        self.sock.sendall(request.encode())
+        response = b""
+        while b"\r\n\r\n" not in response:
+            chunk = self.sock.recv(4096)
+            if not chunk:
+                raise Failure("Chromium closed the DevTools connection during the handshake")
+            response += chunk
+        head, self.buffer = response.split(b"\r\n\r\n", 1)
+        if b" 101 " not in head.split(b"\r\n")[0]:
+            raise Failure(f"Chromium refused the DevTools WebSocket: {head.decode(errors='replace')}")
+
+    def _read(self, n: int) -> bytes:
+        while len(self.buffer) < n:
+            chunk = self.sock.recv(1 << 16)
+            if not chunk:
+                raise Failure("Chromium closed the DevTools connection")
+            self.buffer += chunk
+        data, self.buffer = self.buffer[:n], self.buffer[n:]
+        return data
+
+    def send(self, text: str) -> None:
+        payload = text.encode()
+        header = bytearray([0x81])  # FIN, text
+        if len(payload) < 126:
+            header.append(0x80 | len(payload))
+        elif len(payload) < 1 << 16:
+            header += bytes([0x80 | 126]) + struct.pack(">H", len(payload))
+        else:
+            header += bytes([0x80 | 127]) + struct.pack(">Q", len(payload))
+        mask = os.urandom(4)
+        header += mask
+        self.sock.sendall(bytes(header) + bytes(b ^ mask[i % 4] for i, b in enumerate(payload)))
+
+    def receive(self) -> str:
+        message = b""
+        while True:
+            first, second = self._read(2)
+            opcode, length = first & 0x0F, second & 0x7F
+            if length == 126:
+                length = struct.unpack(">H", self._read(2))[0]
+            elif length == 127:
+                length = struct.unpack(">Q", self._read(8))[0]
+            mask = self._read(4) if second & 0x80 else None
+            data = self._read(length)
+            if mask:
+                data = bytes(b ^ mask[i % 4] for i, b in enumerate(data))
+            if opcode == 0x8:
+                raise Failure("Chromium closed the DevTools connection")
+            if opcode == 0x9:  # ping: answer, keep reading
+                continue
+            if opcode in (0x0, 0x1, 0x2):
+                message += data
+                if first & 0x80:
+                    return message.decode()
+
+
+class DevTools:
+    """One page target: commands, and the events that arrive meanwhile."""
+
+    def __init__(self, url: str, timeout: float):
+        self.ws = WebSocket(url, timeout)
+        self.next_id = 0
+        self.events: list[dict] = []
+
+    def call(self, method: str, **params) -> dict:
+        self.next_id += 1
+        my_id = self.next_id
+        self.ws.send(json.dumps({"id": my_id, "method": method, "params": params}))
+        while True:
+            message = json.loads(self.ws.receive())
+            if message.get("id") == my_id:
+                if "error" in message:
+                    raise Failure(f"DevTools {method}: {message['error'].get('message')}")
+                return message.get("result", {})
+            if "method" in message:
+                self.events.append(message)
+
+    def wait_for(self, method: str, deadline: float) -> dict:
+        for i, event in enumerate(self.events):
+            if event["method"] == method:
+                return self.events.pop(i)
+        while time.monotonic() < deadline:
+            message = json.loads(self.ws.receive())
+            if message.get("method") == method:
+                return message
+            if "method" in message:
+                self.events.append(message)
+        raise Failure(f"timed out waiting for {method}")
+
+    def evaluate(self, expression: str):
+        result = self.call("Runtime.evaluate", expression=expression, returnByValue=True, awaitPromise=True)
+        if "exceptionDetails" in result:
+            raise Failure(f"script failed in the page: {result['exceptionDetails'].get('text')}")
+        return result["result"].get("value")
+
+
+# ----------------------------------------------------------------------------------------------
+# The checks
+# ----------------------------------------------------------------------------------------------
+
+# Run in each page once it has loaded: what did not load, what sticks out, where links go.
+PAGE_CHECK = r"""
+(() => {
+  const root = document.documentElement;
+  const width = root.clientWidth;
+  const broken = [...document.images].filter(i => !i.complete || i.naturalWidth === 0)
+                                     .map(i => i.getAttribute('src'));
+  const wide = [];
+  if (root.scrollWidth > width + 1) {
+    for (const el of document.body.querySelectorAll('*')) {
+      const box = el.getBoundingClientRect();
+      if (box.right > width + 1 && box.width > 0) {
+        let clipped = false;
+        for (let p = el.parentElement; p && p !== document.body; p = p.parentElement) {
+          const o = getComputedStyle(p).overflowX;
+          if (o === 'auto' || o === 'scroll' || o === 'hidden') { clipped = true; break; }
+        }
+        if (!clipped) wide.push(el.tagName.toLowerCase() + (el.className ? '.' + el.className : '') +
+                                ' "' + (el.textContent || '').trim().slice(0, 40) + '" right edge ' +
+                                Math.round(box.right));
+      }
+      if (wide.length >= 3) break;
+    }
+  }
+  return {scrollWidth: root.scrollWidth, width, broken, wide,
+          links: [...document.querySelectorAll('a[href]')].map(a => a.href)};
+})()
+"""
+
+SEARCH_CHECK = r"""
+new Promise((resolve) => {
+  const input = document.querySelector('form.search input');
+  if (!input) { resolve({error: 'no search box on the page'}); return; }
+  input.focus();
+  input.value = %s;
+  input.dispatchEvent(new Event('input', {bubbles: true}));
+  const start = Date.now();
+  (function poll() {
+    const links = [...document.querySelectorAll('.search-results li > a')].map(a => a.getAttribute('href'));
+    if (links.length || Date.now() - start > 10000) {
+      resolve({links, status: (document.querySelector('.search-status') || {}).textContent || ''});
+    } else {
+      setTimeout(poll, 50);
+    }
+  })();
+})
+"""
+
+
+class LinkChecker:
+    def __init__(self, book: Path):
+        self.book = book.resolve()
+        self.ids: dict[Path, set[str]] = {}
+        self.checked: set[str] = set()
+
+    def anchors(self, path: Path) -> set[str]:
+        if path not in self.ids:
+            text = path.read_text(encoding="utf-8", errors="replace")
+            self.ids[path] = {html.unescape(v) for v in re.findall(r'\b(?:id|name)="([^"]*)"', text)}
+        return self.ids[path]
+
+    def check(self, page: str, url: str) -> str | None:
+        parts = urllib.parse.urlsplit(url)
+        if parts.scheme in ("http", "https", "mailto"):
+            return None  # no network here; the builder leaves these alone
+        if parts.scheme != "file":
+            return f"{page}: link with an unexpected scheme: {url}"
+        key = url
+        if key in self.checked:
+            return None
+        self.checked.add(key)
+        path = Path(urllib.parse.unquote(parts.path))
+        if not path.is_file():
+            return f"{page}: broken link to {url} (no such file)"
+        if parts.fragment and path.suffix == ".html":
+            anchor = urllib.parse.unquote(parts.fragment)
+            if anchor not in self.anchors(path):
+                return f"{page}: broken link to {url} (no element with id '{anchor}')"
+        return None
+
+
+def start_chromium(chromium: str, profile: Path, timeout: float) -> tuple[subprocess.Popen, int]:
+    log = open(profile.parent / "chromium.log", "w")
+    process = subprocess.Popen([chromium, *FLAGS, f"--user-data-dir={profile}", "about:blank"],
+                               stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+    port_file = profile / "DevToolsActivePort"
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        if process.poll() is not None:
+            raise Failure(f"{chromium} exited at once (status {process.returncode}); its output is in "
+                          f"{profile.parent / 'chromium.log'}")
+        if port_file.is_file():
+            lines = port_file.read_text().split()
+            if lines:
+                return process, int(lines[0])
+        time.sleep(0.1)
+    raise Failure(f"{chromium} did not open its DevTools port within {timeout:.0f} s")
+
+
+def stop_chromium(process: subprocess.Popen) -> None:
+    """Ends the browser we started and, by its process group, the helpers it started."""
+    process.terminate()
+    try:
+        process.wait(10)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        process.wait(10)
+    try:
+        os.killpg(process.pid, signal.SIGKILL)  # its own session: start_new_session=True
+    except (ProcessLookupError, PermissionError):
+        pass
+
+
+def page_target(port: int) -> str:
+    with urllib.request.urlopen(f"http://127.0.0.1:{port}/json/list", timeout=10) as response:
+        targets = json.load(response)
+    for target in targets:
+        if target.get("type") == "page" and target.get("webSocketDebuggerUrl"):
+            return target["webSocketDebuggerUrl"]
+    raise Failure("Chromium has no page to drive")
+
+
+def problems_from_events(events: list[dict], page: str, width: int) -> list[str]:
+    found = []
+    for event in events:
+        method, params = event["method"], event.get("params", {})
+        if method == "Runtime.exceptionThrown":
+            details = params.get("exceptionDetails", {})
+            text = details.get("exception", {}).get("description") or details.get("text")
+            first_line = (text or "").splitlines()[0] if text else "(no message)"
+            found.append(f"{page} at {width} px: uncaught exception: {first_line}")
+        elif method == "Runtime.consoleAPICalled" and params.get("type") in ("error", "assert"):
+            args = " ".join(str(a.get("value", a.get("description", ""))) for a in params.get("args", []))
+            found.append(f"{page} at {width} px: console error: {args}")
+        elif method == "Log.entryAdded" and params.get("entry", {}).get("level") == "error":
+            entry = params["entry"]
+            found.append(f"{page} at {width} px: {entry.get('source')} error: {entry.get('text')} "
+                         f"{entry.get('url', '')}".rstrip())
+        elif method == "Network.loadingFailed" and not params.get("canceled"):
+            found.append(f"{page} at {width} px: a resource failed to load: {params.get('errorText')}")
+    return found
+
+
+def check_charts(book: Path) -> list[str]:
+    """Every chart of benchmarks/plots.py is in the book, with axis labels and a legend."""
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    sys.dont_write_bytecode = True  # leave no __pycache__ in the source tree
+    try:
+        import plots  # noqa: E402  (benchmarks/plots.py: the list of charts)
+    except ImportError as error:
+        return [f"cannot read the list of charts from benchmarks/plots.py: {error}"]
+    problems = []
+    for chart in plots.CHARTS:
+        path = book / "images" / chart.output
+        if not path.is_file():
+            problems.append(f"chart {chart.output}: not in the built book (no page shows it)")
+            continue
+        try:
+            tree = ElementTree.parse(path)
+        except ElementTree.ParseError as error:
+            problems.append(f"chart {chart.output}: not well-formed SVG: {error}")
+            continue
+        by_id = {el.get("id"): el for el in tree.iter() if el.get("id")}
+        for part in ("x-axis-label", "y-axis-label", "legend", "title"):
+            element = by_id.get(part)
+            text = "".join(element.itertext()).strip() if element is not None else ""
+            if not text:
+                problems.append(f"chart {chart.output}: no {part.replace('-', ' ')} as text")
+    return problems
+
+
+def main(argv: list[str]) -> int:
+    parser = argparse.ArgumentParser(prog="book_browser.py", description=__doc__.splitlines()[0])
+    parser.add_argument("book", type=Path, help="the built book (book/build_book.py --out DIR)")
+    parser.add_argument("--chromium", default="/usr/bin/chromium", help="the browser (default: %(default)s)")
+    parser.add_argument("--pages", default="", help="only pages whose path matches this regular expression")
+    parser.add_argument("--timeout", type=float, default=30.0, help="seconds a page may take to load")
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exit_:
+        return 0 if exit_.code == 0 else 2
+
+    book = args.book.resolve()
+    if not (book / "index.html").is_file():
+        print(f"book_browser.py: {book} holds no built book (no index.html)", file=sys.stderr)
+        return 1
+    chromium = shutil.which(args.chromium) if os.sep not in args.chromium else args.chromium
+    if not chromium or not os.access(chromium, os.X_OK):
+        print(f"book_browser.py: error: Chromium is not installed ({args.chromium} not found). The book's "
+              "browser test needs it: on Debian, apt install chromium (scripts/install-deps.sh does).",
+              file=sys.stderr)
+        return 1
+
+    pages = sorted(p.relative_to(book).as_posix() for p in book.rglob("*.html"))
+    pages = [p for p in pages if re.search(args.pages, p)]
+    problems: list[str] = []
+    links = LinkChecker(book)
+    started = time.monotonic()
+    with tempfile.TemporaryDirectory(prefix="book-browser-") as temp:
+        profile = Path(temp) / "profile"
+        profile.mkdir()
+        process = None
+        try:
+            process, port = start_chromium(chromium, profile, 60)
+            tab = DevTools(page_target(port), args.timeout)
+            for domain in ("Page", "Runtime", "Log", "Network"):
+                tab.call(f"{domain}.enable")
+            for width in WIDTHS:
+                tab.call("Emulation.setDeviceMetricsOverride", width=width, height=900, deviceScaleFactor=1,
+                         mobile=width < 600)
+                for page in pages:
+                    tab.events.clear()
+                    tab.call("Page.navigate", url=(book / page).as_uri())
+                    tab.wait_for("Page.loadEventFired", time.monotonic() + args.timeout)
+                    result = tab.evaluate(PAGE_CHECK)
+                    time.sleep(0)  # let late events arrive with the next call
+                    for src in result["broken"]:
+                        problems.append(f"{page} at {width} px: the picture {src} did not load")
+                    if result["scrollWidth"] > result["width"] + 1:
+                        what = "; ".join(result["wide"]) or "no single element found"
+                        problems.append(f"{page} at {width} px: scrolls sideways ({result['scrollWidth']} px "
+                                        f"wide in a {result['width']} px window): {what}")
+                    problems += problems_from_events(tab.events, page, width)
+                    if width == WIDTHS[0]:
+                        for url in result["links"]:
+                            problem = links.check(page, url)
+                            if problem:
+                                problems.append(problem)
+
+            # The search: chapter 03 first for vkCmdPipelineBarrier2.
+            tab.call("Emulation.setDeviceMetricsOverride", width=1280, height=900, deviceScaleFactor=1,
+                     mobile=False)
+            tab.events.clear()
+            tab.call("Page.navigate", url=(book / "index.html").as_uri())
+            tab.wait_for("Page.loadEventFired", time.monotonic() + args.timeout)
+            found = tab.evaluate(SEARCH_CHECK % json.dumps(SEARCH_TERM))
+            if found.get("error"):
+                problems.append(f"search: {found['error']}")
+            elif not found["links"]:
+                problems.append(f"search: '{SEARCH_TERM}' found nothing ({found['status'].strip()})")
+            elif not found["links"][0].split("#")[0].endswith(SEARCH_FIRST):
+                problems.append(f"search: '{SEARCH_TERM}' lists {found['links'][0]} first, not {SEARCH_FIRST} "
+                                f"(the results: {', '.join(found['links'][:5])})")
+            problems += problems_from_events(tab.events, "index.html (search)", 1280)
+        except (Failure, OSError, socket.timeout) as error:
+            problems.append(f"the browser run stopped: {error}")
+        finally:
+            if process is not None:
+                stop_chromium(process)
+
+    problems += check_charts(book)
+    for problem in dict.fromkeys(problems):
+        print(f"book_browser.py: {problem}", file=sys.stderr)
+    seconds = time.monotonic() - started
+    if problems:
+        print(f"book_browser.py: {len(set(problems))} problem(s) in {len(pages)} pages at "
+              f"{' and '.join(map(str, WIDTHS))} px ({seconds:.0f} s)", file=sys.stderr)
+        return 1
+    print(f"book_browser.py: {len(pages)} pages at {' and '.join(map(str, WIDTHS))} px: every picture loaded, "
+          f"nothing scrolls sideways, no console error, {len(links.checked)} links good; the search lists "
+          f"chapter 03 first for {SEARCH_TERM}; every chart has axis labels and a legend ({seconds:.0f} s)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
