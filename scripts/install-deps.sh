@@ -29,7 +29,7 @@ apt_common=(
   libglfw3-dev libglm-dev libtinygltf-dev libstb-dev xvfb xauth xdotool openbox wmctrl
   stress-ng
   python3 python3-markdown python3-pygments
-  python3-matplotlib graphviz shellcheck clang clang-tidy
+  python3-matplotlib python3-pil fonts-dejavu-core graphviz shellcheck clang clang-tidy
 )
 # Debian 12: clang is clang 14, whose runtime (libFuzzer, LeakSanitizer) is its
 # own package; lavapipe 25.x and Catch2 3 come from bookworm-backports (Debian
