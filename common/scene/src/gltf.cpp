@@ -7,6 +7,7 @@
 #include "gltf_internal.hpp"
 
 #include "vkt/core/check.hpp"
+#include "vkt/core/files.hpp"
 #include "vkt/resources/texture.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -131,7 +132,7 @@ private:
         const tinygltf::Image& source = model_.images[size_t(index)];
         std::string what = path_.string() + ": image " + std::to_string(index);
         if (!source.uri.empty() && source.uri.rfind("data:", 0) != 0)
-            what += " (" + source.uri + ")";
+            what += " (" + printable(source.uri) + ")";
         RgbaImage decoded;
         if (source.bufferView >= 0) {
             std::span<const uint8_t> bytes =
@@ -140,9 +141,10 @@ private:
         } else if (!source.image.empty()) {
             decoded = decode_image(source.image, what);
         } else if (!source.uri.empty() && source.uri.rfind("data:", 0) != 0) {
-            // tinygltf could not read the external file: say which one, as
-            // load_image_file does ("cannot open FILE").
-            decoded = load_image_file(path_.parent_path() / source.uri);
+            // The file was not there, or empty: a file refused (outside the
+            // folder, too large) has already failed in parse_gltf_file.
+            fail("image " + std::to_string(index) + " (" + printable(source.uri) +
+                 "): cannot open it, or it is empty");
         } else {
             fail("image " + std::to_string(index) + " has no data (an unsupported data: URI?)");
         }

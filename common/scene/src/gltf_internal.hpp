@@ -3,8 +3,10 @@
 // include path, so no chapter sees tinygltf. vkt::load_gltf (gltf.hpp) is
 // three steps, one file each:
 //
-//   gltf_files.cpp      the file, and the files it names; tinygltf parses the
-//                       JSON, the .glb chunks and the data: URIs
+//   gltf_files.cpp      the file, and every file it names, read through
+//                       tinygltf's FsCallbacks of our own (inside the model's
+//                       folder only, no directories, 1 GiB at most); tinygltf
+//                       parses the JSON, the .glb chunks and the data: URIs
 //   gltf_accessors.cpp  the bytes of a buffer view or an accessor, with every
 //                       index, offset, stride and count checked first
 //   gltf.cpp            the scene: materials and images, meshes and their
@@ -22,7 +24,8 @@ namespace vkt::gltf_detail {
 
 // Parses `path` (.gltf or .glb, told apart by its first four bytes). Images
 // are kept as their file's bytes (Image::image), not decoded. Throws Error
-// "PATH: what is wrong", one line, for a file that is missing or not glTF.
+// "PATH: what is wrong", one line, for a file that is missing, too large, not
+// glTF, or names a file outside its folder.
 tinygltf::Model parse_gltf_file(const std::filesystem::path& path);
 
 // What an accessor may hold for each use, as the glTF 2.0 specification lists it.
