@@ -24,16 +24,20 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <vector>
 
 namespace {
 
 // [load]
 // stb_image decodes PNG, JPEG, BMP, TGA...; asking for 4 channels gives
-// 8-bit RGBA whatever the file holds (alpha 255 where it has none).
+// 8-bit RGBA whatever the file holds (alpha 255 where it has none). The file
+// itself is read by vkt::read_file, which names it when it is missing, a
+// directory or past 1 GiB (so its length also fits stb's int).
 vkt::RgbaImage load_texture(const std::filesystem::path& path) {
-    if (!std::filesystem::is_regular_file(path)) throw vkt::Error("cannot open " + path.string());
+    const std::vector<char> file = vkt::read_file(path);
     int width = 0, height = 0, channels_in_file = 0;
-    stbi_uc* data = stbi_load(path.c_str(), &width, &height, &channels_in_file, 4);
+    stbi_uc* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(file.data()),
+                                          int(file.size()), &width, &height, &channels_in_file, 4);
     if (!data) throw vkt::Error(path.string() + ": cannot decode image: " + stbi_failure_reason());
     vkt::RgbaImage image{uint32_t(width), uint32_t(height), {}};
     image.pixels.assign(data, data + size_t(width) * size_t(height) * 4);

@@ -33,6 +33,27 @@ file(WRITE ${VKT_09_GARBAGE} "this is not a PNG file")
 vkt_chapter_test(bad_input.09_textures.corrupt_texture 09_textures EXIT 1
   ARGS --headless --frames 1 --texture ${VKT_09_GARBAGE}
   EXPECT "09_textures_garbage.png: cannot decode image")
+# The texture is read by vkt::read_file: a directory, or a file past 1 GiB
+# (sparse, made for the test and removed after it), is one line naming it.
+vkt_chapter_test(bad_input.09_textures.directory_texture 09_textures EXIT 1
+  ARGS --headless --frames 1 --texture ${CMAKE_CURRENT_BINARY_DIR}
+  EXPECT "09_textures: error: .*: is a directory, not a file")
+find_program(VKT_TRUNCATE truncate)
+if(VKT_TRUNCATE)
+  set(VKT_09_HUGE ${CMAKE_CURRENT_BINARY_DIR}/09_textures_huge.png)
+  add_test(NAME bad_input.09_textures.huge_texture.make
+    COMMAND ${VKT_TRUNCATE} -s 1073741825 ${VKT_09_HUGE})
+  add_test(NAME bad_input.09_textures.huge_texture.remove
+    COMMAND ${CMAKE_COMMAND} -E rm -f ${VKT_09_HUGE})
+  set_tests_properties(bad_input.09_textures.huge_texture.make PROPERTIES
+    FIXTURES_SETUP vkt_09_huge LABELS chapter)
+  set_tests_properties(bad_input.09_textures.huge_texture.remove PROPERTIES
+    FIXTURES_CLEANUP vkt_09_huge LABELS chapter)
+  vkt_chapter_test(bad_input.09_textures.huge_texture 09_textures EXIT 1
+    ARGS --headless --frames 1 --texture ${VKT_09_HUGE}
+    EXPECT "09_textures: error: .*09_textures_huge.png: is 1073741825 bytes, past the 1 GiB limit for one file")
+  set_tests_properties(bad_input.09_textures.huge_texture PROPERTIES FIXTURES_REQUIRED vkt_09_huge)
+endif()
 vkt_chapter_test(bad_input.09_textures.bad_mips 09_textures EXIT 2 ARGS --mips trilinear
   EXPECT "--mips wants one of blit, cpu, none, not 'trilinear'")
 

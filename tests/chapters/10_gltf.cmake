@@ -84,3 +84,50 @@ vkt_chapter_test(chapter.10_gltf.warnings 10_gltf ARGS ${vkt_10_run} --model ${v
   EXPECT "warnings.gltf: warning: uses extension KHR_materials_emissive_strength, which this loader ignores"
          "warnings.gltf: warning: cameras are ignored"
          "warnings.gltf: draws 1, primitives 1")
+
+# --- Files: only inside the model's folder, only regular files, 1 GiB at most
+# (common/scene/src/gltf_files.cpp, through tinygltf's FsCallbacks of our own).
+# Each is one line naming the model and what it named.
+# vkt_10_uri_file(<name> <buffer uri> <extra>): the good triangle, its buffer at <uri>.
+function(vkt_10_uri_file name uri extra)
+  string(REPLACE "data:application/octet-stream;base64,@INDICES@" "${uri}" text "${vkt_10_template}")
+  string(REPLACE "@COUNT@" "3" text "${text}")
+  string(REPLACE "@EXTRA@" "${extra}" text "${text}")
+  file(WRITE ${vkt_10_dir}/${name} "${text}")
+endfunction()
+vkt_10_uri_file(uri_outside.gltf "../../../../../../etc/passwd" "")
+vkt_10_uri_file(uri_absolute.gltf "/etc/passwd" "")
+vkt_10_uri_file(huge_buffer.gltf "huge.bin" "")
+# tinygltf's issue 416: "%!Q" %-decodes to a NUL byte, and tinygltf alone then
+# reads the folder as a file of 2^63 bytes (std::bad_alloc, or an ASan abort).
+vkt_10_bad_file(issue416.gltf ${vkt_10_good_indices} 3 [=[, "images": [{"uri": "%!QAAAQAAA5"}]]=])
+
+vkt_chapter_test(bad_input.10_gltf.model_directory 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${vkt_10_dir}
+  EXPECT "10_gltf: error: .*gltf_bad_input: is a directory, not a file")
+vkt_chapter_test(bad_input.10_gltf.issue416_uri 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${vkt_10_dir}/issue416.gltf
+  EXPECT "10_gltf: error: .*issue416.gltf: URI \"%00AAAQAAA5\" is not a file name: it holds a control character")
+vkt_chapter_test(bad_input.10_gltf.uri_outside 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${vkt_10_dir}/uri_outside.gltf
+  EXPECT "10_gltf: error: .*uri_outside.gltf: URI \"\\.\\./\\.\\./\\.\\./\\.\\./\\.\\./\\.\\./etc/passwd\" leads out of the model's folder")
+vkt_chapter_test(bad_input.10_gltf.uri_absolute 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${vkt_10_dir}/uri_absolute.gltf
+  EXPECT "10_gltf: error: .*uri_absolute.gltf: URI \"/etc/passwd\" is an absolute path")
+# A buffer of 1 GiB + 1 byte, sparse (no disk space), made for the test and
+# removed after it.
+find_program(VKT_TRUNCATE truncate)
+if(VKT_TRUNCATE)
+  add_test(NAME bad_input.10_gltf.huge_buffer.make
+    COMMAND ${VKT_TRUNCATE} -s 1073741825 ${vkt_10_dir}/huge.bin)
+  add_test(NAME bad_input.10_gltf.huge_buffer.remove
+    COMMAND ${CMAKE_COMMAND} -E rm -f ${vkt_10_dir}/huge.bin)
+  set_tests_properties(bad_input.10_gltf.huge_buffer.make PROPERTIES
+    FIXTURES_SETUP vkt_10_huge LABELS chapter)
+  set_tests_properties(bad_input.10_gltf.huge_buffer.remove PROPERTIES
+    FIXTURES_CLEANUP vkt_10_huge LABELS chapter)
+  vkt_chapter_test(bad_input.10_gltf.huge_buffer 10_gltf EXIT 1
+    ARGS ${vkt_10_run} --model ${vkt_10_dir}/huge_buffer.gltf
+    EXPECT "10_gltf: error: .*huge_buffer.gltf: .*huge.bin: is 1073741825 bytes, past the 1 GiB limit for one file")
+  set_tests_properties(bad_input.10_gltf.huge_buffer PROPERTIES FIXTURES_REQUIRED vkt_10_huge)
+endif()

@@ -1,98 +1,25 @@
+// The frame loop (chapter 03). Where each frame ends up, a window, a headless
+// surface or an offscreen image, is presentation.cpp's.
+
 #include "vkt/frame/runner.hpp"
 
+#include "chapter_run.hpp"
+
 #include "vkt/core/barrier.hpp"
-#include "vkt/core/instance.hpp"
-#include "vkt/core/memory.hpp"
-#include "vkt/core/swapchain.hpp"
-#include "vkt/frame/gpu_timer.hpp"
 #include "vkt/frame/stats.hpp"
-#include "vkt/frame/window.hpp"
-#include "vkt/resources/image_io.hpp"
-#include "vkt/resources/readback.hpp"
 
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <optional>
 
 namespace vkt {
+namespace detail {
 namespace {
 
-constexpr uint32_t frames_in_flight = 2;
 constexpr double fixed_time_step = 1.0 / 60.0;
 constexpr uint32_t default_headless_frames = 60;
-
-enum class Presentation { window, headless_surface, offscreen };
-
-const char* presentation_name(Presentation p) {
-    switch (p) {
-        case Presentation::window:
-            return "window";
-        case Presentation::headless_surface:
-            return "headless surface";
-        default:
-            return "offscreen";
-    }
-}
-
-bool has_display() {
-    for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY"})
-        if (const char* value = std::getenv(name); value && *value) return true;
-    return false;
-}
-
-std::string program_name(char** argv) {
-    return std::filesystem::path(argv[0] ? argv[0] : "chapter").filename().string();
-}
-
-// [frame-slot]
-// Per frame in flight: what the CPU records into while the GPU works on the other.
-struct FrameSlot {
-    CommandPool pool;
-    VkCommandBuffer cmd = VK_NULL_HANDLE;
-    Fence done;                // signalled when the GPU finished this slot's last frame
-    Semaphore image_acquired;  // signalled when the acquired swapchain image may be written
-    Readback readback;         // with --screenshot: what this slot's frame presented
-};
-// [/frame-slot]
-
-class ChapterRun {
-public:
-    ChapterRun(const Options& options, const ChapterSpec& spec);
-    ~ChapterRun() {
-        if (device_) vkDeviceWaitIdle(*device_);  // nothing may be destroyed while in use
-    }
-    void run(const RendererFactory& factory);
-    bool validation() const { return instance_->validation(); }
-    std::shared_ptr<const ValidationCounts> counts() const { return instance_->counts(); }
-
-private:
-    void create_target(VkExtent2D extent);
-    bool draw_frame(uint64_t index, double time, const Input& input);
-    void record(FrameSlot& slot, uint32_t image_index, const Frame& frame);
-    void recreate_swapchain();
-    void save_screenshot(const std::string& path);
-    void note_presented(VkExtent2D extent);
-
-    const Options& options_;
-    const ChapterSpec& spec_;
-    Presentation presentation_ = Presentation::offscreen;
-    std::unique_ptr<Window> window_;
-    std::unique_ptr<Instance> instance_;
-    SurfaceHandle surface_;
-    std::unique_ptr<Device> device_;
-    std::unique_ptr<Swapchain> swapchain_;
-    Image target_;
-    std::vector<FrameSlot> slots_;
-    GpuTimer gpu_timer_;
-    std::unique_ptr<Renderer> renderer_;
-    std::vector<double> cpu_ms_;
-    std::optional<uint32_t> last_slot_;  // the slot of the last frame submitted
-    VkExtent2D presented_{};             // the size of the last frame presented
-};
 
 // Fails early, with the reason, if the screenshot could not be written: better
 // than finding out after a long run. Leaves no file behind.
@@ -104,94 +31,12 @@ void check_writable(const std::string& path) {
     if (!existed) std::filesystem::remove(path);
 }
 
+}  // namespace
+
 ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
     : options_(options), spec_(spec) {
     if (!options.screenshot.empty()) check_writable(options.screenshot);
-
-    // [choose-presentation]
-    // Where the picture goes: a window if we can, else a headless surface, else
-    // our own images only.
-    if (options.offscreen) {
-        presentation_ = Presentation::offscreen;
-    } else if (!options.headless && has_display()) {
-        try {
-            window_ = std::make_unique<Window>(
-                spec.title, VkExtent2D{options.width, options.height}, spec.input);
-            presentation_ = Presentation::window;
-        } catch (const Error& e) {
-            std::fprintf(stderr, "%s: %s; running headless\n", spec.name.c_str(), e.what());
-        }
-    }
-    if (!window_ && !options.offscreen)
-        presentation_ = instance_extension_available(VK_EXT_HEADLESS_SURFACE_EXTENSION_NAME)
-                            ? Presentation::headless_surface
-                            : Presentation::offscreen;
-    // [/choose-presentation]
-
-    std::vector<const char*> extensions;
-    if (presentation_ == Presentation::window) extensions = Window::required_instance_extensions();
-    if (presentation_ == Presentation::headless_surface)
-        extensions = {VK_KHR_SURFACE_EXTENSION_NAME, VK_EXT_HEADLESS_SURFACE_EXTENSION_NAME};
-
-    const bool layer = instance_layer_available(validation_layer_name);
-    if (options.validation.value_or(false) && !layer)
-        throw Error(
-            "--validation: the Khronos validation layer is not installed "
-            "(on Debian: apt install vulkan-validationlayers)");
-    instance_ = std::make_unique<Instance>(InstanceConfig{
-        .application_name = spec.name,
-        .validation = options.validation.value_or(layer),
-        .extensions = extensions,
-    });
-
-    if (presentation_ == Presentation::window) {
-        surface_ = SurfaceHandle(*instance_, window_->create_surface(*instance_));
-    } else if (presentation_ == Presentation::headless_surface) {
-        auto create = reinterpret_cast<PFN_vkCreateHeadlessSurfaceEXT>(
-            vkGetInstanceProcAddr(*instance_, "vkCreateHeadlessSurfaceEXT"));
-        VkHeadlessSurfaceCreateInfoEXT info{.sType =
-                                                VK_STRUCTURE_TYPE_HEADLESS_SURFACE_CREATE_INFO_EXT};
-        VkSurfaceKHR surface;
-        VKT_CHECK(create(*instance_, &info, nullptr, &surface));
-        surface_ = SurfaceHandle(*instance_, surface);
-    }
-
-    // A window needs a device that can present to it. Headless, the device is
-    // chosen on its own merits; if it cannot present to the headless surface
-    // (another driver may have provided that), it renders offscreen instead.
-    DeviceRequirements requirements = spec.requirements;
-    if (window_) requirements.extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
-    const auto candidates =
-        survey_devices(*instance_, window_ ? surface_.get() : VK_NULL_HANDLE, requirements);
-    const DeviceCandidate& chosen = choose_device(candidates, options.device);
-    if (presentation_ == Presentation::headless_surface) {
-        if (can_present(chosen.handle, chosen.queue_family, surface_)) {
-            requirements.extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
-        } else {
-            surface_.reset();
-            presentation_ = Presentation::offscreen;
-        }
-    }
-    device_ = std::make_unique<Device>(chosen, requirements);
-
-    const uint32_t largest = device_->properties().limits.maxImageDimension2D;
-    if (options.width > largest || options.height > largest)
-        throw Error("--size " + std::to_string(options.width) + "x" +
-                    std::to_string(options.height) + ": this device's images are at most " +
-                    std::to_string(largest) + "x" + std::to_string(largest));
-
-    VkExtent2D extent{options.width, options.height};
-    if (surface_) {
-        if (window_) extent = window_->framebuffer_size();
-        swapchain_ =
-            std::make_unique<Swapchain>(device_->physical(), *device_, surface_,
-                                        SwapchainRequest{.extent = extent,
-                                                         .uncapped = options.benchmark,
-                                                         .readable = !options.screenshot.empty()},
-                                        VK_NULL_HANDLE);
-        extent = swapchain_->extent();
-    }
-    create_target(extent);
+    open_presentation(options, spec);  // window or surface, instance, device, swapchain, target
 
     for (uint32_t i = 0; i < frames_in_flight; ++i) {
         FrameSlot slot{
@@ -226,17 +71,6 @@ ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
                  target_.extent.height, format_name(target_.format),
                  instance_->validation() ? "on (with synchronisation)" : "off");
 }
-
-// [create-target]
-void ChapterRun::create_target(VkExtent2D extent) {
-    VkFormat format =
-        swapchain_ ? render_format_for(swapchain_->format()) : VK_FORMAT_R8G8B8A8_SRGB;
-    target_ = create_image_2d(device_->physical(), *device_, format, extent,
-                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
-                                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                              VK_IMAGE_ASPECT_COLOR_BIT);
-}
-// [/create-target]
 
 void ChapterRun::run(const RendererFactory& factory) {
     renderer_ = factory(Context{
@@ -475,47 +309,6 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
     VKT_CHECK(vkEndCommandBuffer(cmd));
 }
 
-// [recreate]
-void ChapterRun::recreate_swapchain() {
-    if (window_) {
-        window_->wait_while_minimised();  // a 0x0 swapchain cannot exist
-        if (window_->should_close()) return;
-        window_->take_resized();  // this recreation answers any resize so far
-    }
-    // Simple and safe: let the GPU finish everything that uses the old images.
-    VKT_CHECK(vkDeviceWaitIdle(*device_));
-    auto next = std::make_unique<Swapchain>(
-        device_->physical(), *device_, surface_,
-        SwapchainRequest{.extent = window_ ? window_->framebuffer_size() : target_.extent,
-                         .uncapped = options_.benchmark,
-                         .readable = !options_.screenshot.empty(),
-                         .keep = swapchain_->format()},
-        swapchain_->get());
-    swapchain_ = std::move(next);  // the old swapchain is destroyed after the new one exists
-    // The chapter's pipelines were made for our target's format; it must not change.
-    if (render_format_for(swapchain_->format()) != target_.format)
-        throw Error(std::string("the surface no longer offers a format with the byte order of ") +
-                    format_name(target_.format));
-    VkExtent2D extent = swapchain_->extent();
-    presented_ = {};  // the next present is reported, whatever its size
-    std::fprintf(stderr, "%s: swapchain recreated at %ux%u\n", spec_.name.c_str(), extent.width,
-                 extent.height);
-    if (extent.width != target_.extent.width || extent.height != target_.extent.height) {
-        create_target(extent);
-        renderer_->resize(extent);
-    }
-}
-// [/recreate]
-
-// Says when the first frame of a new size has been presented: the event a
-// window test waits for after it resizes, before it closes the window.
-void ChapterRun::note_presented(VkExtent2D extent) {
-    if (extent.width == presented_.width && extent.height == presented_.height) return;
-    presented_ = extent;
-    std::fprintf(stderr, "%s: presented a frame at %ux%u\n", spec_.name.c_str(), extent.width,
-                 extent.height);
-}
-
 void ChapterRun::save_screenshot(const std::string& path) {
     // The last frame's slot holds what that frame presented (see record); the
     // GPU is idle, and the barrier to the HOST stage made the bytes visible.
@@ -523,6 +316,14 @@ void ChapterRun::save_screenshot(const std::string& path) {
     write_png(path, to_rgba(readback.buffer.mapped, readback.extent, readback.format));
     std::fprintf(stderr, "%s: wrote %s (%ux%u)\n", spec_.name.c_str(), path.c_str(),
                  readback.extent.width, readback.extent.height);
+}
+
+}  // namespace detail
+
+namespace {
+
+std::string program_name(char** argv) {
+    return std::filesystem::path(argv[0] ? argv[0] : "chapter").filename().string();
 }
 
 // Turns the body's outcome into an exit status: usage errors 2, failures 1.
@@ -574,7 +375,7 @@ int run_chapter(int argc, char** argv, const ChapterSpec& spec, const RendererFa
                    [&](const Options& options) {
                        std::shared_ptr<const ValidationCounts> counts;
                        {
-                           ChapterRun run(options, spec);
+                           detail::ChapterRun run(options, spec);
                            if (run.validation()) counts = run.counts();
                            run.run(factory);
                        }  // everything destroyed: the layer has said all it will say

@@ -1,12 +1,14 @@
+// The glTF scene (chapter 10): what tinygltf parsed (gltf_files.cpp), read
+// through bounds-checked accessors (gltf_accessors.cpp), flattened into the
+// CPU-side arrays of GltfScene. The GPU upload is the chapter's own.
+
 #include "vkt/scene/gltf.hpp"
+
+#include "gltf_internal.hpp"
 
 #include "vkt/core/check.hpp"
 #include "vkt/core/files.hpp"
 #include "vkt/resources/texture.hpp"
-
-// Debian builds tinygltf as a shared library (TINYGLTF_IMPLEMENTATION lives in
-// libtinygltf.so, with its own stb_image); we only include the declarations.
-#include <tiny_gltf.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -14,88 +16,21 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <exception>
 #include <limits>
 #include <map>
 #include <optional>
-#include <set>
 #include <span>
 
 namespace vkt {
 
 namespace {
 
-// The loader's own image "decoder" for tinygltf: keep the file's bytes as they
-// are, decode them later with vkt::decode_image. An image stored in a
-// bufferView is skipped here: tinygltf hands it over without checking the
-// view against its buffer, so we read those bytes ourselves, checked.
-bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
-                      const unsigned char* bytes, int size, void*) {
-    if (image->bufferView < 0 && bytes && size > 0) image->image.assign(bytes, bytes + size);
-    image->width = image->height = 0;  // not decoded (yet)
-    return true;
-}
-
-std::string first_line(const std::string& text) {
-    std::string line = text.substr(0, text.find('\n'));
-    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
-    return line;
-}
-
-const char* component_name(int component_type) {
-    switch (component_type) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE:
-            return "BYTE";
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            return "UNSIGNED_BYTE";
-        case TINYGLTF_COMPONENT_TYPE_SHORT:
-            return "SHORT";
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-            return "UNSIGNED_SHORT";
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-            return "UNSIGNED_INT";
-        case TINYGLTF_COMPONENT_TYPE_FLOAT:
-            return "FLOAT";
-        default:
-            return "an unknown component type";
-    }
-}
-
-const char* type_name(int type) {
-    switch (type) {
-        case TINYGLTF_TYPE_SCALAR:
-            return "SCALAR";
-        case TINYGLTF_TYPE_VEC2:
-            return "VEC2";
-        case TINYGLTF_TYPE_VEC3:
-            return "VEC3";
-        case TINYGLTF_TYPE_VEC4:
-            return "VEC4";
-        case TINYGLTF_TYPE_MAT2:
-            return "MAT2";
-        case TINYGLTF_TYPE_MAT3:
-            return "MAT3";
-        case TINYGLTF_TYPE_MAT4:
-            return "MAT4";
-        default:
-            return "an unknown type";
-    }
-}
-
-// What an accessor may hold for each use, as the glTF 2.0 specification lists it.
-struct AllowedFormat {
-    int type;
-    std::vector<int> components;  // component types
-    bool needs_normalized;        // integer components must be normalized
-};
-
 class Loader {
 public:
     explicit Loader(std::filesystem::path path) : path_(std::move(path)) {}
 
     GltfScene load() {
-        parse();
+        model_ = gltf_detail::parse_gltf_file(path_);
         check_extensions();
         load_materials();
         walk_nodes();
@@ -122,35 +57,6 @@ private:
             scene_.warnings.push_back(what);
     }
 
-    // --- The file: tinygltf parses JSON, .glb chunks, buffers -------------
-    void parse() {
-        std::vector<char> file = read_file(path_);  // "cannot open FILE"
-        if (file.empty()) fail("not a glTF file: it is empty");
-        if (file.size() > std::numeric_limits<unsigned int>::max())
-            fail("not a glTF file this loader reads: larger than 4 GiB");
-        tinygltf::TinyGLTF gltf;
-        gltf.SetImageLoader(keep_image_bytes, nullptr);
-        std::string err, warn_text;
-        const std::string base_dir = path_.parent_path().string();
-        const bool glb = file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
-        bool ok = false;
-        try {
-            if (glb)
-                ok = gltf.LoadBinaryFromMemory(&model_, &err, &warn_text,
-                                               reinterpret_cast<const unsigned char*>(file.data()),
-                                               static_cast<unsigned int>(file.size()), base_dir);
-            else
-                ok = gltf.LoadASCIIFromString(&model_, &err, &warn_text, file.data(),
-                                              static_cast<unsigned int>(file.size()), base_dir);
-        } catch (const std::exception& e) {  // tinygltf's JSON library may throw
-            err = e.what();
-            ok = false;
-        }
-        if (!ok)
-            fail(std::string("not a glTF file") + (glb ? " (.glb)" : "") + ": " +
-                 (err.empty() ? "tinygltf cannot parse it" : first_line(err)));
-    }
-
     void check_extensions() {
         for (const std::string& name : model_.extensionsRequired)
             fail("requires extension " + name + ", which this loader does not support");
@@ -161,198 +67,6 @@ private:
             warn("animations are not supported: the scene stands still");
         if (!model_.cameras.empty())
             warn("cameras are ignored: the chapter frames the scene itself");
-    }
-
-    // --- Bounds-checked access to accessor data ---------------------------
-    // The bytes of buffer view `index`, checked against its buffer.
-    std::span<const uint8_t> view_bytes(int index, const std::string& what) const {
-        if (index < 0 || size_t(index) >= model_.bufferViews.size())
-            fail(what + ": bufferView " + std::to_string(index) + " does not exist");
-        const tinygltf::BufferView& view = model_.bufferViews[size_t(index)];
-        if (view.buffer < 0 || size_t(view.buffer) >= model_.buffers.size())
-            fail(what + ": bufferView " + std::to_string(index) + " names buffer " +
-                 std::to_string(view.buffer) + ", which does not exist");
-        const std::vector<unsigned char>& data = model_.buffers[size_t(view.buffer)].data;
-        if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
-            fail(what + ": bufferView " + std::to_string(index) + " (offset " +
-                 std::to_string(view.byteOffset) + ", length " + std::to_string(view.byteLength) +
-                 ") runs past the end of buffer " + std::to_string(view.buffer) + " (" +
-                 std::to_string(data.size()) + " bytes)");
-        return {data.data() + view.byteOffset, view.byteLength};
-    }
-
-    const tinygltf::Accessor& accessor(int index, const std::string& what) const {
-        if (index < 0 || size_t(index) >= model_.accessors.size())
-            fail(what + ": accessor " + std::to_string(index) + " does not exist");
-        return model_.accessors[size_t(index)];
-    }
-
-    // Reads accessor `index` as `count` elements of `out_components` floats
-    // each (integers normalised to 0..1 where the accessor says so; indices
-    // are read with read_indices instead). Checks its type against `allowed`
-    // and every byte against the end of its view.
-    std::vector<float> read_floats(int index, const std::string& what,
-                                   const std::vector<AllowedFormat>& allowed) const {
-        const tinygltf::Accessor& a = accessor(index, what);
-        const std::string name = what + ": accessor " + std::to_string(index);
-        bool ok = false;
-        for (const AllowedFormat& f : allowed)
-            if (a.type == f.type &&
-                std::find(f.components.begin(), f.components.end(), a.componentType) !=
-                    f.components.end() &&
-                (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || !f.needs_normalized ||
-                 a.normalized))
-                ok = true;
-        if (!ok)
-            fail(name + " is " + type_name(a.type) + " of " + component_name(a.componentType) +
-                 (a.normalized ? " (normalized)" : "") + ", which glTF does not allow here");
-        const int components = tinygltf::GetNumComponentsInType(uint32_t(a.type));
-        const int component_size = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
-        std::vector<float> out;
-        if (a.count > (size_t(1) << 28))
-            fail(name + ": count " + std::to_string(a.count) + " is too large");
-        out.assign(a.count * size_t(components), 0.0f);
-        const size_t element_size = size_t(components * component_size);
-        // One element's components, from `element`, into out[i].
-        auto decode = [&](const uint8_t* element, size_t i) {
-            for (int c = 0; c < components; ++c) {
-                const uint8_t* p = element + c * component_size;
-                float v = 0;
-                switch (a.componentType) {
-                    case TINYGLTF_COMPONENT_TYPE_FLOAT:
-                        std::memcpy(&v, p, 4);
-                        break;
-                    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-                        v = float(*p) / 255.0f;
-                        break;
-                    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-                        uint16_t s;
-                        std::memcpy(&s, p, 2);
-                        v = float(s) / 65535.0f;
-                        break;
-                    }
-                    default:
-                        break;  // excluded by `allowed`
-                }
-                out[i * size_t(components) + size_t(c)] = v;
-            }
-        };
-        if (a.bufferView >= 0) {  // no view: all zeros, as glTF says
-            std::span<const uint8_t> bytes = element_range(a, name, element_size);
-            const size_t stride = stride_of(a, element_size);
-            for (size_t i = 0; i < a.count; ++i)
-                decode(bytes.data() + a.byteOffset + i * stride, i);
-        }
-        if (a.sparse.isSparse) apply_sparse(a, name, element_size, decode);
-        return out;
-    }
-
-    // A sparse accessor replaces some of its elements: `count` indices (which
-    // elements) and as many values, each tightly packed in its own view.
-    template <typename Decode>
-    void apply_sparse(const tinygltf::Accessor& a, const std::string& name, size_t element_size,
-                      Decode& decode) const {
-        const auto& sparse = a.sparse;
-        const std::string what = name + " (sparse)";
-        if (sparse.count < 1 || size_t(sparse.count) > a.count)
-            fail(what + ": count " + std::to_string(sparse.count) + " is not between 1 and " +
-                 std::to_string(a.count));
-        const int ict = sparse.indices.componentType;
-        if (ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-            ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-            ict != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-            fail(what + ": indices are " + component_name(ict) +
-                 ", not UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
-        const size_t count = size_t(sparse.count);
-        const size_t index_size = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(ict)));
-        // Each view must hold byteOffset + count elements (count * size <= 2^28 * 64: no overflow).
-        auto packed = [&](int view, int offset, size_t size, const char* part) {
-            std::span<const uint8_t> bytes = view_bytes(view, what + " " + part);
-            if (offset < 0 || size_t(offset) > bytes.size() ||
-                count * size > bytes.size() - size_t(offset))
-                fail(what + ": " + part + " (count " + std::to_string(count) + ", byteOffset " +
-                     std::to_string(offset) + ") run past the end of bufferView " +
-                     std::to_string(view) + " (" + std::to_string(bytes.size()) + " bytes)");
-            return bytes.data() + offset;
-        };
-        const uint8_t* indices =
-            packed(sparse.indices.bufferView, sparse.indices.byteOffset, index_size, "indices");
-        const uint8_t* values =
-            packed(sparse.values.bufferView, sparse.values.byteOffset, element_size, "values");
-        for (size_t i = 0; i < count; ++i) {
-            uint32_t target = 0;
-            if (index_size == 1) {
-                target = indices[i];
-            } else if (index_size == 2) {
-                uint16_t v;
-                std::memcpy(&v, indices + 2 * i, 2);
-                target = v;
-            } else {
-                std::memcpy(&target, indices + 4 * i, 4);
-            }
-            if (target >= a.count)
-                fail(what + ": index " + std::to_string(i) + " is " + std::to_string(target) +
-                     ", past the end of the accessor (" + std::to_string(a.count) + " elements)");
-            decode(values + i * element_size, target);
-        }
-    }
-
-    size_t stride_of(const tinygltf::Accessor& a, size_t element_size) const {
-        const size_t declared = model_.bufferViews[size_t(a.bufferView)].byteStride;
-        return declared == 0 ? element_size : declared;
-    }
-
-    // The accessor's view, after checking that every element lies inside it.
-    std::span<const uint8_t> element_range(const tinygltf::Accessor& a, const std::string& name,
-                                           size_t element_size) const {
-        std::span<const uint8_t> bytes = view_bytes(a.bufferView, name);
-        const size_t stride = stride_of(a, element_size);
-        if (stride < element_size)
-            fail(name + ": byteStride " + std::to_string(stride) +
-                 " is smaller than one element (" + std::to_string(element_size) + " bytes)");
-        // offset + stride * (count - 1) + element_size <= view length, without overflow
-        // (count is at most 2^28 here and stride at most 2^32 in any file we read).
-        const uint64_t end =
-            a.count == 0 ? uint64_t(a.byteOffset)
-                         : uint64_t(a.byteOffset) + uint64_t(stride) * (a.count - 1) + element_size;
-        if (a.byteOffset > bytes.size() || end > bytes.size())
-            fail(name + " (count " + std::to_string(a.count) + ", byteOffset " +
-                 std::to_string(a.byteOffset) + ", stride " + std::to_string(stride) +
-                 ") runs past the end of bufferView " + std::to_string(a.bufferView) + " (" +
-                 std::to_string(bytes.size()) + " bytes)");
-        return bytes;
-    }
-
-    std::vector<uint32_t> read_indices(int index, const std::string& what) const {
-        const tinygltf::Accessor& a = accessor(index, what);
-        const std::string name = what + ": index accessor " + std::to_string(index);
-        const int ct = a.componentType;
-        if (a.type != TINYGLTF_TYPE_SCALAR || (ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-                                               ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-                                               ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
-            fail(name + " is " + type_name(a.type) + " of " + component_name(ct) +
-                 ", which glTF does not allow for indices (SCALAR of UNSIGNED_BYTE, "
-                 "UNSIGNED_SHORT or UNSIGNED_INT)");
-        if (a.count > (size_t(1) << 28))
-            fail(name + ": count " + std::to_string(a.count) + " is too large");
-        std::vector<uint32_t> out(a.count, 0);
-        if (a.bufferView < 0) return out;
-        const size_t size = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(ct)));
-        std::span<const uint8_t> bytes = element_range(a, name, size);
-        const size_t stride = stride_of(a, size);
-        for (size_t i = 0; i < a.count; ++i) {
-            const uint8_t* p = bytes.data() + a.byteOffset + i * stride;
-            if (size == 1) {
-                out[i] = *p;
-            } else if (size == 2) {
-                uint16_t v;
-                std::memcpy(&v, p, 2);
-                out[i] = v;
-            } else {
-                std::memcpy(&out[i], p, 4);
-            }
-        }
-        return out;
     }
 
     // --- Materials and images ---------------------------------------------
@@ -418,18 +132,19 @@ private:
         const tinygltf::Image& source = model_.images[size_t(index)];
         std::string what = path_.string() + ": image " + std::to_string(index);
         if (!source.uri.empty() && source.uri.rfind("data:", 0) != 0)
-            what += " (" + source.uri + ")";
+            what += " (" + printable(source.uri) + ")";
         RgbaImage decoded;
         if (source.bufferView >= 0) {
             std::span<const uint8_t> bytes =
-                view_bytes(source.bufferView, "image " + std::to_string(index));
+                data_.view_bytes(source.bufferView, "image " + std::to_string(index));
             decoded = decode_image(bytes, what);
         } else if (!source.image.empty()) {
             decoded = decode_image(source.image, what);
         } else if (!source.uri.empty() && source.uri.rfind("data:", 0) != 0) {
-            // tinygltf could not read the external file: say which one, as
-            // load_image_file does ("cannot open FILE").
-            decoded = load_image_file(path_.parent_path() / source.uri);
+            // The file was not there, or empty: a file refused (outside the
+            // folder, too large) has already failed in parse_gltf_file.
+            fail("image " + std::to_string(index) + " (" + printable(source.uri) +
+                 "): cannot open it, or it is empty");
         } else {
             fail("image " + std::to_string(index) + " has no data (an unsupported data: URI?)");
         }
@@ -480,7 +195,7 @@ private:
         }
         // Sparse vertex attributes are read (read_floats); sparse indices,
         // which no exporter we know writes, are not.
-        if (source.indices >= 0 && accessor(source.indices, what).sparse.isSparse) {
+        if (source.indices >= 0 && data_.accessor(source.indices, what).sparse.isSparse) {
             warn("sparse index accessors are not supported: primitives using one are skipped");
             return std::nullopt;
         }
@@ -489,18 +204,19 @@ private:
                 warn("attribute " + name + " is ignored");
 
         const int F = TINYGLTF_COMPONENT_TYPE_FLOAT;
-        const std::vector<float> positions =
-            read_floats(position->second, what + " POSITION", {{TINYGLTF_TYPE_VEC3, {F}, false}});
+        const std::vector<float> positions = data_.read_floats(position->second, what + " POSITION",
+                                                               {{TINYGLTF_TYPE_VEC3, {F}, false}});
         const size_t count = positions.size() / 3;
         std::vector<float> normals, uvs;
         if (auto n = source.attributes.find("NORMAL"); n != source.attributes.end())
-            normals = read_floats(n->second, what + " NORMAL", {{TINYGLTF_TYPE_VEC3, {F}, false}});
+            normals =
+                data_.read_floats(n->second, what + " NORMAL", {{TINYGLTF_TYPE_VEC3, {F}, false}});
         if (auto t = source.attributes.find("TEXCOORD_0"); t != source.attributes.end())
-            uvs = read_floats(t->second, what + " TEXCOORD_0",
-                              {{TINYGLTF_TYPE_VEC2,
-                                {F, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
-                                true}});
+            uvs = data_.read_floats(t->second, what + " TEXCOORD_0",
+                                    {{TINYGLTF_TYPE_VEC2,
+                                      {F, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                       TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                                      true}});
         if (!normals.empty() && normals.size() / 3 != count)
             fail(what + ": NORMAL has " + std::to_string(normals.size() / 3) +
                  " elements but POSITION has " + std::to_string(count));
@@ -510,7 +226,7 @@ private:
 
         std::vector<uint32_t> indices;
         if (source.indices >= 0) {
-            indices = read_indices(source.indices, what);
+            indices = data_.read_indices(source.indices, what);
             for (size_t i = 0; i < indices.size(); ++i)
                 if (indices[i] >= count)
                     fail(what + ": index " + std::to_string(i) + " is " +
@@ -661,6 +377,7 @@ private:
 
     std::filesystem::path path_;
     tinygltf::Model model_;
+    gltf_detail::Accessors data_{model_, path_};
     GltfScene scene_;
     std::map<int, std::vector<uint32_t>> mesh_primitives_;
     std::map<int, int32_t> image_slots_;

@@ -22,7 +22,9 @@
 // drawn with a linear, repeating sampler). Refused with one clear line:
 // anything out of bounds, a type glTF does not allow, an undecodable image,
 // an extension in extensionsRequired, a scene with nothing to draw (the
-// line then lists what was skipped, which is usually why).
+// line then lists what was skipped, which is usually why), and a URI that
+// leads out of the model's folder, names a directory or a file past 1 GiB
+// (the model's own files are all it may read: see vkt::resolve_inside).
 
 #include "vkt/resources/image_io.hpp"
 

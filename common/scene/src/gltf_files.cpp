@@ -1,0 +1,155 @@
+// The glTF file and the files it names (chapter 10). tinygltf parses; every
+// file it wants goes through FsCallbacks of our own, which hold it to three
+// rules, because a model may come from anywhere:
+//
+//   - only files inside the model's own folder: a URI that is absolute, or
+//     leads out of the folder with ".." or a symbolic link, is refused by
+//     name (tinygltf alone would read "../../../etc/passwd");
+//   - only regular files, of 1 GiB at most (vkt::read_file): tinygltf alone
+//     asks a directory for its size and allocates 2^63 bytes, which is what
+//     the image URI "%!QAAAQAAA5" of tinygltf's issue 416 leads to;
+//   - the first refusal is the error, naming the model and the URI, even
+//     where tinygltf would only have warned (it does for images).
+//
+// Data URIs are not files: tinygltf decodes those it knows (base64 buffers
+// and PNG, JPEG, BMP, GIF images), compares a buffer's decoded length with
+// its byteLength, and our 1 GiB cap on the .gltf keeps its int lengths from
+// overflowing. A data: URI of any other kind would reach us as a file name,
+// and is refused by name.
+
+#include "gltf_internal.hpp"
+
+#include "vkt/core/check.hpp"
+#include "vkt/core/files.hpp"
+
+#include <cstring>
+#include <exception>
+#include <optional>
+
+namespace vkt::gltf_detail {
+
+namespace {
+
+// What the callbacks share: where the model's folder is, and why a file was
+// refused.
+struct FileAccess {
+    std::filesystem::path folder;
+    std::string prefix;   // folder as tinygltf joins it to a URI: ".../folder/"
+    std::string refusal;  // the first refusal, "URI "../x" leads out of ..."
+
+    void refuse(const std::string& why) {
+        if (refusal.empty()) refusal = why;
+    }
+
+    // The file tinygltf asks for, if it may have it. tinygltf hands over
+    // prefix + URI (%-decoded), and then "./" + URI, the working directory,
+    // which we never look in.
+    std::optional<std::filesystem::path> inside(const std::string& joined) {
+        if (joined.compare(0, prefix.size(), prefix) != 0) return std::nullopt;
+        const std::string uri = joined.substr(prefix.size());
+        if (uri.rfind("data:", 0) == 0) {
+            refuse("URI \"" + printable(uri, 40) +
+                   "\" is a data: URI of a kind tinygltf does not decode (base64 "
+                   "application/octet-stream, application/gltf-buffer, image/png, image/jpeg, "
+                   "image/bmp, image/gif or text/plain)");
+            return std::nullopt;
+        }
+        try {
+            return resolve_inside(folder, uri);
+        } catch (const Error& e) {
+            refuse(e.what());
+            return std::nullopt;
+        }
+    }
+};
+
+std::string no_expansion(const std::string& path, void*) {
+    return path;  // no "~", no environment variables: a URI is a file name
+}
+
+bool file_exists(const std::string& path, void* user) {
+    const std::optional<std::filesystem::path> file = static_cast<FileAccess*>(user)->inside(path);
+    std::error_code error;
+    return file && std::filesystem::exists(*file, error);  // a directory, too: read_file says so
+}
+
+bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                     void* user) {
+    auto* access = static_cast<FileAccess*>(user);
+    const std::optional<std::filesystem::path> file = access->inside(path);
+    try {
+        if (!file) throw Error(access->refusal.empty() ? "cannot open " + path : access->refusal);
+        const std::vector<char> bytes = read_file(*file);  // regular, 1 GiB at most
+        out->assign(bytes.begin(), bytes.end());
+        return true;
+    } catch (const Error& e) {
+        access->refuse(e.what());
+        if (err) *err += std::string(e.what()) + "\n";
+        return false;
+    }
+}
+
+bool write_nothing(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "the glTF loader writes no files\n";
+    return false;
+}
+
+// The loader's own image "decoder" for tinygltf: keep the file's bytes as they
+// are, decode them later with vkt::decode_image. An image stored in a
+// bufferView is skipped here: tinygltf hands it over without checking the
+// view against its buffer, so we read those bytes ourselves, checked.
+bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+    if (image->bufferView < 0 && bytes && size > 0) image->image.assign(bytes, bytes + size);
+    image->width = image->height = 0;  // not decoded (yet)
+    return true;
+}
+
+// tinygltf's first complaint, fit for one line (it may quote a whole data: URI).
+std::string first_line(const std::string& text) {
+    std::string line = text.substr(0, text.find('\n'));
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    return printable(line, 200);
+}
+
+}  // namespace
+
+tinygltf::Model parse_gltf_file(const std::filesystem::path& path) {
+    auto fail = [&](const std::string& what) { throw Error(path.string() + ": " + what); };
+    std::vector<char> file = read_file(path);  // "cannot open FILE", directories, 1 GiB
+    if (file.empty()) fail("not a glTF file: it is empty");
+
+    FileAccess access;
+    access.folder = std::filesystem::absolute(path).parent_path();
+    const std::string base_dir = access.folder.string();
+    access.prefix = base_dir.ends_with('/') ? base_dir : base_dir + "/";
+    tinygltf::TinyGLTF gltf;
+    gltf.SetFsCallbacks(
+        {file_exists, no_expansion, read_whole_file, write_nothing, static_cast<void*>(&access)});
+    gltf.SetImageLoader(keep_image_bytes, nullptr);
+
+    tinygltf::Model model;
+    std::string err, warn_text;
+    const bool glb = file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
+    bool ok = false;
+    try {
+        // read_file's cap keeps the size within tinygltf's unsigned int.
+        if (glb)
+            ok = gltf.LoadBinaryFromMemory(&model, &err, &warn_text,
+                                           reinterpret_cast<const unsigned char*>(file.data()),
+                                           static_cast<unsigned int>(file.size()), base_dir);
+        else
+            ok = gltf.LoadASCIIFromString(&model, &err, &warn_text, file.data(),
+                                          static_cast<unsigned int>(file.size()), base_dir);
+    } catch (const std::exception& e) {  // tinygltf's JSON library may throw
+        err = e.what();
+        ok = false;
+    }
+    if (!access.refusal.empty()) fail(access.refusal);  // even if tinygltf only warned
+    if (!ok)
+        fail(std::string("not a glTF file") + (glb ? " (.glb)" : "") + ": " +
+             (err.empty() ? "tinygltf cannot parse it" : first_line(err)));
+    return model;
+}
+
+}  // namespace vkt::gltf_detail

@@ -1,0 +1,70 @@
+#pragma once
+// The glTF loader's parts (chapter 10), private to common/scene: not on any
+// include path, so no chapter sees tinygltf. vkt::load_gltf (gltf.hpp) is
+// three steps, one file each:
+//
+//   gltf_files.cpp      the file, and every file it names, read through
+//                       tinygltf's FsCallbacks of our own (inside the model's
+//                       folder only, no directories, 1 GiB at most); tinygltf
+//                       parses the JSON, the .glb chunks and the data: URIs
+//   gltf_accessors.cpp  the bytes of a buffer view or an accessor, with every
+//                       index, offset, stride and count checked first
+//   gltf.cpp            the scene: materials and images, meshes and their
+//                       primitives, the node tree, flattened into GltfScene
+
+#include <tiny_gltf.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace vkt::gltf_detail {
+
+// Parses `path` (.gltf or .glb, told apart by its first four bytes). Images
+// are kept as their file's bytes (Image::image), not decoded. Throws Error
+// "PATH: what is wrong", one line, for a file that is missing, too large, not
+// glTF, or names a file outside its folder.
+tinygltf::Model parse_gltf_file(const std::filesystem::path& path);
+
+// What an accessor may hold for each use, as the glTF 2.0 specification lists it.
+struct AllowedFormat {
+    int type;
+    std::vector<int> components;  // component types
+    bool needs_normalized;        // integer components must be normalized
+};
+
+// Bounds-checked reads of a parsed model's data. Every failure throws Error
+// "PATH: WHAT: what is wrong", WHAT saying where the caller was reading
+// ("mesh 0 primitive 1 NORMAL").
+class Accessors {
+public:
+    Accessors(const tinygltf::Model& model, std::filesystem::path path)
+        : model_(model), path_(std::move(path)) {}
+
+    // The bytes of buffer view `index`, checked against its buffer.
+    std::span<const uint8_t> view_bytes(int index, const std::string& what) const;
+    const tinygltf::Accessor& accessor(int index, const std::string& what) const;
+    // Accessor `index` as floats, its components one after another (integers
+    // normalised to 0..1 where the accessor says so), sparse elements applied.
+    // Checks its type against `allowed` and every byte against its view.
+    std::vector<float> read_floats(int index, const std::string& what,
+                                   const std::vector<AllowedFormat>& allowed) const;
+    // Index accessor `index` (SCALAR of an unsigned type), widened to 32 bits.
+    std::vector<uint32_t> read_indices(int index, const std::string& what) const;
+
+private:
+    [[noreturn]] void fail(const std::string& what) const;
+    template <typename Decode>
+    void apply_sparse(const tinygltf::Accessor& a, const std::string& name, size_t element_size,
+                      Decode& decode) const;
+    size_t stride_of(const tinygltf::Accessor& a, size_t element_size) const;
+    std::span<const uint8_t> element_range(const tinygltf::Accessor& a, const std::string& name,
+                                           size_t element_size) const;
+
+    const tinygltf::Model& model_;
+    std::filesystem::path path_;
+};
+
+}  // namespace vkt::gltf_detail
