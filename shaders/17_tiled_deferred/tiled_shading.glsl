@@ -5,10 +5,10 @@
 
 const vec3 background = vec3(0.02, 0.02, 0.04);
 
-// Blue (no lights) through cyan, green and yellow to red (MAX_TILE_LIGHTS),
+// Blue (no lights) through cyan, green and yellow to red (1,024 and more),
 // on a log scale: 1, 31 and 1023 lights lie at 0.1, 0.5 and 1.
 vec3 heat_ramp(uint count) {
-    float t = log2(1.0 + float(count)) / log2(1.0 + float(MAX_TILE_LIGHTS));
+    float t = min(log2(1.0 + float(count)) / log2(1.0 + 1024.0), 1.0);
     return clamp(vec3(1.5 - abs(4.0 * t - 3.0), 1.5 - abs(4.0 * t - 2.0),
                       1.5 - abs(4.0 * t - 1.0)), 0.0, 1.0);
 }
