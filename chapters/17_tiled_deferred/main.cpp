@@ -204,8 +204,7 @@ private:
         for (uint32_t i = 0; i < slots; ++i) {
             uniforms_.push_back(vkt::create_host_buffer(gpu_, sizeof(FrameUniforms),
                                                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT));
-            lights_.push_back(
-                vkt::create_host_buffer(gpu_, lights_size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+            lights_.push_back(create_lights_buffer(lights_size, i == 0));
             stats_.push_back(vkt::create_host_buffer(gpu_, sizeof(TileStats),
                                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
             std::memset(stats_[i].mapped, 0, sizeof(TileStats));
@@ -220,6 +219,29 @@ private:
         }
         screen_set_ = vkt::allocate_descriptor_set(device_, pool_, screen_layout_);
     }
+
+    // [lights-memory]
+    // A million lights are 32 MiB a frame, read by every pass. Where the device
+    // has memory of its own that the CPU can map (DEVICE_LOCAL and
+    // HOST_VISIBLE: all of it with a resizable BAR), the CPU writes the lights
+    // there and the passes read them at the GPU memory's speed; elsewhere they
+    // stay in chapter 07's host memory and cross the bus. On lavapipe all
+    // memory is both.
+    vkt::Buffer create_lights_buffer(VkDeviceSize size, bool say) const {
+        const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+        try {
+            vkt::Buffer buffer = vkt::create_buffer(gpu_.physical, device_, size, usage,
+                                                    VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT |
+                                                        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
+                                                        VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+            if (say) std::fprintf(stderr, "17_tiled_deferred: lights in device-local memory\n");
+            return buffer;
+        } catch (const vkt::Error&) {  // no such memory type, or too little of it
+            if (say) std::fprintf(stderr, "17_tiled_deferred: lights in host memory\n");
+            return vkt::create_host_buffer(gpu_, size, usage);
+        }
+    }
+    // [/lights-memory]
 
     ch17::PassSets pass_sets(uint32_t slot) const {
         return {layout_, frame_sets_[slot], screen_set_, stats_[slot].buffer};

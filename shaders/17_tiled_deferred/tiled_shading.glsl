@@ -38,9 +38,11 @@ vec3 shade_tile(ivec2 pixel, uvec2 size, uint count, uint found, int view) {
     vec3 v = normalize(frame.camera_position - position);
     vec3 colour = frame.ambient * m.albedo;
     for (uint i = 0; i < count; ++i) {  // the tile's lights only
-        PointLight light = lights[TILE_LIGHT(i)];
-        if (distance(light.position, position) >= light.radius) continue;
-        colour += shade_point_light(position, n, v, m.albedo, light, FALLOFF_WINDOWED,
+        // Most of the list does not reach this pixel: read a light's position
+        // and radius first, and the rest only for the few that do.
+        uint j = TILE_LIGHT(i);
+        if (distance(lights[j].position, position) >= lights[j].radius) continue;
+        colour += shade_point_light(position, n, v, m.albedo, lights[j], FALLOFF_WINDOWED,
                                     vec3(1.0, 0.0, 0.0), m.specular, m.shininess);
     }
     return colour;
