@@ -274,7 +274,7 @@ private:
         most_entries_ = std::max(most_entries_, stats.binned_entries);
         most_candidates_ = std::max(most_candidates_, stats.most_candidates);
         // Candidates the fill dropped: counted, and the bins grow for the next frames.
-        if (stats.binned_entries > bins_.capacity()) ++dropped_frames_;
+        if (stats.binned_entries > stats.binned_budget) ++dropped_frames_;
         if (binned_ && !finished && bins_.grow(stats.binned_entries))
             bins_.write_descriptors(screen_set_);
     }
@@ -302,8 +302,8 @@ private:
             tiles_.shade(cmd, sets, e, lit, binned);
         };
         if (verify_ == "bins") {
-            ch17::verify_bins(gpu_, e, light_count_, tiles_, bins_.capacity(), stats_[slot].mapped,
-                              gbuffer_and_bins, tiled_fragment, tiled_compute);
+            ch17::verify_bins(gpu_, e, light_count_, tiles_, stats_[slot].mapped, gbuffer_and_bins,
+                              tiled_fragment, tiled_compute);
             return;
         }
         ch17::verify_brute(
@@ -386,7 +386,7 @@ int main(int argc, char** argv) {
          .type = vkt::OptionType::integer,
          .value_name = "N",
          .help = "--cull binned: room for N candidates in all bins at the start, 0: 4 per "
-                 "light or 32 per tile, whichever is more (it grows when a frame needs more)",
+                 "light or 64 per tile, whichever is more (it grows when a frame needs more)",
          .default_value = "0",
          .min = 0,
          .max = double(1u << 30)},

@@ -25,7 +25,7 @@ constexpr VkFormat shaded_format = VK_FORMAT_R32G32B32A32_SFLOAT;  // --shade co
 
 struct TileStats {  // TileStats in tiles.glsl
     uint32_t overflowed_tiles, most_lights, total_lights, lit_tiles;
-    uint32_t binned_entries, most_candidates;  // --cull binned
+    uint32_t binned_entries, binned_budget, most_candidates;  // --cull binned
 };
 
 // Every pass after the G-buffer binds the same two sets through one pipeline

@@ -27,7 +27,7 @@ struct HostLists {
 // Throws vkt::Error when a tile's lists differ, when the pictures differ by
 // more than the tolerance, or when the bins dropped candidates.
 inline void verify_bins(const vkt::Gpu& gpu, VkExtent2D e, uint32_t light_count,
-                        const TilePass& tiles, uint32_t capacity, void* stats,
+                        const TilePass& tiles, void* stats,
                         const std::function<void(VkCommandBuffer)>& gbuffer_and_bins,
                         const std::function<void(VkCommandBuffer, VkImageView, bool)>& fragment,
                         const std::function<void(VkCommandBuffer, bool)>& compute) {
@@ -141,10 +141,11 @@ inline void verify_bins(const vkt::Gpu& gpu, VkExtent2D e, uint32_t light_count,
                      "difference %g (tolerance %g)%s\n",
                      shade ? "compute" : "fragment", difference[shade], tolerance,
                      overflowed ? ", overflowed tiles left out" : "");
-    if (counted.binned_entries > capacity)
+    if (counted.binned_entries > counted.binned_budget)
         throw vkt::Error("--verify bins: the bins needed " +
                          std::to_string(counted.binned_entries) + " candidates, above their " +
-                         "budget of " + std::to_string(capacity) + ": some were dropped");
+                         "budget of " + std::to_string(counted.binned_budget) +
+                         ": some were dropped");
     if (differ != 0)
         throw vkt::Error("--verify bins: " + std::to_string(differ) +
                          " tiles' lists differ, the first tile " + std::to_string(first_differ) +

@@ -42,6 +42,9 @@ void main() {
         bin_counts[t] = 0;
         offset += count;
     }
-    if (k == 255) stats.binned_entries = sums[255];
+    if (k == 255) {  // for the CPU: what the bins need, and what they have
+        stats.binned_entries = sums[255];
+        stats.binned_budget = bin_lights.length();
+    }
 }
 // [/scan]

@@ -97,6 +97,7 @@ layout(set = 0, binding = 2, std430) buffer TileStats {
     uint total_lights;      // summed over the tiles
     uint lit_tiles;         // tiles with something drawn
     uint binned_entries;    // --cull binned: the candidates in all bins (the scan's total)
+    uint binned_budget;     // --cull binned: the room for them (beyond it, dropped)
     uint most_candidates;   // --cull binned: the most candidates a lit tile tested
 } stats;
 #endif
