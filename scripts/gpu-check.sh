@@ -72,6 +72,8 @@ sweep() {
 [ -x "$bin/15_bindless" ] && sweep 15_bindless benchmarks/15_bindless.sh "$bin" 200
 if [ -x "$bin/17_tiled_deferred" ]; then
   sweep lights scripts/bench-lights.sh "$bin/16_deferred" --tiled "$bin/17_tiled_deferred" --size 1920x1080 --frames 10
+  # Chapter 17's binning: its checks, then --cull tiled against --cull binned.
+  sweep binned benchmarks/17_tiled_deferred_binned.sh "$bin" 1920x1080
 elif [ -x "$bin/16_deferred" ]; then
   sweep lights scripts/bench-lights.sh "$bin/16_deferred" --size 1920x1080 --frames 20
 fi

@@ -11,20 +11,31 @@
 //   --shade compute:  one dispatch culls and lights, the list never leaving
 //                     shared memory; the result is copied to the target.
 //
+// Which lights a tile tests is the second choice:
+//
+//   --cull tiled:  every light (the first step: tiles x lights tests);
+//   --cull binned: only the candidates in the tile's bin; three compute
+//                  passes before the tile pass put each light into the bins
+//                  of the tiles its sphere may cover (the second step).
+//
 // --view heat shows how many lights each tile kept. --verify brute compares
-// both tiled results with chapter 16's brute-force lighting pass.
+// both tiled results with chapter 16's brute-force lighting pass; --verify
+// bins compares the binned lists and pictures with the tiled ones.
 //
 // Where the parts live: chapter 16's G-buffer pass in vkt/scene/gbuffer_pass.hpp;
-// the tile pass (cull, or cull and shade) in tile_pass.hpp; the fragment
-// lighting pass in lighting_pass.hpp; the check in verify_brute.hpp; the
-// frame's data and the frame here.
+// the binning in bin_pass.hpp; the tile pass (cull, or cull and shade) in
+// tile_pass.hpp; the fragment lighting pass in lighting_pass.hpp; the checks
+// in verify_brute.hpp and verify_bins.hpp; the frame's data and the frame here.
 
+#include "bin_pass.hpp"
 #include "lighting_pass.hpp"
 #include "tile_pass.hpp"
+#include "verify_bins.hpp"
 #include "verify_brute.hpp"
 #include "vkt/resources/descriptors.hpp"
 #include "vkt/resources/upload.hpp"
 #include "vkt/scene/gbuffer_pass.hpp"
+#include "vkt/scene/moving_lights.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -37,7 +48,9 @@ namespace {
 using namespace vkt::deferred;  // chapter 16's blocks, scene and G-buffer pass
 using ch17::TileStats;
 
-constexpr uint32_t max_lights = 65536;  // as chapter 16: 2 MiB of lights per frame in flight
+// 32 MiB of lights per frame in flight, a quarter of the smallest
+// maxStorageBufferRange a device may have (2^27 bytes).
+constexpr uint32_t max_lights = 1048576;
 // --verify renders into float targets, so that nothing is clamped or rounded.
 constexpr VkFormat verify_format = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr int32_t view_heat = 5;  // VIEW_HEAT; VIEW_LIT is chapter 16's view_lit
@@ -48,7 +61,8 @@ public:
         : gpu_(context.gpu()),
           device_(context.device),
           compute_(context.options.text("--shade") == "compute"),
-          verify_(context.options.has("--verify")),
+          binned_(context.options.text("--cull") == "binned"),
+          verify_(context.options.has("--verify") ? context.options.text("--verify") : ""),
           view_(context.options.text("--view") == "heat" ? view_heat : view_lit),
           light_count_(uint32_t(context.options.integer("--lights"))),
           verify_frame_(context.options.frames.value_or(1) - 1),
@@ -61,56 +75,69 @@ public:
               context, scene_,
               VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT),
           tiles_(context, layout_),
-          lighting_(context, layout_, verify_ ? verify_format : VK_FORMAT_UNDEFINED) {
-        std::fprintf(stderr, "17_tiled_deferred: %u light%s, shade %s, view %s\n", light_count_,
-                     light_count_ == 1 ? "" : "s", compute_ ? "compute" : "fragment",
-                     context.options.text("--view").c_str());
+          bins_(context, layout_, light_count_, uint32_t(context.options.integer("--bin-budget"))),
+          lighting_(context, layout_, verify_.empty() ? VK_FORMAT_UNDEFINED : verify_format),
+          moving_(light_count_) {
+        std::fprintf(stderr, "17_tiled_deferred: %u light%s, shade %s, view %s, cull %s\n",
+                     light_count_, light_count_ == 1 ? "" : "s", compute_ ? "compute" : "fragment",
+                     context.options.text("--view").c_str(), binned_ ? "binned" : "tiled");
         create_frame_data(context.frames_in_flight,
                           context.properties.limits.maxStorageBufferRange);
         resize(context.extent);
     }
 
     ~TiledDeferred() override {
-        for (uint32_t slot = 0; slot < stats_.size(); ++slot) read_stats(slot);
+        for (uint32_t slot = 0; slot < stats_.size(); ++slot) read_stats(slot, true);
         if (tiles_seen_ > 0)
             std::fprintf(stderr,
                          "17_tiled_deferred: lights per lit tile: mean %.1f, most %u (a list "
                          "holds %u); tiles overflowed: %u\n",
                          double(lights_seen_) / double(tiles_seen_), most_lights_,
                          ch17::max_tile_lights, overflowed_);
+        if (binned_ && tiles_seen_ > 0)
+            std::fprintf(stderr,
+                         "17_tiled_deferred: bins: most candidates in a frame %u (budget %u), "
+                         "in a lit tile %u; frames that dropped candidates: %u\n",
+                         most_entries_, bins_.capacity(), most_candidates_, dropped_frames_);
     }
 
-    // Everything as large as the screen: the G-buffer, the tiles' lists, the
-    // compute path's output; set 1 points at them.
+    // Everything as large as the screen: the G-buffer, the tiles' lists and
+    // bins, the compute path's output; set 1 points at them.
     void resize(VkExtent2D extent) override {
         gbuffer_.resize(extent);
         tiles_.resize(extent);
+        bins_.resize(extent);
         gbuffer_.write_descriptors(screen_set_);
         tiles_.write_descriptors(screen_set_);
+        bins_.write_descriptors(screen_set_);
     }
 
     // [frame]
     void record(const vkt::Frame& frame) override {
         read_stats(frame.slot);  // the last use of this slot is finished
         update(frame.slot, frame.extent, float(frame.time));
-        if (verify_ && frame.index == verify_frame_) verify(frame.slot, frame.extent);
+        if (!verify_.empty() && frame.index == verify_frame_) verify(frame.slot, frame.extent);
         const VkCommandBuffer cmd = frame.cmd;
         const ch17::PassSets sets = pass_sets(frame.slot);
         {
             auto scope = frame.gpu_scope("gbuffer");
             gbuffer_.record(cmd, sets.frame_set, frame.extent, objects_);
         }
+        if (binned_) {
+            auto scope = frame.gpu_scope("bin");  // count, scan, fill
+            bins_.record(cmd, sets);
+        }
         if (compute_) {
             {
                 auto scope = frame.gpu_scope("shade");  // cull and shade, one dispatch
-                tiles_.shade(cmd, sets, frame.extent, view_);
+                tiles_.shade(cmd, sets, frame.extent, view_, binned_);
             }
             auto scope = frame.gpu_scope("copy");
             tiles_.copy_to_target(cmd, frame.target, frame.extent);
         } else {
             {
                 auto scope = frame.gpu_scope("cull");
-                tiles_.cull(cmd, sets, frame.extent, view_);
+                tiles_.cull(cmd, sets, frame.extent, view_, binned_);
             }
             auto scope = frame.gpu_scope("lighting");
             lighting_.draw(cmd, sets, frame.extent, frame.target_view, ch17::LightingPass::tiled,
@@ -133,7 +160,8 @@ private:
     }
 
     // Set 1, one for all: the G-buffer (bindings 0..3, as chapter 16's, with
-    // its helper), the tiles' counts and lists, the compute output.
+    // its helper), the tiles' counts and lists, the compute output, and the
+    // binning's buffers (7..11: the lights' spheres and rectangles, the bins).
     static vkt::DescriptorSetLayout create_screen_layout(VkDevice device) {
         const VkShaderStageFlags readers =
             VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
@@ -143,6 +171,9 @@ private:
         bindings.push_back({5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, readers, nullptr});
         bindings.push_back(
             {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+        for (uint32_t binding = 7; binding <= 11; ++binding)
+            bindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+                                VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
         return vkt::create_descriptor_set_layout(device, bindings);
     }
 
@@ -160,19 +191,20 @@ private:
     // chapter 16 writes them; the statistics are new.
     void create_frame_data(uint32_t slots, uint32_t max_storage_range) {
         const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, slots},
-                                              {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * slots + 2},
+                                              {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * slots + 7},
                                               {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4},
                                               {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}};
         pool_ = vkt::create_descriptor_pool(device_, slots + 1, sizes);
         const VkDeviceSize lights_size = VkDeviceSize{light_count_} * sizeof(vkt::PointLight);
         if (lights_size > max_storage_range)
-            throw vkt::Error("--lights " + std::to_string(light_count_) +
-                             ": more than this device's maxStorageBufferRange allows");
+            throw vkt::Error("--lights " + std::to_string(light_count_) + ": " +
+                             std::to_string(lights_size >> 20) + " MiB of lights, more than " +
+                             "this device's maxStorageBufferRange (" +
+                             std::to_string(max_storage_range >> 20) + " MiB)");
         for (uint32_t i = 0; i < slots; ++i) {
             uniforms_.push_back(vkt::create_host_buffer(gpu_, sizeof(FrameUniforms),
                                                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT));
-            lights_.push_back(
-                vkt::create_host_buffer(gpu_, lights_size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+            lights_.push_back(create_lights_buffer(lights_size, i == 0));
             stats_.push_back(vkt::create_host_buffer(gpu_, sizeof(TileStats),
                                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
             std::memset(stats_[i].mapped, 0, sizeof(TileStats));
@@ -188,22 +220,46 @@ private:
         screen_set_ = vkt::allocate_descriptor_set(device_, pool_, screen_layout_);
     }
 
+    // [lights-memory]
+    // A million lights are 32 MiB a frame, read by every pass. Where the device
+    // has memory of its own that the CPU can map (DEVICE_LOCAL and
+    // HOST_VISIBLE: all of it with a resizable BAR), the CPU writes the lights
+    // there and the passes read them at the GPU memory's speed; elsewhere they
+    // stay in chapter 07's host memory and cross the bus. On lavapipe all
+    // memory is both.
+    vkt::Buffer create_lights_buffer(VkDeviceSize size, bool say) const {
+        const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+        try {
+            vkt::Buffer buffer = vkt::create_buffer(gpu_.physical, device_, size, usage,
+                                                    VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT |
+                                                        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
+                                                        VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+            if (say) std::fprintf(stderr, "17_tiled_deferred: lights in device-local memory\n");
+            return buffer;
+        } catch (const vkt::Error&) {  // no such memory type, or too little of it
+            if (say) std::fprintf(stderr, "17_tiled_deferred: lights in host memory\n");
+            return vkt::create_host_buffer(gpu_, size, usage);
+        }
+    }
+    // [/lights-memory]
+
     ch17::PassSets pass_sets(uint32_t slot) const {
         return {layout_, frame_sets_[slot], screen_set_, stats_[slot].buffer};
     }
 
-    // Chapter 16's frame: the same camera, materials, shapes and lights.
+    // Chapter 16's frame: the same camera, materials, shapes and lights; the
+    // lights (make_lights') written by MovingLights, fast enough for a million.
     void update(uint32_t slot, VkExtent2D extent, float t) {
         const FrameUniforms frame =
             frame_uniforms(float(extent.width) / float(extent.height), light_count_);
         std::memcpy(uniforms_[slot].mapped, &frame, sizeof frame);
-        const std::vector<vkt::PointLight> lights = make_lights(light_count_, t);
-        std::memcpy(lights_[slot].mapped, lights.data(), lights.size() * sizeof(vkt::PointLight));
+        moving_.write(t, static_cast<vkt::PointLight*>(lights_[slot].mapped));
         objects_ = make_objects(t);
     }
 
     // What the slot's last frame counted (it is finished), then zeroed.
-    void read_stats(uint32_t slot) {
+    // `finished`: the run is over, nothing more to grow for.
+    void read_stats(uint32_t slot, bool finished = false) {
         if (!stats_pending_[slot]) {
             stats_pending_[slot] = true;  // the coming frame will count
             return;
@@ -215,35 +271,57 @@ private:
         most_lights_ = std::max(most_lights_, stats.most_lights);
         lights_seen_ += stats.total_lights;
         tiles_seen_ += stats.lit_tiles;
+        most_entries_ = std::max(most_entries_, stats.binned_entries);
+        most_candidates_ = std::max(most_candidates_, stats.most_candidates);
+        // Candidates the fill dropped: counted, and the bins grow for the next frames.
+        if (stats.binned_entries > stats.binned_budget) ++dropped_frames_;
+        if (binned_ && !finished && bins_.grow(stats.binned_entries))
+            bins_.write_descriptors(screen_set_);
     }
 
     // [verify]
     // --verify brute (verify_brute.hpp): this frame once more, into float
     // images: chapter 16's lighting pass over every light, the tiled fragment
-    // pass and the tiled compute pass, from one G-buffer.
+    // pass and the tiled compute pass (culling as --cull says), from one
+    // G-buffer. --verify bins (verify_bins.hpp): the lists and pictures of
+    // --cull tiled and --cull binned, from one G-buffer.
     void verify(uint32_t slot, VkExtent2D e) {
         const ch17::PassSets sets = pass_sets(slot);
         const LightingPush everything{view_lit, 0, light_count_, 1.0f};
         const int32_t lit = view_lit;
         using Lighting = ch17::LightingPass;
+        auto gbuffer_and_bins = [&](VkCommandBuffer cmd) {
+            gbuffer_.record(cmd, sets.frame_set, e, objects_);
+            bins_.record(cmd, sets);  // whichever --cull: --verify bins needs both
+        };
+        auto tiled_fragment = [&](VkCommandBuffer cmd, VkImageView target, bool binned) {
+            tiles_.cull(cmd, sets, e, lit, binned);
+            lighting_.draw(cmd, sets, e, target, Lighting::tiled_float, &lit, sizeof lit);
+        };
+        auto tiled_compute = [&](VkCommandBuffer cmd, bool binned) {
+            tiles_.shade(cmd, sets, e, lit, binned);
+        };
+        if (verify_ == "bins") {
+            ch17::verify_bins(gpu_, e, light_count_, tiles_, stats_[slot].mapped, gbuffer_and_bins,
+                              tiled_fragment, tiled_compute);
+            return;
+        }
         ch17::verify_brute(
             gpu_, e, light_count_, tiles_.shaded(), stats_[slot].mapped,
-            {[&](VkCommandBuffer cmd) { gbuffer_.record(cmd, sets.frame_set, e, objects_); },
+            {gbuffer_and_bins,
              [&](VkCommandBuffer cmd, VkImageView target) {
                  lighting_.draw(cmd, sets, e, target, Lighting::brute_float, &everything,
                                 sizeof everything);
              },
-             [&](VkCommandBuffer cmd, VkImageView target) {
-                 tiles_.cull(cmd, sets, e, view_);
-                 lighting_.draw(cmd, sets, e, target, Lighting::tiled_float, &lit, sizeof lit);
-             },
-             [&](VkCommandBuffer cmd) { tiles_.shade(cmd, sets, e, lit); }});
+             [&](VkCommandBuffer cmd, VkImageView target) { tiled_fragment(cmd, target, binned_); },
+             [&](VkCommandBuffer cmd) { tiled_compute(cmd, binned_); }});
     }
     // [/verify]
 
     vkt::Gpu gpu_;
     VkDevice device_;
-    bool compute_, verify_;
+    bool compute_, binned_;
+    std::string verify_;  // "", "brute" or "bins"
     int32_t view_;
     uint32_t light_count_;
     uint64_t verify_frame_;
@@ -253,7 +331,9 @@ private:
     SceneMeshes scene_;
     GBufferPass gbuffer_;
     ch17::TilePass tiles_;
+    ch17::BinPass bins_;
     ch17::LightingPass lighting_;
+    MovingLights moving_;
     vkt::DescriptorPool pool_;
     std::vector<vkt::Buffer> uniforms_, lights_, stats_;  // [slot]
     std::vector<bool> stats_pending_;                     // [slot]
@@ -262,6 +342,7 @@ private:
     std::vector<Object> objects_;                // this frame's
     uint32_t overflowed_ = 0, most_lights_ = 0;  // over the run
     uint64_t lights_seen_ = 0, tiles_seen_ = 0;
+    uint32_t most_entries_ = 0, most_candidates_ = 0, dropped_frames_ = 0;  // --cull binned
 };
 
 }  // namespace
@@ -281,6 +362,13 @@ int main(int argc, char** argv) {
                  "compute (one dispatch culls and lights)",
          .default_value = "fragment",
          .choices = {"fragment", "compute"}},
+        {.name = "--cull",
+         .type = vkt::OptionType::choice,
+         .value_name = "HOW",
+         .help = "binned (each light into the bins of the tiles it may touch; each tile tests "
+                 "its bin) or tiled (each tile tests every light)",
+         .default_value = "binned",
+         .choices = {"binned", "tiled"}},
         {.name = "--view",
          .type = vkt::OptionType::choice,
          .value_name = "VIEW",
@@ -290,15 +378,24 @@ int main(int argc, char** argv) {
         {.name = "--lights",
          .type = vkt::OptionType::integer,
          .value_name = "N",
-         .help = "how many point lights, 1 to 65536 (as chapter 16)",
+         .help = "how many point lights, 1 to 1048576",
          .default_value = "1024",
          .min = 1,
          .max = double(max_lights)},
+        {.name = "--bin-budget",
+         .type = vkt::OptionType::integer,
+         .value_name = "N",
+         .help = "--cull binned: room for N candidates in all bins at the start, 0: 4 per "
+                 "light or 64 per tile, whichever is more (it grows when a frame needs more)",
+         .default_value = "0",
+         .min = 0,
+         .max = double(1u << 30)},
         {.name = "--verify",
          .type = vkt::OptionType::choice,
          .value_name = "CHECK",
-         .help = "brute: compare both tiled paths with brute-force lighting on the last frame",
-         .choices = {"brute"}},
+         .help = "on the last frame, brute: both tiled paths against brute-force lighting; "
+                 "bins: --cull binned's lists and pictures against --cull tiled's",
+         .choices = {"brute", "bins"}},
     };
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
         return std::make_unique<TiledDeferred>(context);

@@ -3,7 +3,8 @@
 // pixel tiles and keeps, for each tile, the lights that may touch it. With
 // --shade fragment it writes each tile's list for the lighting pass (cull);
 // with --shade compute it lights the tile's pixels itself, into a float image
-// that is then blitted to the target (shade, copy_to_target).
+// that is then blitted to the target (shade, copy_to_target). Each tests
+// every light (--cull tiled) or its tile's bin (--cull binned, bin_pass.hpp).
 
 #include "vkt/core/barrier.hpp"
 #include "vkt/frame/runner.hpp"
@@ -18,12 +19,13 @@ namespace ch17 {
 
 // [limits]
 constexpr uint32_t tile_size = 16;          // TILE_SIZE in tiles.glsl
-constexpr uint32_t max_tile_lights = 1024;  // MAX_TILE_LIGHTS: 4 KiB per tile
+constexpr uint32_t max_tile_lights = 2048;  // MAX_TILE_LIGHTS: 8 KiB per tile
 // [/limits]
 constexpr VkFormat shaded_format = VK_FORMAT_R32G32B32A32_SFLOAT;  // --shade compute writes it
 
-struct TileStats {  // TileStats in tiles.comp
+struct TileStats {  // TileStats in tiles.glsl
     uint32_t overflowed_tiles, most_lights, total_lights, lit_tiles;
+    uint32_t binned_entries, binned_budget, most_candidates;  // --cull binned
 };
 
 // Every pass after the G-buffer binds the same two sets through one pipeline
@@ -56,14 +58,18 @@ public:
         check_blit(context.physical, context.color_format);
         const VkDevice device = gpu_.device;
         // [pipelines]
-        // tiles.comp twice: SHADE false writes the lists, SHADE true shades.
+        // tiles.comp four times: SHADE false writes the lists, SHADE true
+        // shades; BINNED false tests every light, BINNED true the tile's bin.
         vkt::ShaderModule tiles = vkt::load_shader(device, context.chapter, "tiles.comp");
-        for (const VkBool32 shade : {VK_FALSE, VK_TRUE}) {
-            const VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
-            const VkSpecializationInfo specialization{1, &entry, sizeof shade, &shade};
-            (shade ? shade_ : cull_) =
-                vkt::create_compute_pipeline(device, tiles, layout, &specialization);
-        }
+        for (const VkBool32 binned : {VK_FALSE, VK_TRUE})
+            for (const VkBool32 shade : {VK_FALSE, VK_TRUE}) {
+                const VkBool32 constants[] = {shade, binned};
+                const VkSpecializationMapEntry entries[] = {{0, 0, sizeof(VkBool32)},
+                                                            {1, 4, sizeof(VkBool32)}};
+                const VkSpecializationInfo specialization{2, entries, sizeof constants, constants};
+                (shade ? shade_ : cull_)[binned] =
+                    vkt::create_compute_pipeline(device, tiles, layout, &specialization);
+            }
         // [/pipelines]
     }
 
@@ -78,7 +84,8 @@ public:
                              "maxStorageBufferRange");
         const VkPhysicalDevice physical = gpu_.physical;
         const VkDevice device = gpu_.device;
-        const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+        // (TRANSFER_SRC: --verify bins copies them to the host.)
+        const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
         const auto local = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
         counts_ = vkt::create_buffer(physical, device, grid.count() * 4, storage, local);
         lists_ = vkt::create_buffer(physical, device, list_bytes, storage, local);
@@ -112,14 +119,18 @@ public:
     }
 
     VkImage shaded() const { return shaded_.image; }
+    // The tiles' counts and lists, for --verify bins to read back.
+    VkBuffer counts() const { return counts_.buffer; }
+    VkBuffer lists() const { return lists_.buffer; }
 
     // [cull]
     // One workgroup per tile writes the tile's list. The buffers are shared by
     // the frames in flight: wait for the last frame's lighting pass to finish
     // reading them; afterwards, make the lists visible to this frame's.
-    void cull(VkCommandBuffer cmd, const PassSets& sets, VkExtent2D extent, int32_t view) const {
+    void cull(VkCommandBuffer cmd, const PassSets& sets, VkExtent2D extent, int32_t view,
+              bool binned) const {
         tiles_to_write(cmd);
-        sets.bind(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_, &view, sizeof view);
+        sets.bind(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_[binned], &view, sizeof view);
         const vkt::TileGrid grid = vkt::tile_grid(extent.width, extent.height, tile_size);
         vkCmdDispatch(cmd, grid.x, grid.y, 1);
         const VkBuffer buffers[] = {counts_.buffer, lists_.buffer};
@@ -136,13 +147,14 @@ public:
     // --shade compute: one dispatch culls and shades into the float image.
     // The image is shared by the frames in flight: wait for the last frame's
     // copy to have read it; afterwards, make the writes visible to the copy.
-    void shade(VkCommandBuffer cmd, const PassSets& sets, VkExtent2D extent, int32_t view) const {
+    void shade(VkCommandBuffer cmd, const PassSets& sets, VkExtent2D extent, int32_t view,
+               bool binned) const {
         vkt::image_barrier(cmd, shaded_.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
                            VK_PIPELINE_STAGE_2_BLIT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
                            VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         tiles_to_write(cmd);  // the same shader: it could write the lists
-        sets.bind(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, shade_, &view, sizeof view);
+        sets.bind(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, shade_[binned], &view, sizeof view);
         const vkt::TileGrid grid = vkt::tile_grid(extent.width, extent.height, tile_size);
         vkCmdDispatch(cmd, grid.x, grid.y, 1);
         vkt::image_barrier(
@@ -212,9 +224,9 @@ private:
 
     vkt::Gpu gpu_;
     VkPhysicalDeviceLimits limits_;
-    vkt::Pipeline cull_, shade_;
-    vkt::Buffer counts_, lists_;  // the tiles' light counts and lists
-    vkt::Image shaded_;           // --shade compute's output, in GENERAL
+    vkt::Pipeline cull_[2], shade_[2];  // [binned]
+    vkt::Buffer counts_, lists_;        // the tiles' light counts and lists
+    vkt::Image shaded_;                 // --shade compute's output, in GENERAL
 };
 
 }  // namespace ch17

@@ -5,10 +5,10 @@
 
 const vec3 background = vec3(0.02, 0.02, 0.04);
 
-// Blue (no lights) through cyan, green and yellow to red (MAX_TILE_LIGHTS),
+// Blue (no lights) through cyan, green and yellow to red (1,024 and more),
 // on a log scale: 1, 31 and 1023 lights lie at 0.1, 0.5 and 1.
 vec3 heat_ramp(uint count) {
-    float t = log2(1.0 + float(count)) / log2(1.0 + float(MAX_TILE_LIGHTS));
+    float t = min(log2(1.0 + float(count)) / log2(1.0 + 1024.0), 1.0);
     return clamp(vec3(1.5 - abs(4.0 * t - 3.0), 1.5 - abs(4.0 * t - 2.0),
                       1.5 - abs(4.0 * t - 1.0)), 0.0, 1.0);
 }
@@ -38,9 +38,11 @@ vec3 shade_tile(ivec2 pixel, uvec2 size, uint count, uint found, int view) {
     vec3 v = normalize(frame.camera_position - position);
     vec3 colour = frame.ambient * m.albedo;
     for (uint i = 0; i < count; ++i) {  // the tile's lights only
-        PointLight light = lights[TILE_LIGHT(i)];
-        if (distance(light.position, position) >= light.radius) continue;
-        colour += shade_point_light(position, n, v, m.albedo, light, FALLOFF_WINDOWED,
+        // Most of the list does not reach this pixel: read a light's position
+        // and radius first, and the rest only for the few that do.
+        uint j = TILE_LIGHT(i);
+        if (distance(lights[j].position, position) >= lights[j].radius) continue;
+        colour += shade_point_light(position, n, v, m.albedo, lights[j], FALLOFF_WINDOWED,
                                     vec3(1.0, 0.0, 0.0), m.specular, m.shininess);
     }
     return colour;

@@ -1,28 +1,24 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Chapter 17: one workgroup per 16 x 16 tile, one invocation per pixel.
-// It finds the tile's depth range, culls every light against the tile's
-// frustum, and then either writes the tile's light list (--shade fragment:
-// the fragment pass lights) or lights its own pixel from the list in shared
+// It finds the tile's depth range, culls every light (--cull tiled) or the
+// candidates in the tile's bin (--cull binned) against the tile's frustum,
+// and then either writes the tile's light list (--shade fragment: the
+// fragment pass lights) or lights its own pixel from the list in shared
 // memory and stores it (--shade compute: culling and shading in one dispatch).
 #define TILE_WRITER
 #include "tiles.glsl"
+#include "bins.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;  // TILE_SIZE x TILE_SIZE
-// Chosen when the pipeline is made: false for the cull pass, true for cull + shade.
+// Chosen when the pipeline is made: false for the cull pass, true for cull + shade;
+// false to test every light, true to test the tile's bin.
 layout(constant_id = 0) const bool SHADE = false;
+layout(constant_id = 1) const bool BINNED = false;
 
 layout(push_constant, std430) uniform TiledPush {
     int view;
 } pass;
-
-// Per frame (set 0, binding 2): what the CPU reports after the frame.
-layout(set = 0, binding = 2, std430) buffer TileStats {
-    uint overflowed_tiles;  // tiles with more than MAX_TILE_LIGHTS lights
-    uint most_lights;       // the most lights any tile had
-    uint total_lights;      // summed over the tiles
-    uint lit_tiles;         // tiles with something drawn
-} stats;
 
 layout(set = 1, binding = 6, rgba32f) uniform writeonly image2D shaded;  // --shade compute
 
@@ -34,6 +30,28 @@ shared uint list[MAX_TILE_LIGHTS];              // the first MAX_TILE_LIGHTS of 
 
 #define TILE_LIGHT(i) list[i]
 #include "tiled_shading.glsl"
+
+// Appends a light that touches the tile to the shared list.
+void keep(uint light) {
+    uint slot = atomicAdd(found, 1);
+    if (slot < MAX_TILE_LIGHTS) list[slot] = light;  // beyond: counted, not stored
+}
+
+// [cull-binned]
+// --cull binned: the test is the same, but only the tile's candidates take it,
+// the lights that the light pass put in this tile's bin; their view-space
+// spheres too were worked out once, there.
+void cull_binned(TileFrustum f, uint tile) {
+    uint first = bin_offsets[tile], capacity = bin_lights.length();
+    uint candidates = first < capacity ? min(bin_counts[tile], capacity - first) : 0;
+    for (uint k = gl_LocalInvocationIndex; k < candidates; k += TILE_SIZE * TILE_SIZE) {
+        uint light = bin_lights[first + k];
+        vec4 sphere = light_spheres[light];
+        if (sphere_touches_tile(f, sphere.xyz, sphere.w)) keep(light);
+    }
+    if (gl_LocalInvocationIndex == 0) atomicMax(stats.most_candidates, candidates);
+}
+// [/cull-binned]
 
 void main() {
     uvec2 size = uvec2(textureSize(gbuffer_depth, 0));
@@ -63,16 +81,18 @@ void main() {
     // All 256 invocations share the lights: invocation k tests lights k,
     // k + 256, k + 512, ... and appends those that touch to the shared list.
     bool drawn = depth_min_bits != floatBitsToUint(1.0);
+    uint tile = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
     if (drawn) {
         TileFrustum f = tile_frustum(gl_WorkGroupID.xy, size,
                                      view_depth(uintBitsToFloat(depth_min_bits)),
                                      view_depth(uintBitsToFloat(depth_max_bits)));
-        for (uint i = gl_LocalInvocationIndex; i < frame.light_count; i += TILE_SIZE * TILE_SIZE) {
-            PointLight light = lights[i];
-            vec3 centre = (frame.view * vec4(light.position, 1.0)).xyz;
-            if (sphere_touches_tile(f, centre, light.radius)) {
-                uint slot = atomicAdd(found, 1);
-                if (slot < MAX_TILE_LIGHTS) list[slot] = i;  // beyond: counted, not stored
+        if (BINNED) {
+            cull_binned(f, tile);
+        } else {
+            for (uint i = gl_LocalInvocationIndex; i < frame.light_count;
+                 i += TILE_SIZE * TILE_SIZE) {
+                vec4 sphere = view_sphere(lights[i]);  // the centre in view space
+                if (sphere_touches_tile(f, sphere.xyz, sphere.w)) keep(i);
             }
         }
     }
@@ -90,7 +110,6 @@ void main() {
 
     // [write-list]
     if (!SHADE) {  // --shade fragment: store the list for the lighting pass
-        uint tile = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
         if (gl_LocalInvocationIndex == 0) tile_counts[tile] = found;
         for (uint i = gl_LocalInvocationIndex; i < count; i += TILE_SIZE * TILE_SIZE)
             tile_lights[tile * MAX_TILE_LIGHTS + i] = list[i];

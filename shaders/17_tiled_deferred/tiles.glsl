@@ -6,7 +6,7 @@
 
 // [limits]
 const uint TILE_SIZE = 16;           // a tile is 16 x 16 pixels: one workgroup of 256
-const uint MAX_TILE_LIGHTS = 1024;   // the longest light list a tile stores
+const uint MAX_TILE_LIGHTS = 2048;   // the longest light list a tile stores
 // [/limits]
 
 // The writers (tiles.comp) declare TILE_WRITER; the fragment pass only reads.
@@ -71,8 +71,33 @@ TileFrustum tile_frustum(uvec2 tile, uvec2 size, float near, float far) {
 bool sphere_touches_tile(TileFrustum f, vec3 centre, float radius) {
     float t = -centre.z;
     if (t + radius < f.near || t - radius > f.far) return false;
-    for (int i = 0; i < 4; ++i)
-        if (dot(f.planes[i], centre) < -radius) return false;
+    for (int i = 0; i < 4; ++i) {
+        precise float side = dot(f.planes[i], centre);  // see view_sphere
+        if (side < -radius) return false;
+    }
     return true;
 }
 // [/tile-frustum]
+
+// A light's sphere in view space: centre and radius. `precise` forbids the
+// compiler to fuse a multiply and an add here and not there: every pass that
+// computes it gets the same bits, so that culling every light (--cull tiled)
+// and culling the binned candidates (--cull binned) keep the same lights.
+vec4 view_sphere(PointLight light) {
+    precise vec3 centre = (frame.view * vec4(light.position, 1.0)).xyz;
+    return vec4(centre, light.radius);
+}
+
+#ifdef TILE_WRITER
+// Per frame (set 0, binding 2): what the CPU reports after the frame; TileStats
+// in tile_pass.hpp.
+layout(set = 0, binding = 2, std430) buffer TileStats {
+    uint overflowed_tiles;  // tiles with more than MAX_TILE_LIGHTS lights
+    uint most_lights;       // the most lights any tile had
+    uint total_lights;      // summed over the tiles
+    uint lit_tiles;         // tiles with something drawn
+    uint binned_entries;    // --cull binned: the candidates in all bins (the scan's total)
+    uint binned_budget;     // --cull binned: the room for them (beyond it, dropped)
+    uint most_candidates;   // --cull binned: the most candidates a lit tile tested
+} stats;
+#endif

@@ -1,14 +1,15 @@
 # Chapter 17: tiled deferred shading. Chapter 16's scene under 1,024 moving
 # lights: a compute pass culls the lights per 16 x 16 tile, and the lighting
 # reads only its tile's list (--shade fragment), or one dispatch culls and
-# shades (--shade compute).
+# shades (--shade compute). Each tile tests the lights binned to it (--cull
+# binned, the default) or every light (--cull tiled).
 #
 # Hand-worked pixels: the top corners show no geometry, so both paths write
 # the background (0.02, 0.02, 0.04), stored sRGB-encoded as (39, 39, 56).
 set(VKT_17_PIXEL PIXEL 0,0,39,39,56 319,0,39,39,56)
 vkt_chapter_test(chapter.17_tiled_deferred 17_tiled_deferred GOLDEN BLESS ${VKT_17_PIXEL}
-  ARGS ${headless} EXPECT "17_tiled_deferred: 1024 lights, shade fragment, view lit"
-  "tiles overflowed: 0")
+  ARGS ${headless} EXPECT "17_tiled_deferred: 1024 lights, shade fragment, view lit, cull binned"
+  "tiles overflowed: 0" "frames that dropped candidates: 0")
 vkt_chapter_test(chapter.17_tiled_deferred.offscreen 17_tiled_deferred GOLDEN ${VKT_17_PIXEL}
   ARGS ${offscreen})
 vkt_chapter_window_test(17_tiled_deferred PIXEL 0,0,39,39,56)
@@ -28,6 +29,13 @@ if(XVFB_RUN)
   set_tests_properties(${test} PROPERTIES
     ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS "chapter;window")
 endif()
+
+# --cull tiled, every tile testing every light: the same picture, both ways.
+foreach(shade fragment compute)
+  vkt_chapter_test(chapter.17_tiled_deferred.cull_tiled_${shade} 17_tiled_deferred
+    GOLDEN ${VKT_17_PIXEL} ARGS ${headless} --cull tiled --shade ${shade}
+    EXPECT "shade ${shade}, view lit, cull tiled")
+endforeach()
 
 # With chapter 16's 32 lights the scene is chapter 16's: both tiled paths
 # against chapter 16's golden image (the golden tests' tolerance).
@@ -72,40 +80,76 @@ vkt_chapter_test(chapter.17_tiled_deferred.verify_brute_many 17_tiled_deferred
   ARGS --offscreen --no-validation --frames 1 --size ${VKT_TEST_SIZE} --verify brute
   --lights 16384 EXPECT "16384 lights")
 
+# --verify bins: the frame culled both ways from one G-buffer; the tiles'
+# lists must hold the same lights (compared as sets, tile by tile; a list that
+# overflowed by its count), and the pictures of both shading paths agree
+# within 1e-4. At 320x240 with validation, at a size with partial tiles, and
+# with many lights; a million at 256x144 overflows lists (its counts are
+# compared), and shows the binning itself at full size.
+vkt_chapter_test(chapter.17_tiled_deferred.verify_bins 17_tiled_deferred
+  ARGS ${headless} --verify bins
+  EXPECT "verify bins: 300 tiles, [0-9]+ lights kept in all .*; lists that differ: 0"
+  "binned vs tiled, shade fragment, largest difference" "binned vs tiled, shade compute")
+vkt_chapter_test(chapter.17_tiled_deferred.verify_bins_odd_size 17_tiled_deferred
+  ARGS --offscreen --validation --frames 2 --size 250x130 --verify bins --lights 4096
+  EXPECT "144 tiles, .*250x130 pixels\\); lists that differ: 0")
+vkt_chapter_test(chapter.17_tiled_deferred.verify_bins_many 17_tiled_deferred
+  ARGS --offscreen --no-validation --frames 1 --size ${VKT_TEST_SIZE} --verify bins
+  --lights 65536 EXPECT "65536 lights, .*lists that differ: 0")
+vkt_chapter_test(chapter.17_tiled_deferred.verify_bins_million 17_tiled_deferred
+  ARGS --offscreen --no-validation --frames 1 --size 256x144 --verify bins
+  --lights 1048576 EXPECT "1048576 lights, .*lists that differ: 0; overflowed \\(counts compared\\): [0-9]+")
+# Binning's own overflow: a budget too small for the bins. The fill drops what
+# does not fit; the run says so, the bins grow for the next frames, and
+# --verify bins refuses a frame that dropped candidates.
+vkt_chapter_test(chapter.17_tiled_deferred.bins_grow 17_tiled_deferred
+  ARGS --offscreen --validation --frames 4 --size ${VKT_TEST_SIZE} --bin-budget 1000
+  EXPECT "the bins needed [0-9]+ candidates: budget now [0-9]+"
+  "frames that dropped candidates: [1-9]")
+vkt_chapter_test(chapter.17_tiled_deferred.bins_overflow_fails_verify 17_tiled_deferred EXIT 1
+  ARGS --offscreen --no-validation --frames 1 --size ${VKT_TEST_SIZE} --bin-budget 1000
+  --verify bins EXPECT "--verify bins: the bins needed [0-9]+ candidates, above their budget of 1000")
+
 # Overflow is counted, never silent: at 64x48 a tile covers a large part of
 # the floor, and 65,536 lights overflow some lists. The run reports it; the
 # check refuses the picture.
 vkt_chapter_test(chapter.17_tiled_deferred.overflow_reported 17_tiled_deferred
   ARGS --offscreen --validation --frames 2 --size 64x48 --lights 65536
-  EXPECT "65536 lights" "a list holds 1024\\); tiles overflowed: [1-9]")
+  EXPECT "65536 lights" "a list holds 2048\\); tiles overflowed: [1-9]")
 vkt_chapter_test(chapter.17_tiled_deferred.overflow_fails_verify 17_tiled_deferred EXIT 1
   ARGS --offscreen --no-validation --frames 1 --size 64x48 --lights 65536 --verify brute
-  EXPECT "--verify brute: [0-9]+ tiles had more than 1024 lights; their lists dropped lights")
+  EXPECT "--verify brute: [0-9]+ tiles had more than 2048 lights; their lists dropped lights")
 
 # --benchmark times the passes as named GPU scopes.
 vkt_chapter_test(chapter.17_tiled_deferred.benchmark 17_tiled_deferred
   ARGS --offscreen --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark
-  EXPECT "\"gpu_scopes_ms\": \\{\"gbuffer\": \\{\"min\": [0-9.]+.*\"cull\": \\{.*\"lighting\": \\{")
+  EXPECT "\"gpu_scopes_ms\": \\{\"gbuffer\": \\{\"min\": [0-9.]+.*\"bin\": \\{.*\"cull\": \\{.*\"lighting\": \\{")
 vkt_chapter_test(chapter.17_tiled_deferred.benchmark_compute 17_tiled_deferred
   ARGS --offscreen --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark
   --shade compute
-  EXPECT "\"gpu_scopes_ms\": \\{\"gbuffer\": \\{\"min\": [0-9.]+.*\"shade\": \\{.*\"copy\": \\{")
+  EXPECT "\"gpu_scopes_ms\": \\{\"gbuffer\": \\{\"min\": [0-9.]+.*\"bin\": \\{.*\"shade\": \\{.*\"copy\": \\{")
+vkt_chapter_test(chapter.17_tiled_deferred.benchmark_tiled 17_tiled_deferred
+  ARGS --offscreen --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark
+  --shade compute --cull tiled
+  EXPECT "\"gpu_scopes_ms\": \\{\"gbuffer\": \\{\"min\": [0-9.]+, [^}]*\\}, \"shade\": \\{.*\"copy\": \\{")
 vkt_chapter_test(chapter.17_tiled_deferred.help 17_tiled_deferred EXIT 0 ARGS --help
-  EXPECT "usage: 17_tiled_deferred" "--shade PASS" "--view VIEW" "--lights N"
-  "--verify CHECK")
+  EXPECT "usage: 17_tiled_deferred" "--shade PASS" "--cull HOW" "--view VIEW" "--lights N"
+  "--bin-budget N" "--verify CHECK")
 
 # Bad input: one clear line and a non-zero exit status. The most lights is
-# chapter 16's limit of 65,536 (2 MiB of lights per frame in flight).
+# 1,048,576 (32 MiB of lights per frame in flight).
 vkt_chapter_test(bad_input.17_tiled_deferred.no_lights 17_tiled_deferred EXIT 2 ARGS --lights 0
-  EXPECT "--lights wants a whole number from 1 to 65536, not '0'")
+  EXPECT "--lights wants a whole number from 1 to 1048576, not '0'")
 vkt_chapter_test(bad_input.17_tiled_deferred.too_many_lights 17_tiled_deferred EXIT 2
-  ARGS --lights 65537 EXPECT "--lights wants a whole number from 1 to 65536, not '65537'")
+  ARGS --lights 1048577 EXPECT "--lights wants a whole number from 1 to 1048576, not '1048577'")
+vkt_chapter_test(bad_input.17_tiled_deferred.bad_cull 17_tiled_deferred EXIT 2
+  ARGS --cull clustered EXPECT "--cull wants one of binned, tiled, not 'clustered'")
 vkt_chapter_test(bad_input.17_tiled_deferred.bad_shade 17_tiled_deferred EXIT 2
   ARGS --shade raster EXPECT "--shade wants one of fragment, compute, not 'raster'")
 vkt_chapter_test(bad_input.17_tiled_deferred.bad_view 17_tiled_deferred EXIT 2
   ARGS --view normal EXPECT "--view wants one of lit, heat, not 'normal'")
 vkt_chapter_test(bad_input.17_tiled_deferred.bad_verify 17_tiled_deferred EXIT 2
-  ARGS --verify cpu EXPECT "--verify wants one of brute, not 'cpu'")
+  ARGS --verify cpu EXPECT "--verify wants one of brute, bins, not 'cpu'")
 # The required features: a device without one is refused with its name.
 foreach(feature maintenance4 separateDepthStencilLayouts)
   vkt_chapter_test(bad_input.17_tiled_deferred.missing_${feature} 17_tiled_deferred EXIT 1

@@ -1,7 +1,11 @@
 // Chapter 17's tile maths (vkt/scene/tiles.hpp): tile counts, depth linearisation,
-// and the sphere-against-tile-frustum test, by hand and against brute force.
+// and the sphere-against-tile-frustum test, by hand and against brute force;
+// binning, against culling every light; and the moving lights
+// (vkt/scene/moving_lights.hpp) against chapter 16's make_lights.
 
 #include "vkt/scene/camera_math.hpp"
+#include "vkt/scene/deferred_scene.hpp"
+#include "vkt/scene/moving_lights.hpp"
 #include "vkt/scene/tiles.hpp"
 
 #include <catch2/catch_approx.hpp>
@@ -10,7 +14,9 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <random>
+#include <vector>
 
 using Catch::Approx;
 
@@ -130,4 +136,138 @@ TEST_CASE("culling never drops a light that touches the tile", "[tiles]") {
     CHECK(touching > 20);
     CHECK(culled > 20);
     CHECK(kept_not_touching > 0);  // near corners: kept, though missing (conservative)
+}
+
+// Binning (chapter 17's second step): each light's rectangle of tiles, the
+// bins by count, prefix sum and fill, and the lists that culling the bins
+// keeps, against culling every light in every tile.
+namespace {
+// A 16:9 view, 150 x 90 pixels: 10 x 6 tiles, the last row partial.
+const glm::mat4 wide = vkt::vulkan_perspective(glm::radians(45.0f), 150.0f / 90.0f, 0.1f, 100.0f);
+constexpr uint32_t wide_w = 150, wide_h = 90, tile = 16;
+
+struct Sphere {
+    glm::vec3 centre;
+    float radius;
+};
+
+// Spheres in front of, beside and behind the eye, some through its plane.
+std::vector<Sphere> random_spheres(uint32_t count, uint32_t seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::vector<Sphere> spheres;
+    for (uint32_t i = 0; i < count; ++i) {
+        const float t = -2.0f + 30.0f * unit(random);
+        spheres.push_back({{(unit(random) - 0.5f) * (2.0f + 1.4f * std::abs(t)),
+                            (unit(random) - 0.5f) * (2.0f + 0.9f * std::abs(t)), -t},
+                           0.01f + 1.5f * unit(random) * unit(random)});
+    }
+    return spheres;
+}
+}  // namespace
+
+TEST_CASE("a light's rectangle holds every tile whose side planes it passes", "[tiles]") {
+    const vkt::TileGrid grid = vkt::tile_grid(wide_w, wide_h, tile);
+    uint64_t inside = 0, passing = 0;
+    for (const Sphere& s : random_spheres(3000, 5)) {
+        const vkt::TileRect rect =
+            vkt::light_tile_rect(wide, wide_w, wide_h, tile, s.centre, s.radius);
+        for (uint32_t ty = 0; ty < grid.y; ++ty)
+            for (uint32_t tx = 0; tx < grid.x; ++tx) {
+                // Depths [0, 1e30]: only the side planes and "behind the eye" cull.
+                const vkt::TileFrustum f =
+                    vkt::tile_frustum(wide, wide_w, wide_h, tx, ty, tile, 0.0f, 1e30f);
+                const bool in_rect = !rect.empty() && tx >= rect.x0 && tx <= rect.x1 &&
+                                     ty >= rect.y0 && ty <= rect.y1;
+                if (vkt::sphere_touches_tile(f, s.centre, s.radius)) {
+                    ++passing;
+                    REQUIRE(in_rect);  // never a tile lost
+                }
+                inside += in_rect;
+            }
+    }
+    // And the rectangles are nearly tight: the pixel of margin on each side
+    // adds a column or a row now and then (2 in 16 on tiles of 16 pixels), and
+    // the tiles of a sphere around the eye's plane are all of them.
+    CHECK(passing > 5000);
+    CHECK(double(inside) < 1.5 * double(passing));
+}
+
+TEST_CASE("light_tile_rect by hand", "[tiles]") {
+    // The 90-degree square view of 32 x 32 pixels: a small sphere straight
+    // ahead lands on the middle four tiles' corner, (16, 16): all four tiles.
+    const vkt::TileRect middle = vkt::light_tile_rect(proj, 32, 32, 16, {0, 0, -10}, 0.5f);
+    CHECK((middle.x0 == 0 && middle.x1 == 1 && middle.y0 == 0 && middle.y1 == 1));
+    // Up and to the right (view-space y up is the top of the screen): tile (1, 0) only.
+    const vkt::TileRect corner = vkt::light_tile_rect(proj, 32, 32, 16, {5, 5, -10}, 0.5f);
+    CHECK((corner.x0 == 1 && corner.x1 == 1 && corner.y0 == 0 && corner.y1 == 0));
+    // Wholly behind the eye: none. Around the eye: every tile.
+    CHECK(vkt::light_tile_rect(proj, 32, 32, 16, {0, 0, 5}, 1.0f).empty());
+    const vkt::TileRect around = vkt::light_tile_rect(proj, 32, 32, 16, {0, 0, -0.5f}, 1.0f);
+    CHECK((around.x0 == 0 && around.x1 == 1 && around.y0 == 0 && around.y1 == 1));
+    // Beside the view (x / -z = 3, far outside the slope 1 of the edge): none.
+    CHECK(vkt::light_tile_rect(proj, 32, 32, 16, {30, 0, -10}, 1.0f).empty());
+}
+
+TEST_CASE("bin_by_tile: counts, prefix sum and fill", "[tiles]") {
+    const vkt::TileGrid grid{3, 2};
+    const std::vector<vkt::TileRect> rects = {
+        {0, 0, 1, 0},  // light 0: tiles 0, 1
+        {},            // light 1: none
+        {1, 0, 2, 1},  // light 2: tiles 1, 2, 4, 5
+        {0, 1, 0, 1},  // light 3: tile 3
+    };
+    const vkt::Bins bins = vkt::bin_by_tile(rects, grid);
+    CHECK(bins.counts == std::vector<uint32_t>{1, 2, 1, 1, 1, 1});
+    CHECK(bins.offsets == std::vector<uint32_t>{0, 1, 3, 4, 5, 6});
+    CHECK(bins.lights == std::vector<uint32_t>{0, 0, 2, 2, 3, 2, 2});
+}
+
+TEST_CASE("culling the bins keeps exactly what culling every light keeps", "[tiles]") {
+    const vkt::TileGrid grid = vkt::tile_grid(wide_w, wide_h, tile);
+    const std::vector<Sphere> spheres = random_spheres(2000, 17);
+    std::vector<vkt::TileRect> rects;
+    for (const Sphere& s : spheres)
+        rects.push_back(vkt::light_tile_rect(wide, wide_w, wide_h, tile, s.centre, s.radius));
+    const vkt::Bins bins = vkt::bin_by_tile(rects, grid);
+    std::mt19937 random(3);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    uint64_t kept = 0, candidates = 0;
+    for (uint32_t ty = 0; ty < grid.y; ++ty)
+        for (uint32_t tx = 0; tx < grid.x; ++tx) {
+            // Each tile a depth range of its own, as the G-buffer would give.
+            const float near = 0.1f + 20.0f * unit(random), far = near + 8.0f * unit(random);
+            const vkt::TileFrustum f =
+                vkt::tile_frustum(wide, wide_w, wide_h, tx, ty, tile, near, far);
+            std::vector<uint32_t> brute, binned;
+            for (uint32_t i = 0; i < spheres.size(); ++i)
+                if (vkt::sphere_touches_tile(f, spheres[i].centre, spheres[i].radius))
+                    brute.push_back(i);
+            const uint32_t t = ty * grid.x + tx;
+            for (uint32_t k = 0; k < bins.counts[t]; ++k) {
+                const uint32_t i = bins.lights[bins.offsets[t] + k];
+                if (vkt::sphere_touches_tile(f, spheres[i].centre, spheres[i].radius))
+                    binned.push_back(i);
+            }
+            REQUIRE(binned == brute);  // both in light order on the CPU
+            kept += brute.size();
+            candidates += bins.counts[t];
+        }
+    CHECK(kept > 500);
+    CHECK(candidates < uint64_t(spheres.size()) * grid.count() / 4);  // binning culled most
+}
+
+TEST_CASE("MovingLights writes make_lights' lights, bit for bit", "[tiles]") {
+    // 70,000 lights take the threaded path; 1 and 1,000 the single thread.
+    for (uint32_t count : {1u, 1000u, 70000u}) {
+        const vkt::deferred::MovingLights moving(count);
+        REQUIRE(moving.size() == count);
+        for (float t : {0.0f, 0.75f, 13.3f}) {
+            const std::vector<vkt::PointLight> expected = vkt::deferred::make_lights(count, t);
+            std::vector<vkt::PointLight> written(count);
+            moving.write(t, written.data());
+            REQUIRE(std::memcmp(written.data(), expected.data(), count * sizeof(vkt::PointLight)) ==
+                    0);
+        }
+    }
 }
