@@ -16,8 +16,8 @@ Aabb world_aabb(glm::vec3 centre, const glm::mat3& r, glm::vec3 h, float margin)
 // [/world-aabb-code]
 
 namespace {
-bool both_static(const Body& a, const Body& b) {
-    return a.is_static() && b.is_static();
+bool either_moves(const Body& a, const Body& b) {
+    return a.is_active() || b.is_active();
 }
 }  // namespace
 
@@ -27,7 +27,7 @@ void find_pairs_brute_force(std::span<const Aabb> aabbs, std::span<const Body> b
     const auto n = uint32_t(aabbs.size());
     for (uint32_t i = 0; i < n; ++i)
         for (uint32_t j = i + 1; j < n; ++j)
-            if (overlaps(aabbs[i], aabbs[j]) && !both_static(bodies[i], bodies[j]))
+            if (either_moves(bodies[i], bodies[j]) && overlaps(aabbs[i], aabbs[j]))
                 pairs.push_back({i, j});
     // Already sorted by (a, b).
 }
@@ -57,20 +57,28 @@ void SweepAndPrune::find_pairs(std::span<const Aabb> aabbs, std::span<const Body
     }
     sorted_.resize(n);
     for (uint32_t s = 0; s < n; ++s)
-        sorted_[s] = {aabbs[order_[s]], order_[s], bodies[order_[s]].is_static() ? 1u : 0u};
+        sorted_[s] = {aabbs[order_[s]], order_[s], bodies[order_[s]].is_active() ? 1u : 0u};
     // Sweep: the boxes after i in this order that start before i ends along x
     // are the only ones that can overlap it; the first one that starts at or
     // beyond i's end, and every one after it, cannot.
-    pairs.clear();
+    unsorted_.clear();
     for (uint32_t s = 0; s < n; ++s) {
         const Entry& e = sorted_[s];
         for (uint32_t t = s + 1; t < n && sorted_[t].box.low.x < e.box.high.x; ++t) {
             const Entry& f = sorted_[t];
-            if (overlaps(e.box, f.box) && !(e.is_static && f.is_static))
-                pairs.push_back({std::min(e.index, f.index), std::max(e.index, f.index)});
+            if ((e.moves | f.moves) && overlaps(e.box, f.box))
+                unsorted_.push_back({std::min(e.index, f.index), std::max(e.index, f.index)});
         }
     }
-    std::sort(pairs.begin(), pairs.end());  // the same order as brute force
+    // The same order as brute force, by (a, b): a counting sort by a, then
+    // each a's few pairs by b.
+    counts_.assign(n + 1, 0);
+    for (const Pair& p : unsorted_) ++counts_[p.a + 1];
+    for (uint32_t i = 0; i < n; ++i) counts_[i + 1] += counts_[i];
+    pairs.resize(unsorted_.size());
+    for (const Pair& p : unsorted_) pairs[counts_[p.a]++] = p;  // counts_[a]: the end of a's run
+    for (uint32_t i = 0, begin = 0; i < n; begin = counts_[i++])
+        std::sort(pairs.begin() + begin, pairs.begin() + counts_[i]);
 }
 // [/sweep]
 

@@ -72,11 +72,13 @@ AxisQuery find_contact_axis(const OrientedBox& a, const OrientedBox& b, float ma
             const float along = t[i2] * r[i1][j] - t[i1] * r[i2][j];
             const float radius = ha[i1] * abs_r[i2][j] + ha[i2] * abs_r[i1][j] +
                                  hb[j1] * abs_r[i][j2] + hb[j2] * abs_r[i][j1];
-            const float gap = (std::abs(along) - radius) / length;
-            if (gap > edge.separation || gap > margin) {
+            // The gap is (|along| - radius) / length; compared multiplied
+            // out, so that only a new best pays for the division.
+            const float gap_times_length = std::abs(along) - radius;
+            if (gap_times_length > edge.separation * length || gap_times_length > margin * length) {
                 const glm::vec3 axis = glm::cross(a.rotation[i], b.rotation[j]) / length;
-                edge = {gap, 6 + 3 * i + j, axis * sign_of(along)};
-                if (gap > margin) return edge;
+                edge = {gap_times_length / length, 6 + 3 * i + j, axis * sign_of(along)};
+                if (edge.separation > margin) return edge;
             }
         }
     }

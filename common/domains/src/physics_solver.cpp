@@ -61,40 +61,41 @@ void Solver::prepare(Manifold& m, const SolverSettings& s, float dt) {
 }
 // [/prepare]
 
+namespace {
+
 // The relative velocity of the two bodies at the point along d:
 // (v_b + w_b x r_b - v_a - w_a x r_a) . d, with (w x r) . d = w . (r x d).
-float Solver::velocity_along(const Contact& c, const Row& row, glm::vec3 d) const {
-    const State& a = states_[c.a];
-    const State& b = states_[c.b];
+template <class State, class Row>
+float velocity_along(const State& a, const State& b, const Row& row, glm::vec3 d) {
     return glm::dot(b.v - a.v, d) + glm::dot(b.w, row.rb_d) - glm::dot(a.w, row.ra_d);
 }
 
 // An impulse along d at the point: + on b, - on a (Newton's third law),
-// changing each body's velocity by impulse / m and its spin by I^-1 (r x d) impulse.
-void Solver::apply(const Contact& c, const Row& row, glm::vec3 d, float impulse) {
-    State& a = states_[c.a];
-    State& b = states_[c.b];
+// changing each body's velocity by impulse / m and its spin by
+// I^-1 (r x d) impulse.
+template <class State, class Row>
+void apply(State& a, State& b, const Row& row, glm::vec3 d, float impulse) {
     a.v -= (a.inverse_mass * impulse) * d;
     a.w -= impulse * row.ia_ra_d;
     b.v += (b.inverse_mass * impulse) * d;
     b.w += impulse * row.ib_rb_d;
 }
 
+}  // namespace
+
+// The three below work on copies of the contact's two bodies, a and b, which
+// the loops load once per contact and store back after its last point.
+
 // [solve-friction]
 // Friction: the impulse along the contact plane that stops the sliding at
 // this point, but in total no larger than mu times the normal impulse. Both
 // directions are limited together, so the limit is a circle (Coulomb's cone),
 // not a square: a box slides as easily along a diagonal as along an axis.
-void Solver::solve_friction(const Contact& c, Point& p, float friction) {
-    State& a = states_[c.a];
-    State& b = states_[c.b];
-    const glm::vec3 dv = b.v - a.v;
+void Solver::solve_friction(const Contact& c, Point& p, float friction, State& a, State& b) {
     const Row& r1 = p.tangent[0];
     const Row& r2 = p.tangent[1];
-    glm::vec2 total(r1.impulse - r1.mass * (glm::dot(dv, c.tangent[0]) + glm::dot(b.w, r1.rb_d) -
-                                            glm::dot(a.w, r1.ra_d)),
-                    r2.impulse - r2.mass * (glm::dot(dv, c.tangent[1]) + glm::dot(b.w, r2.rb_d) -
-                                            glm::dot(a.w, r2.ra_d)));
+    glm::vec2 total(r1.impulse - r1.mass * velocity_along(a, b, r1, c.tangent[0]),
+                    r2.impulse - r2.mass * velocity_along(a, b, r2, c.tangent[1]));
     const float limit = friction * p.normal.impulse;
     const float length_squared = glm::dot(total, total);
     if (length_squared > limit * limit) total *= limit / std::sqrt(length_squared);
@@ -113,10 +114,10 @@ void Solver::solve_friction(const Contact& c, Point& p, float friction) {
 // [solve-normal]
 // The normal impulse: whatever brings the normal velocity at the point to its
 // target; the running total may only push (>= 0), never pull.
-void Solver::solve_normal(const Contact& c, Point& p) {
-    const float velocity = velocity_along(c, p.normal, c.normal);
+void Solver::solve_normal(const Contact& c, Point& p, State& a, State& b) {
+    const float velocity = velocity_along(a, b, p.normal, c.normal);
     const float total = std::max(p.normal.impulse + p.normal.mass * (p.target - velocity), 0.0f);
-    apply(c, p.normal, c.normal, total - p.normal.impulse);
+    apply(a, b, p.normal, c.normal, total - p.normal.impulse);
     p.normal.impulse = total;
 }
 // [/solve-normal]
@@ -124,9 +125,7 @@ void Solver::solve_normal(const Contact& c, Point& p) {
 // [solve-push]
 // The same along the normal for the push velocities, which move the bodies
 // this step and are then forgotten: the overlap goes, no speed is added.
-void Solver::solve_push(const Contact& c, Point& p) {
-    State& a = states_[c.a];
-    State& b = states_[c.b];
+void Solver::solve_push(const Contact& c, Point& p, State& a, State& b) {
     const Row& row = p.normal;
     const float velocity = glm::dot(b.push_v - a.push_v, c.normal) + glm::dot(b.push_w, row.rb_d) -
                            glm::dot(a.push_w, row.ra_d);
@@ -141,27 +140,34 @@ void Solver::solve_push(const Contact& c, Point& p) {
 // [/solve-push]
 
 // [shock]
-// The last pass, from the ground up (shock propagation). Each body's level is
-// its distance, in contacts, from something static (breadth first); contacts
-// are visited by level, and the lower body of each counts as static. A
-// tower's bottom box is stopped on the floor, the next on the stopped bottom
-// box, and so on up: what the passes before could not carry down a tall
-// stack, this pass settles. Its impulses change velocities only; the warm
-// start keeps the ordinary passes' (an infinitely heavy box below is a
-// fiction of this pass).
-void Solver::shock_pass(const SolverSettings& s) {
+// The last pass, from the ground up (shock propagation). A contact whose
+// normal points up (within 60 degrees) is a support: the body below holds up
+// the body above. Each body's level is its distance, in supports, from
+// something static (breadth first); the supports are visited by the level of
+// the lower body, which then counts as static. A tower's bottom box is
+// stopped on the floor, the next on the stopped bottom box, and so on up:
+// what the passes before could not carry down a tall stack, this pass
+// settles. Its impulses change velocities only; the warm start keeps the
+// ordinary passes' (an infinitely heavy box below is this pass's fiction).
+void Solver::shock_pass(const SolverSettings& s, glm::vec3 up) {
     const auto n = uint32_t(states_.size());
     constexpr uint32_t unreached = 0xffffffffu;
-    // The contact graph as adjacency lists (counting sort by body).
+    // Which body of each contact holds up the other (or neither: 2).
+    auto lower = [&](const Contact& c) {
+        const float along = glm::dot(c.normal, up);  // the normal points from a to b
+        return along > 0.5f ? 0u : along < -0.5f ? 1u : 2u;
+    };
+    // The support graph as adjacency lists, from each body to the bodies it
+    // holds up (a counting sort by the lower body).
     start_.assign(n + 1, 0);
-    for (const Contact& c : contacts_) ++start_[c.a + 1], ++start_[c.b + 1];
+    for (const Contact& c : contacts_)
+        if (const uint32_t l = lower(c); l != 2) ++start_[(l == 0 ? c.a : c.b) + 1];
     for (uint32_t i = 0; i < n; ++i) start_[i + 1] += start_[i];
     neighbours_.resize(start_[n]);
     cursor_.assign(start_.begin(), start_.end() - 1);
-    for (const Contact& c : contacts_) {
-        neighbours_[cursor_[c.a]++] = c.b;
-        neighbours_[cursor_[c.b]++] = c.a;
-    }
+    for (const Contact& c : contacts_)
+        if (const uint32_t l = lower(c); l != 2)
+            neighbours_[cursor_[l == 0 ? c.a : c.b]++] = l == 0 ? c.b : c.a;
     // Levels: 0 for static (and sleeping) bodies, then breadth first.
     level_.assign(n, unreached);
     queue_.clear();
@@ -175,14 +181,20 @@ void Solver::shock_pass(const SolverSettings& s) {
                 queue_.push_back(neighbours_[k]);
             }
     }
-    // Visit by the lower level; at each level the contacts within it first,
-    // then those that reach up to the next; ties by index.
+    // The supports that lead up a level, by the lower body's level (ties by
+    // index); the others are left to the ordinary passes.
+    order_.clear();
+    for (uint32_t i = 0; i < contacts_.size(); ++i) {
+        const Contact& c = contacts_[i];
+        const uint32_t l = lower(c);
+        if (l == 2) continue;
+        const uint32_t below = l == 0 ? c.a : c.b, above = l == 0 ? c.b : c.a;
+        if (level_[below] != unreached && level_[below] < level_[above]) order_.push_back(i);
+    }
     auto key = [&](uint32_t i) {
-        const uint32_t la = level_[contacts_[i].a], lb = level_[contacts_[i].b];
-        return uint64_t(std::min(la, lb)) << 33 | uint64_t(la != lb) << 32 | i;
+        const Contact& c = contacts_[i];
+        return uint64_t(level_[lower(c) == 0 ? c.a : c.b]) << 32 | i;
     };
-    order_.resize(contacts_.size());
-    for (uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
     std::sort(order_.begin(), order_.end(),
               [&](uint32_t i, uint32_t j) { return key(i) < key(j); });
 
@@ -190,12 +202,10 @@ void Solver::shock_pass(const SolverSettings& s) {
     for (uint32_t i = 0; i < n; ++i) saved_mass_[i] = states_[i].inverse_mass;
     for (uint32_t ci : order_) {
         const Contact& c = contacts_[ci];
-        const uint32_t la = level_[c.a], lb = level_[c.b];
-        if (la == lb) continue;  // the ordinary passes have done what can be done
+        const bool a_frozen = lower(c) == 0;
         // The lower body is now static: no mass, no spin from any impulse.
-        const bool a_frozen = la < lb;
         states_[a_frozen ? c.a : c.b].inverse_mass = 0.0f;
-        const State& moving = states_[a_frozen ? c.b : c.a];
+        const float moving_mass = states_[a_frozen ? c.b : c.a].inverse_mass;
         Point local[4];
         for (uint32_t k = 0; k < c.count; ++k) {
             local[k] = points_[c.first + k];
@@ -203,17 +213,20 @@ void Solver::shock_pass(const SolverSettings& s) {
                 (a_frozen ? r->ia_ra_d : r->ib_rb_d) = glm::vec3(0.0f);
                 const float turning =
                     a_frozen ? glm::dot(r->rb_d, r->ib_rb_d) : glm::dot(r->ra_d, r->ia_ra_d);
-                r->mass = 1.0f / (moving.inverse_mass + turning);
+                r->mass = 1.0f / (moving_mass + turning);
             }
         }
         // One body against a fixed one: a small problem, solved to
         // convergence by passes back and forth over its points.
+        State a = states_[c.a], b = states_[c.b];
         for (int iteration = 0; iteration < s.shock_iterations; ++iteration)
             for (uint32_t k = 0; k < c.count; ++k) {
                 Point& p = local[iteration % 2 ? c.count - 1 - k : k];
-                solve_friction(c, p, s.friction);
-                solve_normal(c, p);
+                solve_friction(c, p, s.friction, a, b);
+                solve_normal(c, p, a, b);
             }
+        states_[c.a] = a;
+        states_[c.b] = b;
     }
     for (uint32_t i = 0; i < n; ++i) states_[i].inverse_mass = saved_mass_[i];
 }
@@ -221,7 +234,7 @@ void Solver::shock_pass(const SolverSettings& s) {
 
 // [solve]
 void Solver::solve(std::span<Body> bodies, std::span<Manifold> manifolds, const SolverSettings& s,
-                   float dt) {
+                   float dt, glm::vec3 gravity) {
     const std::size_t n = bodies.size();
     states_.resize(n);
     centres_.resize(n);
@@ -245,8 +258,11 @@ void Solver::solve(std::span<Body> bodies, std::span<Manifold> manifolds, const 
     for (const Contact& c : contacts_)
         for (uint32_t k = 0; k < c.count; ++k) {
             const Point& p = points_[c.first + k];
-            apply(c, p.normal, c.normal, p.normal.impulse);
-            for (int t = 0; t < 2; ++t) apply(c, p.tangent[t], c.tangent[t], p.tangent[t].impulse);
+            State& a = states_[c.a];
+            State& b = states_[c.b];
+            apply(a, b, p.normal, c.normal, p.normal.impulse);
+            for (int t = 0; t < 2; ++t)
+                apply(a, b, p.tangent[t], c.tangent[t], p.tangent[t].impulse);
         }
     // Every point, several times over: each pass fixes what the last broke
     // elsewhere. Friction before the normal, so that the normal impulse, which
@@ -255,14 +271,18 @@ void Solver::solve(std::span<Body> bodies, std::span<Manifold> manifolds, const 
     const std::size_t count = contacts_.size();
     for (int iteration = 0; iteration < s.iterations; ++iteration) {
         const bool backwards = iteration % 2 != 0;
+        const bool push = iteration < s.push_iterations;
         for (std::size_t i = 0; i < count; ++i) {
             const Contact& c = contacts_[backwards ? count - 1 - i : i];
+            State a = states_[c.a], b = states_[c.b];
             for (uint32_t k = 0; k < c.count; ++k) {
                 Point& p = points_[c.first + (backwards ? c.count - 1 - k : k)];
-                solve_friction(c, p, s.friction);
-                solve_normal(c, p);
-                solve_push(c, p);
+                solve_friction(c, p, s.friction, a, b);
+                solve_normal(c, p, a, b);
+                if (push) solve_push(c, p, a, b);
             }
+            states_[c.a] = a;
+            states_[c.b] = b;
         }
     }
     // Keep the impulses for next step's warm start (before the shock pass).
@@ -274,7 +294,8 @@ void Solver::solve(std::span<Body> bodies, std::span<Manifold> manifolds, const 
             cp.friction_impulse =
                 p.tangent[0].impulse * c.tangent[0] + p.tangent[1].impulse * c.tangent[1];
         }
-    if (s.shock_iterations > 0) shock_pass(s);
+    if (s.shock_iterations > 0 && glm::dot(gravity, gravity) > 0.0f)
+        shock_pass(s, -glm::normalize(gravity));
     for (std::size_t i = 0; i < n; ++i)
         if (bodies[i].is_active()) {
             bodies[i].velocity = states_[i].v;

@@ -56,39 +56,49 @@ void carry_impulses(const Manifold& before, Manifold& now) {
 
 }  // namespace
 
+void World::find_pairs() {
+    if (settings_.broad_phase == BroadPhase::brute_force)
+        find_pairs_brute_force(aabbs_, bodies_, pairs_);
+    else
+        sweep_.find_pairs(aabbs_, bodies_, pairs_);
+}
+
 // [narrow-phase]
 void World::narrow_phase() {
     std::swap(previous_, manifolds_);
+    auto asleep = [&](const Manifold& m) {
+        return !bodies_[m.a].is_active() && !bodies_[m.b].is_active();
+    };
     for (;;) {
         manifolds_.clear();
         to_wake_.clear();
-        auto old = previous_.begin();  // both sorted by pair: one merge walk
+        // Both lists are sorted by pair: one merge walk through them.
+        auto old = previous_.begin();
         for (const Pair& pair : pairs_) {
-            while (old != previous_.end() && Pair{old->a, old->b} < pair) ++old;
-            const bool had = old != previous_.end() && old->a == pair.a && old->b == pair.b;
-            const Body& a = bodies_[pair.a];
-            const Body& b = bodies_[pair.b];
-            if (!a.is_active() && !b.is_active()) {
-                // Asleep (against another sleeper or something static):
-                // nothing moved, so the contact stays as it was, impulses and
-                // all, ready for when the island wakes.
-                if (had) manifolds_.push_back(*old);
-                continue;
-            }
+            // A contact between sleepers (or a sleeper and something static)
+            // stays as it was, impulses and all, ready for when its island
+            // wakes: nothing there has moved.
+            for (; old != previous_.end() && Pair{old->a, old->b} < pair; ++old)
+                if (asleep(*old)) manifolds_.push_back(*old);
             Manifold m;
             if (!collide(boxes_[pair.a], boxes_[pair.b], settings_.margin, m)) continue;
             m.a = pair.a;
             m.b = pair.b;
-            if (had) carry_impulses(*old, m);
+            if (old != previous_.end() && old->a == pair.a && old->b == pair.b)
+                carry_impulses(*old, m);
             // Something moving touches a sleeper: its island wakes.
-            if (!a.is_static() && !a.awake) to_wake_.push_back(a.island);
-            if (!b.is_static() && !b.awake) to_wake_.push_back(b.island);
+            for (uint32_t i : {pair.a, pair.b})
+                if (!bodies_[i].is_static() && !bodies_[i].awake)
+                    to_wake_.push_back(bodies_[i].island);
             manifolds_.push_back(m);
         }
+        for (; old != previous_.end(); ++old)
+            if (asleep(*old)) manifolds_.push_back(*old);
         if (to_wake_.empty()) return;
-        // Once more with the woken islands awake, so that their own contacts
-        // are found and solved in this very step.
+        // Once more with the woken islands awake (their pairs are new to the
+        // broad phase), so that their contacts are solved in this very step.
         Islands::wake(bodies_, to_wake_);
+        find_pairs();
     }
 }
 // [/narrow-phase]
@@ -115,10 +125,7 @@ void World::step() {
         aabbs_[i] =
             world_aabb(boxes_[i].centre, boxes_[i].rotation, boxes_[i].half_extents, s.margin);
     }
-    if (s.broad_phase == BroadPhase::brute_force)
-        find_pairs_brute_force(aabbs_, bodies_, pairs_);
-    else
-        sweep_.find_pairs(aabbs_, bodies_, pairs_);
+    find_pairs();
     const auto broad_done = clock::now();
 
     // 3. Narrow phase: contact manifolds, last step's impulses, waking.
@@ -126,7 +133,7 @@ void World::step() {
     const auto narrow_done = clock::now();
 
     // 4. Sequential impulses; 5. move with the solved velocities plus the push.
-    solver_.solve(bodies_, manifolds_, s.solver, dt);
+    solver_.solve(bodies_, manifolds_, s.solver, dt, s.gravity);
     for (uint32_t i = 0; i < n; ++i) {
         Body& body = bodies_[i];
         if (!body.is_active()) continue;

@@ -71,6 +71,7 @@ public:
     double energy() const;
 
 private:
+    void find_pairs();
     void narrow_phase();
 
     Settings settings_;

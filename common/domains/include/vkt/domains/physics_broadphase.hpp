@@ -34,8 +34,10 @@ inline bool overlaps(const Aabb& a, const Aabb& b) {
            a.low.z < b.high.z && b.low.z < a.high.z;
 }
 
-// A pair of bodies that may touch: a < b. At least one of them is not static
-// (two static bodies never need a contact).
+// A pair of bodies that may touch: a < b. At least one of them moves: it is
+// neither static nor asleep. (Two static bodies never need a contact, and a
+// sleeper's contacts with static or sleeping bodies are kept as they were
+// when it fell asleep: nothing there has moved since.)
 struct Pair {
     uint32_t a = 0, b = 0;
     auto operator<=>(const Pair&) const = default;
@@ -62,9 +64,11 @@ private:
     struct Entry {
         Aabb box;
         uint32_t index;
-        uint32_t is_static;
+        uint32_t moves;
     };
     std::vector<Entry> sorted_;
+    std::vector<uint32_t> counts_;
+    std::vector<Pair> unsorted_;
 };
 
 }  // namespace vkt::physics

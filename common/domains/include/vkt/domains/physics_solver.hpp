@@ -20,7 +20,8 @@
 namespace vkt::physics {
 
 struct SolverSettings {
-    int iterations = 8;                  // passes over every contact point
+    int iterations = 6;                  // passes over every contact point
+    int push_iterations = 3;             // the first of them that also push overlapping boxes apart
     int shock_iterations = 12;           // passes over each contact in the last pass (0: none)
     float restitution = 0.2f;            // 0: no bounce, 1: elastic
     float restitution_threshold = 1.0f;  // m/s: slower impacts do not bounce (rest, not jitter)
@@ -34,9 +35,10 @@ class Solver {
 public:
     // Solves every manifold with at least one moving body, changing those
     // bodies' velocities, and the manifolds' points' impulses for the next
-    // step's warm start. Sleeping bodies count as static.
+    // step's warm start. Sleeping bodies count as static. Gravity says which
+    // way is up (for the last pass; none without gravity).
     void solve(std::span<Body> bodies, std::span<Manifold> manifolds,
-               const SolverSettings& settings, float dt);
+               const SolverSettings& settings, float dt, glm::vec3 gravity);
 
     // The velocity of the push (split impulses) that body i should move with
     // this step, besides its real velocity. Zero for a body in no contact.
@@ -73,12 +75,10 @@ private:
         Manifold* source;
     };
     void prepare(Manifold& manifold, const SolverSettings& settings, float dt);
-    float velocity_along(const Contact& c, const Row& row, glm::vec3 d) const;
-    void apply(const Contact& c, const Row& row, glm::vec3 d, float impulse);
-    void solve_friction(const Contact& c, Point& p, float friction);
-    void solve_normal(const Contact& c, Point& p);
-    void solve_push(const Contact& c, Point& p);
-    void shock_pass(const SolverSettings& settings);
+    static void solve_friction(const Contact& c, Point& p, float friction, State& a, State& b);
+    static void solve_normal(const Contact& c, Point& p, State& a, State& b);
+    static void solve_push(const Contact& c, Point& p, State& a, State& b);
+    void shock_pass(const SolverSettings& settings, glm::vec3 up);
 
     std::vector<State> states_;
     std::vector<glm::vec3> centres_;
