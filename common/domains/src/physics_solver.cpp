@@ -189,19 +189,17 @@ void Solver::shock_pass(const SolverSettings& s, glm::vec3 up) {
         const uint32_t l = lower(c);
         if (l == 2) continue;
         const uint32_t below = l == 0 ? c.a : c.b, above = l == 0 ? c.b : c.a;
-        if (level_[below] != unreached && level_[below] < level_[above]) order_.push_back(i);
+        if (level_[below] != unreached && level_[below] < level_[above])
+            order_.push_back(uint64_t(level_[below]) << 32 | i);
     }
-    auto key = [&](uint32_t i) {
-        const Contact& c = contacts_[i];
-        return uint64_t(level_[lower(c) == 0 ? c.a : c.b]) << 32 | i;
-    };
-    std::sort(order_.begin(), order_.end(),
-              [&](uint32_t i, uint32_t j) { return key(i) < key(j); });
+    std::sort(order_.begin(), order_.end());
+    // [/shock]
 
+    // [shock-solve]
     saved_mass_.resize(n);
     for (uint32_t i = 0; i < n; ++i) saved_mass_[i] = states_[i].inverse_mass;
-    for (uint32_t ci : order_) {
-        const Contact& c = contacts_[ci];
+    for (uint64_t key : order_) {
+        const Contact& c = contacts_[uint32_t(key)];
         const bool a_frozen = lower(c) == 0;
         // The lower body is now static: no mass, no spin from any impulse.
         states_[a_frozen ? c.a : c.b].inverse_mass = 0.0f;
@@ -219,7 +217,8 @@ void Solver::shock_pass(const SolverSettings& s, glm::vec3 up) {
         // One body against a fixed one: a small problem, solved to
         // convergence by passes back and forth over its points.
         State a = states_[c.a], b = states_[c.b];
-        for (int iteration = 0; iteration < s.shock_iterations; ++iteration)
+        const int passes = std::min(s.shock_iterations, 3 * int(c.count));
+        for (int iteration = 0; iteration < passes; ++iteration)
             for (uint32_t k = 0; k < c.count; ++k) {
                 Point& p = local[iteration % 2 ? c.count - 1 - k : k];
                 solve_friction(c, p, s.friction, a, b);
@@ -229,8 +228,8 @@ void Solver::shock_pass(const SolverSettings& s, glm::vec3 up) {
         states_[c.b] = b;
     }
     for (uint32_t i = 0; i < n; ++i) states_[i].inverse_mass = saved_mass_[i];
+    // [/shock-solve]
 }
-// [/shock]
 
 // [solve]
 void Solver::solve(std::span<Body> bodies, std::span<Manifold> manifolds, const SolverSettings& s,

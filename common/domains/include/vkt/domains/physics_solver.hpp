@@ -86,7 +86,8 @@ private:
     std::vector<Contact> contacts_;
     std::vector<Point> points_;
     // The shock pass's scratch: levels, the contact graph, the visiting order.
-    std::vector<uint32_t> level_, start_, neighbours_, cursor_, queue_, order_;
+    std::vector<uint32_t> level_, start_, neighbours_, cursor_, queue_;
+    std::vector<uint64_t> order_;  // the lower body's level, then the contact's index
     std::vector<float> saved_mass_;
 };
 
