@@ -10,7 +10,7 @@
 //   build/release/bin/physics_bench --scaling [COUNT...]
 //       For each count (default 250 500 ... 16000): the scene after 2 s, then
 //       the same world stepped with each broad phase, brute force and
-//       sort-and-sweep, and each broad phase alone.
+//       sort-and-sweep, and each broad phase alone (CPU times).
 //
 // Times: each step's wall-clock time and the thread's CPU time (which a
 // machine busy with other work inflates less); medians of each.
@@ -109,19 +109,19 @@ int scene(uint32_t count) {
     return 0;
 }
 
-// Median milliseconds per step over `steps` steps of a copy of `world`.
+// Median CPU milliseconds per step over `steps` steps of a copy of `world`.
 double time_steps(World world, BroadPhase broad_phase, int steps) {
     world.settings().broad_phase = broad_phase;
     std::vector<double> ms;
     for (int i = 0; i < steps; ++i) {
-        const double begin = wall_ms();
+        const double begin = cpu_ms();
         world.step();
-        ms.push_back(wall_ms() - begin);
+        ms.push_back(cpu_ms() - begin);
     }
     return median(ms);
 }
 
-// Median milliseconds of the broad phase alone (its AABBs given), on the same world.
+// Median CPU milliseconds of the broad phase alone (its AABBs given), on the same world.
 double time_pairs(const World& world, BroadPhase broad_phase, int runs) {
     std::vector<Aabb> aabbs;
     for (const Body& b : world.bodies())
@@ -131,12 +131,12 @@ double time_pairs(const World& world, BroadPhase broad_phase, int runs) {
     std::vector<double> ms;
     std::size_t found = 0;
     for (int i = 0; i < runs; ++i) {
-        const double begin = wall_ms();
+        const double begin = cpu_ms();
         if (broad_phase == BroadPhase::brute_force)
             find_pairs_brute_force(aabbs, world.bodies(), pairs);
         else
             sweep.find_pairs(aabbs, world.bodies(), pairs);
-        ms.push_back(wall_ms() - begin);
+        ms.push_back(cpu_ms() - begin);
         found += pairs.size();
     }
     if (found == 0) std::fprintf(stderr, "physics_bench: no pairs?\n");

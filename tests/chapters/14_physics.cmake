@@ -3,12 +3,12 @@
 # The picture is deterministic: headless, time is frame index / 60 and the
 # physics runs exactly 2 fixed steps of 1/120 s per frame, and the same
 # inputs give bit-equal physics (tests/unit/test_physics_world.cpp).
-# --warmup 8 simulates 8 s (960 steps) before the first frame: the heaps have
+# --warmup 10 simulates 10 s (1200 steps) before the first frame: the heaps have
 # settled and every box is asleep ("0 awake"), so frame 10 is a still picture
 # of them, with the pyramid and the tower of --scene stacks beside them.
-set(VKT_14_ARGS --warmup 8 --scene stacks)
+set(VKT_14_ARGS --warmup 10 --scene stacks)
 vkt_chapter_test(chapter.14_physics 14_physics GOLDEN BLESS ARGS ${headless} ${VKT_14_ARGS}
-  EXPECT "14_physics: 1000 boxes and the stacks, sort-and-sweep, 120 steps/s, 960 warm-up steps, [0-9]+ contact points, 0 awake")
+  EXPECT "14_physics: 1000 boxes and the stacks, sort-and-sweep, 120 steps/s, 1200 warm-up steps, [0-9]+ contact points, 0 awake")
 vkt_chapter_test(chapter.14_physics.offscreen 14_physics GOLDEN ARGS ${offscreen} ${VKT_14_ARGS})
 vkt_chapter_window_test(14_physics ARGS ${VKT_14_ARGS})
 # Brute force finds the same pairs in the same order, so the world, and the
