@@ -5,7 +5,8 @@
 //   1. velocities: gravity and the gyroscopic term   (physics_body.hpp)
 //   2. broad phase: AABB pairs by sort-and-sweep      (physics_broadphase.hpp)
 //   3. narrow phase: SAT and clipping, feature ids    (physics_collision.hpp)
-//   4. sequential impulses, warm started              (physics_solver.hpp)
+//   4. sequential impulses, warm started, then a      (physics_solver.hpp)
+//      last pass from the ground up
 //   5. positions and orientations
 //   6. islands that fall asleep                       (physics_sleep.hpp)
 //
@@ -40,7 +41,8 @@ struct Settings {
 
 // Where the last step's time went, in milliseconds.
 struct StepTimes {
-    double broad = 0, narrow = 0, solver = 0, other = 0;  // other: integration and sleeping
+    // solver: with moving the bodies; other: the velocity step and sleeping.
+    double broad = 0, narrow = 0, solver = 0, other = 0;
     double total() const { return broad + narrow + solver + other; }
 };
 

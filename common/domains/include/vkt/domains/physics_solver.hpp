@@ -22,7 +22,7 @@ namespace vkt::physics {
 struct SolverSettings {
     int iterations = 6;                  // passes over every contact point
     int push_iterations = 3;             // the first of them that also push overlapping boxes apart
-    int shock_iterations = 12;           // passes over each contact in the last pass (0: none)
+    int shock_iterations = 12;           // most passes over a support in the last pass (0: none)
     float restitution = 0.2f;            // 0: no bounce, 1: elastic
     float restitution_threshold = 1.0f;  // m/s: slower impacts do not bounce (rest, not jitter)
     float friction = 0.5f;               // Coulomb: |friction impulse| <= mu * normal impulse
