@@ -1,16 +1,19 @@
 // Chapter 14: physics.
 //
-// A thousand boxes fall onto a floor and onto each other, bounce a little,
-// slide a little and come to rest in stacks. The physics is plain C++ in
-// common/ (vkt/domains/physics.hpp: broad phase, narrow phase, impulses); this file
-// shows the two things that connect it to the screen. The fixed time step:
-// the world advances in steps of exactly 1/120 s however fast frames come.
-// And the new Vulkan concept, instancing: one cube mesh, one
+// A thousand boxes of several sizes, each turned at random, fall onto a floor
+// and a ramp, tumble over each other and settle into heaps; P (or --scene stacks)
+// adds a pyramid and a tall tower beside them. The physics is plain C++ in
+// common/ (vkt/domains/physics*.hpp: rigid bodies that turn, sort-and-sweep,
+// the separating axis test and contact clipping, sequential impulses,
+// sleeping); this file shows the two things that connect it to the screen.
+// The fixed time step: the world advances in steps of exactly 1/120 s however
+// fast frames come. And the new Vulkan concept, instancing: one cube mesh, one
 // vkCmdDrawIndexed with instanceCount = the number of boxes, and a second
 // vertex buffer that advances once per box instead of once per vertex,
-// holding each box's position, size and colour, rewritten every frame.
+// holding each box's position, size, orientation and colour, rewritten every
+// frame.
 
-#include "vkt/domains/physics.hpp"
+#include "vkt/domains/physics_scene.hpp"
 #include "vkt/frame/runner.hpp"
 #include "vkt/resources/depth.hpp"
 #include "vkt/resources/pipeline.hpp"
@@ -51,23 +54,27 @@ void make_cube(std::vector<Vertex>& vertices, std::vector<uint16_t>& indices) {
 }
 
 // [instance-struct]
-// What the vertex shader gets once per box: 28 bytes, tightly packed. The
-// colour is four bytes that the vertex input unpacks to four floats.
+// What the vertex shader gets once per box: 44 bytes, tightly packed. The
+// orientation is the body's unit quaternion (x, y, z, w); the colour is four
+// bytes that the vertex input unpacks to four floats.
 struct Instance {
     glm::vec3 position;
     glm::vec3 half_extents;
+    glm::vec4 orientation;
     uint32_t colour;  // R, G, B, A bytes, lowest first: VK_FORMAT_R8G8B8A8_UNORM
 };
-static_assert(sizeof(Instance) == 28);
+static_assert(sizeof(Instance) == 44);
 // [/instance-struct]
 
 // A colour per box from a small palette, lighter or darker by its index; the
-// floor (body 0) is grey. Linear values: the _SRGB target encodes them.
-uint32_t box_colour(uint32_t index) {
-    if (index == 0) return 0xff595959u;
+// static bodies (the floor, the ramp) are greys. Linear values: the _SRGB
+// target encodes them.
+uint32_t box_colour(const physics::Body& body, uint32_t index) {
+    if (body.is_static()) return index == 0 ? 0xff595959u : 0xff3a3a3au;
     static const uint32_t palette[] = {0xc03020, 0x2060c0, 0x30a040, 0xd0a020, 0x8040b0, 0x20a0a0};
-    const uint32_t rgb = palette[(index * 7u) % 6u];
-    const uint32_t scale = 160u + (index * 37u) % 96u;  // 160..255 of 255
+    const uint32_t hash = index * 2654435761u;  // Knuth's multiplicative hash: mixes neighbours
+    const uint32_t rgb = palette[(hash >> 16) % 6u];
+    const uint32_t scale = 160u + (hash >> 8) % 96u;  // 160..255 of 255
     uint32_t out = 0xff000000u;
     for (uint32_t shift : {0u, 8u, 16u})
         out |= (((rgb >> (16u - shift)) & 0xffu) * scale / 255u) << shift;
@@ -95,17 +102,23 @@ public:
                                    : physics::BroadPhase::sweep_and_prune;
         world_ = physics::World(settings);
         const auto count = uint32_t(options.integer("--count"));
-        const float floor_half_width = physics::add_falling_boxes(world_, count);
+        scene_ = physics::add_falling_boxes(world_, count);
+        const bool stacks = options.text("--scene") == "stacks";
+        if (stacks) physics::add_stacks(world_, scene_);
+        stacks_added_ = stacks;
         // --warmup: simulate this much before the first frame (the tests use
-        // it to photograph the boxes after they have landed).
+        // it to photograph the boxes after they have settled).
         const auto warmup = uint64_t(std::llround(options.number("--warmup") * kStepsPerSecond));
         for (uint64_t i = 0; i < warmup; ++i) world_.step();
-        std::fprintf(
-            stderr, "14_physics: %u boxes, %s, %g steps/s, %llu warm-up steps, %zu contacts\n",
-            count, options.text("--broadphase") == "brute" ? "brute force" : "sort-and-sweep",
-            kStepsPerSecond, (unsigned long long)warmup, world_.contact_count());
-        // The camera backs off as the pile grows (the floor grows with it).
-        eye_distance_ = floor_half_width;
+        std::fprintf(stderr,
+                     "14_physics: %u boxes%s, %s, %g steps/s, %llu warm-up steps, %zu contact "
+                     "points, %zu awake\n",
+                     count, stacks ? " and the stacks" : "",
+                     options.text("--broadphase") == "brute" ? "brute force" : "sort-and-sweep",
+                     kStepsPerSecond, (unsigned long long)warmup, world_.contact_points(),
+                     world_.awake_count());
+        // The camera backs off as the heaps grow.
+        eye_distance_ = 1.7f * scene_.extent;
 
         depth_format_ = vkt::choose_depth_format(physical_);
         depth_ = vkt::create_depth_image(physical_, device_, depth_format_, context.extent);
@@ -126,16 +139,18 @@ public:
         // One instance buffer per frame in flight: the CPU rewrites frame N's
         // while the GPU may still be reading frame N - 1's. Host-visible and
         // coherent, mapped for good; usage VERTEX_BUFFER like any vertex data.
+        // Room for the stacks too, which P may add later (75 boxes).
+        const std::size_t most = world_.bodies().size() + (stacks ? 0 : 75);
         for (uint32_t i = 0; i < context.frames_in_flight; ++i)
-            instance_buffers_.push_back(vkt::create_host_buffer(
-                gpu, world_.bodies().size() * sizeof(Instance), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT));
+            instance_buffers_.push_back(vkt::create_host_buffer(gpu, most * sizeof(Instance),
+                                                                VK_BUFFER_USAGE_VERTEX_BUFFER_BIT));
         // [/instance-buffers]
 
         // [vertex-input]
         // Two bindings. Binding 0 steps once per vertex: the cube's corner and
         // normal. Binding 1 steps once per INSTANCE: every vertex of box i
         // reads element i, so all 24 corners of a box see the same position,
-        // size and colour.
+        // size, orientation and colour.
         const VkVertexInputBindingDescription bindings[] = {
             {.binding = 0, .stride = sizeof(Vertex), .inputRate = VK_VERTEX_INPUT_RATE_VERTEX},
             {.binding = 1, .stride = sizeof(Instance), .inputRate = VK_VERTEX_INPUT_RATE_INSTANCE},
@@ -157,8 +172,12 @@ public:
              .binding = 1,
              .format = VK_FORMAT_R32G32B32_SFLOAT,
              .offset = offsetof(Instance, half_extents)},
-            // UNORM: the bytes 0..255 arrive in the shader as floats 0..1.
             {.location = 4,
+             .binding = 1,
+             .format = VK_FORMAT_R32G32B32A32_SFLOAT,
+             .offset = offsetof(Instance, orientation)},
+            // UNORM: the bytes 0..255 arrive in the shader as floats 0..1.
+            {.location = 5,
              .binding = 1,
              .format = VK_FORMAT_R8G8B8A8_UNORM,
              .offset = offsetof(Instance, colour)},
@@ -187,6 +206,11 @@ public:
     }
 
     void record(const vkt::Frame& frame) override {
+        // P: the pyramid and the tower, once (in a window; --scene stacks headless).
+        if (frame.input.went_down('P') && !stacks_added_) {
+            physics::add_stacks(world_, scene_);
+            stacks_added_ = true;
+        }
         // [fixed-step]
         // The accumulator, counted in whole steps: the steps due by now are
         // time * 120, rounded down; run the ones not run yet. Headless, time
@@ -203,14 +227,17 @@ public:
         // flush; the queue submit makes the writes visible to the GPU.
         auto* instances = static_cast<Instance*>(instance_buffers_[frame.slot].mapped);
         const auto bodies = world_.bodies();
-        for (uint32_t i = 0; i < bodies.size(); ++i)
-            instances[i] = {bodies[i].position, bodies[i].half_extents, box_colour(i)};
+        for (uint32_t i = 0; i < bodies.size(); ++i) {
+            const glm::quat q = bodies[i].orientation;
+            instances[i] = {bodies[i].position, bodies[i].half_extents,
+                            glm::vec4(q.x, q.y, q.z, q.w), box_colour(bodies[i], i)};
+        }
         // [/write-instances]
 
         const float aspect = float(frame.extent.width) / float(frame.extent.height);
         const float d = eye_distance_;
-        const glm::mat4 view = glm::lookAt(glm::vec3(0.55f * d, 0.7f * d, 1.45f * d),
-                                           glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0, 1, 0));
+        const glm::mat4 view = glm::lookAt(glm::vec3(0.45f * d, 0.8f * d, 1.3f * d),
+                                           glm::vec3(0.0f, 0.0f, -0.1f * d), glm::vec3(0, 1, 0));
         const glm::mat4 view_projection =
             vkt::vulkan_perspective(glm::radians(45.0f), aspect, 0.1f, 8.0f * d) * view;
 
@@ -246,7 +273,7 @@ public:
                            &view_projection);
         // [draw]
         // Binding 0: the cube. Binding 1: this frame's boxes. Then one draw:
-        // 36 indices, once per body (the floor is body 0, a box like the rest).
+        // 36 indices, once per body (the floor and the ramp are boxes too).
         const VkBuffer buffers[] = {cube_vertices_.buffer, instance_buffers_[frame.slot].buffer};
         const VkDeviceSize offsets[] = {0, 0};
         vkCmdBindVertexBuffers(frame.cmd, 0, 2, buffers, offsets);
@@ -261,6 +288,8 @@ private:
     VkPhysicalDevice physical_;
     VkDevice device_;
     physics::World world_;
+    physics::Scene scene_;
+    bool stacks_added_ = false;
     uint64_t steps_done_ = 0;
     float eye_distance_ = 12.0f;
     VkFormat depth_format_ = VK_FORMAT_UNDEFINED;
@@ -277,13 +306,14 @@ private:
 
 int main(int argc, char** argv) {
     // [spec]
-    vkt::ChapterSpec spec{.name = "14_physics", .title = "14 - physics"};
+    vkt::ChapterSpec spec{
+        .name = "14_physics", .title = "14 - physics", .input = vkt::InputUse::keys};
     // The depth barrier's DEPTH_ATTACHMENT_OPTIMAL layout (chapter 08).
     spec.requirements.features = {VKT_FEATURE_12(separateDepthStencilLayouts)};
     spec.options = {
-        // 65536: 1.8 MiB of instance data per frame in flight, and a step
-        // takes 32 ms on one core already at 16,000 boxes with sort-and-sweep
-        // (benchmarks/physics.md), far beyond 1/120 s.
+        // 65536: 2.8 MiB of instance data per frame in flight, but a physics
+        // step of that many boxes takes far longer than 1/120 s on one core
+        // (benchmarks/physics.md): the world then runs slower than real time.
         {.name = "--count",
          .type = vkt::OptionType::integer,
          .value_name = "N",
@@ -303,6 +333,11 @@ int main(int argc, char** argv) {
          .default_value = "0",
          .min = 0,
          .max = 60},
+        {.name = "--scene",
+         .type = vkt::OptionType::choice,
+         .help = "stacks: the heaps plus a 10-level pyramid and a 20-box tower (P in a window)",
+         .default_value = "heaps",
+         .choices = {"heaps", "stacks"}},
     };
     // [/spec]
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {

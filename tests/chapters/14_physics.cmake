@@ -1,26 +1,30 @@
-# Chapter 14: boxes falling onto a floor, drawn with instancing.
+# Chapter 14: boxes that turn, falling into heaps, drawn with instancing.
 #
 # The picture is deterministic: headless, time is frame index / 60 and the
 # physics runs exactly 2 fixed steps of 1/120 s per frame, and the same
-# inputs give bit-equal physics (tests/unit/test_physics.cpp). --warmup 3
-# simulates 3 s (360 steps) before the first frame, so frame 10 shows the
-# boxes after they have landed and stacked.
-set(VKT_14_ARGS --warmup 3)
+# inputs give bit-equal physics (tests/unit/test_physics_world.cpp).
+# --warmup 10 simulates 10 s (1200 steps) before the first frame: the heaps have
+# settled and every box is asleep ("0 awake"), so frame 10 is a still picture
+# of them, with the pyramid and the tower of --scene stacks beside them.
+set(VKT_14_ARGS --warmup 10 --scene stacks)
 vkt_chapter_test(chapter.14_physics 14_physics GOLDEN BLESS ARGS ${headless} ${VKT_14_ARGS}
-  EXPECT "14_physics: 1000 boxes, sort-and-sweep, 120 steps/s, 360 warm-up steps")
+  EXPECT "14_physics: 1000 boxes and the stacks, sort-and-sweep, 120 steps/s, 1200 warm-up steps, [0-9]+ contact points, 0 awake")
 vkt_chapter_test(chapter.14_physics.offscreen 14_physics GOLDEN ARGS ${offscreen} ${VKT_14_ARGS})
 vkt_chapter_window_test(14_physics ARGS ${VKT_14_ARGS})
 # Brute force finds the same pairs in the same order, so the world, and the
 # picture, are the same bit for bit.
 vkt_chapter_test(chapter.14_physics.brute 14_physics GOLDEN ARGS ${headless} ${VKT_14_ARGS}
-  --broadphase brute EXPECT "1000 boxes, brute force")
+  --broadphase brute EXPECT "1000 boxes and the stacks, brute force")
 vkt_chapter_test(chapter.14_physics.help 14_physics EXIT 0 ARGS --help
-  EXPECT "usage: 14_physics" "--count N" "--broadphase sap\\|brute" "--warmup SECONDS")
+  EXPECT "usage: 14_physics" "--count N" "--broadphase sap\\|brute" "--warmup SECONDS"
+         "--scene heaps\\|stacks")
 
-# Bad input: no boxes, too many, a broad phase it does not know.
+# Bad input: no boxes, too many, a broad phase or scene it does not know.
 vkt_chapter_test(bad_input.14_physics.count_zero 14_physics EXIT 2 ARGS --count 0
   EXPECT "--count wants a whole number from 1 to 65536, not '0'")
 vkt_chapter_test(bad_input.14_physics.count_too_many 14_physics EXIT 2 ARGS --count 65537
   EXPECT "--count wants a whole number from 1 to 65536, not '65537'")
 vkt_chapter_test(bad_input.14_physics.broadphase 14_physics EXIT 2 ARGS --broadphase grid
   EXPECT "--broadphase wants one of sap, brute, not 'grid'")
+vkt_chapter_test(bad_input.14_physics.scene 14_physics EXIT 2 ARGS --scene tower
+  EXPECT "--scene wants one of heaps, stacks, not 'tower'")

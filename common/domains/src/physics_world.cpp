@@ -1,0 +1,157 @@
+#include "vkt/domains/physics.hpp"
+
+#include <chrono>
+
+namespace vkt::physics {
+
+uint32_t World::add_box(glm::vec3 position, glm::vec3 half_extents, float density,
+                        glm::quat orientation, glm::vec3 velocity, glm::vec3 angular_velocity) {
+    const float mass = density * 8.0f * half_extents.x * half_extents.y * half_extents.z;
+    Body body;
+    body.position = position;
+    body.orientation = glm::normalize(orientation);
+    body.half_extents = half_extents;
+    if (mass > 0.0f) {
+        body.velocity = velocity;
+        body.angular_velocity = angular_velocity;
+        body.inverse_mass = 1.0f / mass;
+        body.inverse_inertia = box_inverse_inertia(half_extents, mass);
+    }
+    bodies_.push_back(body);
+    return uint32_t(bodies_.size() - 1);
+}
+
+std::size_t World::contact_points() const {
+    std::size_t n = 0;
+    for (const Manifold& m : manifolds_) n += m.count;
+    return n;
+}
+
+std::size_t World::awake_count() const {
+    std::size_t n = 0;
+    for (const Body& body : bodies_) n += body.is_active() ? 1 : 0;
+    return n;
+}
+
+double World::energy() const {
+    double sum = 0.0;
+    for (const Body& body : bodies_)
+        sum += kinetic_energy(body) + potential_energy(body, settings_.gravity);
+    return sum;
+}
+
+namespace {
+
+// Last step's impulses for the points of `now` that `before` had too (the
+// same feature id: the same corner on the same face), for the warm start.
+void carry_impulses(const Manifold& before, Manifold& now) {
+    for (uint32_t i = 0; i < now.count; ++i)
+        for (uint32_t j = 0; j < before.count; ++j)
+            if (now.points[i].id == before.points[j].id) {
+                now.points[i].normal_impulse = before.points[j].normal_impulse;
+                now.points[i].friction_impulse = before.points[j].friction_impulse;
+                break;
+            }
+}
+
+}  // namespace
+
+void World::find_pairs() {
+    if (settings_.broad_phase == BroadPhase::brute_force)
+        find_pairs_brute_force(aabbs_, bodies_, pairs_);
+    else
+        sweep_.find_pairs(aabbs_, bodies_, pairs_);
+}
+
+// [narrow-phase]
+void World::narrow_phase() {
+    std::swap(previous_, manifolds_);
+    auto asleep = [&](const Manifold& m) {
+        return !bodies_[m.a].is_active() && !bodies_[m.b].is_active();
+    };
+    for (;;) {
+        manifolds_.clear();
+        to_wake_.clear();
+        // Both lists are sorted by pair: one merge walk through them.
+        auto old = previous_.begin();
+        for (const Pair& pair : pairs_) {
+            // A contact between sleepers (or a sleeper and something static)
+            // stays as it was, impulses and all, ready for when its island
+            // wakes: nothing there has moved.
+            for (; old != previous_.end() && Pair{old->a, old->b} < pair; ++old)
+                if (asleep(*old)) manifolds_.push_back(*old);
+            Manifold m;
+            if (!collide(boxes_[pair.a], boxes_[pair.b], settings_.margin, m)) continue;
+            m.a = pair.a;
+            m.b = pair.b;
+            if (old != previous_.end() && old->a == pair.a && old->b == pair.b)
+                carry_impulses(*old, m);
+            // Something moving touches a sleeper: its island wakes.
+            for (uint32_t i : {pair.a, pair.b})
+                if (!bodies_[i].is_static() && !bodies_[i].awake)
+                    to_wake_.push_back(bodies_[i].island);
+            manifolds_.push_back(m);
+        }
+        for (; old != previous_.end(); ++old)
+            if (asleep(*old)) manifolds_.push_back(*old);
+        if (to_wake_.empty()) return;
+        // Once more with the woken islands awake (their pairs are new to the
+        // broad phase), so that their contacts are solved in this very step.
+        Islands::wake(bodies_, to_wake_);
+        find_pairs();
+    }
+}
+// [/narrow-phase]
+
+// [step]
+void World::step() {
+    using clock = std::chrono::steady_clock;
+    const auto start = clock::now();
+    const Settings& s = settings_;
+    const float dt = s.time_step;
+    const auto n = uint32_t(bodies_.size());
+
+    // 1. Velocities: gravity and the gyroscopic term.
+    for (Body& body : bodies_)
+        if (body.is_active()) integrate_velocity(body, s.gravity, dt);
+    const auto velocities_done = clock::now();
+
+    // 2. Broad phase: each box's axes and world AABB, then the pairs whose
+    // AABBs overlap.
+    boxes_.resize(n);
+    aabbs_.resize(n);
+    for (uint32_t i = 0; i < n; ++i) {
+        boxes_[i] = oriented_box(bodies_[i]);
+        aabbs_[i] =
+            world_aabb(boxes_[i].centre, boxes_[i].rotation, boxes_[i].half_extents, s.margin);
+    }
+    find_pairs();
+    const auto broad_done = clock::now();
+
+    // 3. Narrow phase: contact manifolds, last step's impulses, waking.
+    narrow_phase();
+    const auto narrow_done = clock::now();
+
+    // 4. Sequential impulses; 5. move with the solved velocities plus the push.
+    solver_.solve(bodies_, manifolds_, s.solver, dt, s.gravity);
+    for (uint32_t i = 0; i < n; ++i) {
+        Body& body = bodies_[i];
+        if (!body.is_active()) continue;
+        integrate_position(body, body.velocity + solver_.push_velocity(i),
+                           body.angular_velocity + solver_.push_angular_velocity(i), dt);
+    }
+    const auto solver_done = clock::now();
+
+    // 6. Islands at rest fall asleep.
+    islands_.update(bodies_, manifolds_, s.sleep, dt);
+    const auto done = clock::now();
+
+    auto ms = [](clock::duration d) {
+        return std::chrono::duration<double, std::milli>(d).count();
+    };
+    times_ = {ms(broad_done - velocities_done), ms(narrow_done - broad_done),
+              ms(solver_done - narrow_done), ms(velocities_done - start) + ms(done - solver_done)};
+}
+// [/step]
+
+}  // namespace vkt::physics
