@@ -3,7 +3,8 @@
 // pass that rasterises every line into a storage buffer of one word per
 // pixel (raster.comp: one invocation per line, atomicMax per pixel), laid
 // out as the colour target's pixels, and a copy that moves it onto the
-// colour target. It reads the projected vertices and line ends that the
+// colour target. The binned rasteriser (binned_raster.hpp) draws into the
+// same buffer with the same palette. It reads the projected vertices and line ends that the
 // transform pass and main.cpp set up, through the same descriptor sets.
 
 #include "scene_state.hpp"
@@ -97,7 +98,7 @@ public:
     // has read them), then rasterise every line into them. The frame's
     // descriptor set is bound already (by the transform pass, same layout);
     // `projected` is what that pass wrote.
-    void draw(VkCommandBuffer cmd, VkBuffer projected) const {
+    void clear(VkCommandBuffer cmd) const {
         // The specification counts vkCmdFillBuffer among the clear commands
         // (CLEAR stage); validation layers before 2024 (Debian 12's among
         // them) count it as a copy. ALL_TRANSFER covers both.
@@ -109,6 +110,9 @@ public:
             cmd, pixels_.buffer, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
             VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    }
+    void draw(VkCommandBuffer cmd, VkBuffer projected) const {
+        clear(cmd);
         vkt::buffer_barrier(cmd, projected, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -150,7 +154,6 @@ public:
     // [/copy-to-target]
 
     VkBuffer pixels() const { return pixels_.buffer; }
-    uint32_t background() const { return background_; }
 
 private:
     vkt::Gpu gpu_;

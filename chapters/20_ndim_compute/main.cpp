@@ -126,8 +126,8 @@ public:
         // One set layout for all the passes: 0 coordinates, 1 object table,
         // 2 poses, 3 projected vertices, 4 line ends, 5 the rasteriser's
         // pixels, 6 its palette (5 and 6 written for the compute rasterisers
-        // only), 7 to 11 the binned rasteriser's own (binned_raster.hpp).
-        constexpr uint32_t binding_count = 12;
+        // only), 7 to 9 the binned rasteriser's own (binned_raster.hpp).
+        constexpr uint32_t binding_count = 10;
         VkDescriptorSetLayoutBinding bindings[binding_count];
         for (uint32_t b = 0; b < binding_count; ++b)
             bindings[b] = {.binding = b,
@@ -208,7 +208,7 @@ public:
         if (options.text("--raster") != "graphics")
             raster_.emplace(context, layout_, sets_, line_total_);
         if (options.text("--raster") == "binned")
-            binned_.emplace(context, layout_, sets_, line_counts, raster_->background());
+            binned_.emplace(context, layout_, sets_, line_counts, max_vertices_);
     }
 
     // The compute rasterisers' buffers follow the window's size.
@@ -255,10 +255,10 @@ public:
         if (binned_) {
             {
                 auto scope = frame.gpu_scope("bin");
-                binned_->bin(cmd);
+                binned_->bin(cmd, frame.timer, frame.slot);
             }
             auto scope = frame.gpu_scope("raster");
-            binned_->draw(cmd, raster_->pixels());
+            binned_->draw(cmd, *raster_, frame.timer, frame.slot);
             raster_->copy_to_target(frame);
             return;
         }

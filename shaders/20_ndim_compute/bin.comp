@@ -1,93 +1,54 @@
 #version 450
-// Chapter 20, --raster binned, pass 2 of 3: the objects sorted into screen
-// tiles of TILE x TILE pixels. Each object goes into the list of every tile
-// its box (bounds.comp) touches: count the objects per tile, turn the counts
-// into where each tile's list starts (an exclusive prefix sum), then write
-// each object into its tiles' lists. A few hundred objects, a few thousand
-// tiles: one workgroup does it all, with barriers between the steps.
+// Chapter 20, --raster binned, pass 2 of 3: the work list. Each object's box
+// (boxes.comp) is cut into pieces of at most PIECE x PIECE pixels, each small
+// enough for one workgroup's shared memory: count each object's pieces, turn
+// the counts into where each object's entries start (an exclusive prefix
+// sum), and write one entry per piece. A few hundred objects: one workgroup.
 #extension GL_GOOGLE_include_directive : require
 #include "ndim.glsl"
 
 layout(local_size_x = 256) in;
-layout(constant_id = 0) const uint TILE = 64;
-layout(std430, set = 0, binding = 9) readonly buffer ObjectBoxes { uvec4 object_boxes[]; };
-// [0, tiles): where each tile's list starts; [tiles, 2 tiles): its count,
-// then, once the lists are written, where it ends. Coherent: invocations
-// read what others wrote, after a barrier.
-layout(std430, set = 0, binding = 10) coherent buffer TileRanges { uint tile_ranges[]; };
-layout(std430, set = 0, binding = 11) writeonly buffer TileObjects { uint tile_objects[]; };
+layout(constant_id = 0) const uint PIECE = 64;
+#include "bins.glsl"
 
 shared uint partial[256];
 
-// The tiles object o's box touches, t0 to t1 inclusive; false if none.
-bool object_tiles(uint o, out uvec2 t0, out uvec2 t1) {
-    const uvec4 box = object_boxes[o];
-    const uvec2 lo = 0xffffu - box.xy, hi = box.zw;
-    t0 = lo / TILE;
-    t1 = hi / TILE;
-    return all(lessThanEqual(lo, hi));
+uint pieces(uint o) {
+    ivec2 lo, hi;
+    if (!object_box(o, lo, hi)) return 0u;
+    const uvec2 grid = piece_grid(lo, hi, PIECE);
+    return grid.x * grid.y;
 }
 
 void main() {
-    const uvec2 tiles = (push.size + TILE - 1u) / TILE;
-    const uint tile_count = tiles.x * tiles.y, lid = gl_LocalInvocationID.x;
-    const uint group = gl_WorkGroupSize.x;
-    // [count]
-    for (uint t = lid; t < tile_count; t += group) tile_ranges[tile_count + t] = 0u;
-    memoryBarrierBuffer();
-    barrier();
-    for (uint o = lid; o < push.object_count; o += group) {
-        uvec2 t0, t1;
-        if (object_tiles(o, t0, t1))
-            for (uint y = t0.y; y <= t1.y; ++y)
-                for (uint x = t0.x; x <= t1.x; ++x) atomicAdd(tile_ranges[tile_count + y * tiles.x + x], 1u);
-    }
-    memoryBarrierBuffer();
-    barrier();
-    // [/count]
-
-    // [scan]
-    // Each invocation sums a run of consecutive tiles; the first invocation
-    // turns the 256 sums into where each run starts; each invocation then
-    // walks its run again, writing each tile's start (and, as a cursor for
-    // the next step, the same value over its count).
-    const uint per = (tile_count + group - 1u) / group;
-    const uint begin = min(lid * per, tile_count), end = min(begin + per, tile_count);
-    uint sum = 0u;
-    for (uint t = begin; t < end; ++t) sum += tile_ranges[tile_count + t];
-    partial[lid] = sum;
+    const uint lid = gl_LocalInvocationID.x, objects = push.object_count;
+    // [count-scan-scatter]
+    // Each invocation takes a run of consecutive objects and counts their
+    // pieces; the first invocation turns the 256 counts into where each run
+    // starts; each invocation then writes its run's entries from there.
+    const uint per = (objects + 255u) / 256u;
+    const uint begin = min(lid * per, objects), end = min(begin + per, objects);
+    uint count = 0u;
+    for (uint o = begin; o < end; ++o) count += pieces(o);
+    partial[lid] = count;
     barrier();
     if (lid == 0u) {
         uint run = 0u;
-        for (uint k = 0u; k < group; ++k) {
-            const uint count = partial[k];
+        for (uint k = 0u; k < 256u; ++k) {
+            const uint c = partial[k];
             partial[k] = run;
-            run += count;
+            run += c;
         }
+        // The tile pass's workgroups, one per entry, in rows of 65,535.
+        tile_count = run;
+        const uint rows = (run + 65534u) / 65535u;
+        tile_groups = uvec3(rows > 1u ? 65535u : run, rows, 1u);
     }
     barrier();
-    uint run = partial[lid];
-    for (uint t = begin; t < end; ++t) {
-        const uint count = tile_ranges[tile_count + t];
-        tile_ranges[t] = run;
-        tile_ranges[tile_count + t] = run;
-        run += count;
+    uint at = partial[lid];
+    for (uint o = begin; o < end; ++o) {
+        const uint n = pieces(o);
+        for (uint p = 0u; p < n; ++p) tiles[at++] = uvec2(o, p);
     }
-    memoryBarrierBuffer();
-    barrier();
-    // [/scan]
-
-    // [scatter]
-    // The same tiles as in the count, each taking the next place in its list
-    // with an atomic add on its cursor; the cursors end where the lists do.
-    // The order within a list depends on timing; the picture does not, since
-    // each pixel keeps the largest word whatever the order.
-    for (uint o = lid; o < push.object_count; o += group) {
-        uvec2 t0, t1;
-        if (object_tiles(o, t0, t1))
-            for (uint y = t0.y; y <= t1.y; ++y)
-                for (uint x = t0.x; x <= t1.x; ++x)
-                    tile_objects[atomicAdd(tile_ranges[tile_count + y * tiles.x + x], 1u)] = o;
-    }
-    // [/scatter]
+    // [/count-scan-scatter]
 }

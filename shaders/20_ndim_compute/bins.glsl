@@ -1,24 +1,29 @@
-// Chapter 20, --raster binned: what its three passes (bounds.comp, bin.comp,
-// tiles.comp) share.
+// Chapter 20, --raster binned: what its three passes (boxes.comp, bin.comp,
+// tiles.comp) share. Needs ndim.glsl.
 
-// [line-range]
-// Each object's lines, in chunks of CHUNK lines: its first line in the line
-// list (main.cpp's index buffer), how many, and where its chunks' boxes start
-// in the list of every chunk's box. Built once on the CPU.
-struct LineRange {
-    uint first_line, line_count;
-    uint first_chunk, chunk_count;  // chunk_count = ceil(line_count / CHUNK)
+// [bins]
+// Per object: its lines in the line list (built once), and its box on the
+// screen in pixels (boxes.comp, each frame), stored as (0xffff - lo.x,
+// 0xffff - lo.y, hi.x, hi.y) so that every part grows with the box and
+// atomicMax merges boxes, from all zeros: an empty box.
+layout(std430, set = 0, binding = 7) readonly buffer ObjectLines { uvec2 object_lines[]; };
+layout(std430, set = 0, binding = 8) buffer Boxes { uvec4 boxes[]; };
+// The work list (bin.comp): one tile per entry, a piece of at most PIECE x
+// PIECE pixels of one object's box, and the tile pass's indirect dispatch.
+layout(std430, set = 0, binding = 9) buffer Tiles {
+    uvec3 tile_groups;  // VkDispatchIndirectCommand
+    uint tile_count;
+    uvec2 tiles[];      // (object, piece)
 };
-const uint CHUNK = 64u;
-// [/line-range]
+// [/bins]
 
-// A box of pixels, lo to hi inclusive, packed in two words (x | y << 16); lo
-// above hi marks it empty. The tile pass reads one box per chunk.
-uvec2 pack_box(ivec2 lo, ivec2 hi) {
-    if (any(greaterThan(lo, hi))) return uvec2(0xffffffffu, 0u);
-    return uvec2(uint(lo.x) | uint(lo.y) << 16, uint(hi.x) | uint(hi.y) << 16);
+// Object o's box, lo to hi inclusive; false if empty.
+bool object_box(uint o, out ivec2 lo, out ivec2 hi) {
+    const uvec4 box = boxes[o];
+    lo = ivec2(0xffffu - box.xy);
+    hi = ivec2(box.zw);
+    return all(lessThanEqual(lo, hi));
 }
-bool box_overlaps(uvec2 box, ivec2 lo, ivec2 hi) {
-    const ivec2 box_lo = ivec2(box.x & 0xffffu, box.x >> 16), box_hi = ivec2(box.y & 0xffffu, box.y >> 16);
-    return all(lessThanEqual(box_lo, hi)) && all(greaterThanEqual(box_hi, lo));
-}
+
+// How many pieces of PIECE x PIECE pixels cover the box, across and down.
+uvec2 piece_grid(ivec2 lo, ivec2 hi, uint piece) { return (uvec2(hi - lo) + piece) / piece; }

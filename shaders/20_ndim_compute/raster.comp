@@ -44,9 +44,9 @@ void main() {
     for (int i = w.first + int(lane); i <= w.last; i += int(LANES)) {
         float t;
         const int j = walk_minor(w, i, t);
-        if (j < 0 || j >= int(push.size[w.minor])) continue;
+        if (j < 0 || j >= int(w.x_major ? push.size.y : push.size.x)) continue;
         const uint word = walk_word(w, t);
-        const uint at = w.major == 0 ? uint(j) * push.size.x + uint(i) : uint(i) * push.size.x + uint(j);
+        const uint at = w.x_major ? uint(j) * push.size.x + uint(i) : uint(i) * push.size.x + uint(j);
         // Look before the read-modify-write: where a nearer line has the
         // pixel already, which is most pixels where thousands of lines
         // overlap, a plain (relaxed) atomic load is all it costs. Words only

@@ -10,11 +10,13 @@
 // The last pixel is left to the next line (half-open, like the hardware's
 // lines), and the walk is clamped to the image.
 struct Walk {
-    vec2 p0, d;           // the first end in pixels; the second minus the first
-    int major, minor;     // 0: x, 1: y
+    bool x_major;         // the major axis: x, or y
+    float major0, minor0; // the first end, in pixels along each axis
+    float minor_d;        // the second end's minor coordinate minus the first's
+    float per_pixel;      // t's step from one pixel to the next along the major axis
     int first, last;      // the steps along the major axis, inclusive
-    float per_pixel;      // t's step from one pixel to the next
     float depth0, depth1; // the ends' depths, -1..1
+    float far;            // the largest coordinate of either end, in pixels
 };
 
 // False where there is nothing to walk: an end behind the eye, or a line of
@@ -22,28 +24,30 @@ struct Walk {
 bool start_walk(Projected a, Projected b, out Walk w) {
     if ((a.colour >> 24) == 0u || (b.colour >> 24) == 0u) return false;
     const vec2 size = vec2(push.size);
-    w.p0 = (a.xy * 0.5 + 0.5) * size;
-    const vec2 p1 = (b.xy * 0.5 + 0.5) * size;
-    w.d = p1 - w.p0;
-    w.major = abs(w.d.x) >= abs(w.d.y) ? 0 : 1;
-    w.minor = 1 - w.major;
-    if (w.d[w.major] == 0.0) return false;
-    const bool forward = w.d[w.major] > 0.0;
-    const float start = forward ? w.p0[w.major] : p1[w.major];
-    const float end = forward ? p1[w.major] : w.p0[w.major];
+    const vec2 p0 = (a.xy * 0.5 + 0.5) * size, p1 = (b.xy * 0.5 + 0.5) * size, d = p1 - p0;
+    w.x_major = abs(d.x) >= abs(d.y);
+    // The ends with the major axis first.
+    const vec2 q0 = w.x_major ? p0 : p0.yx, q1 = w.x_major ? p1 : p1.yx, e = q1 - q0;
+    if (e.x == 0.0) return false;
+    const float start = min(q0.x, q1.x), end = max(q0.x, q1.x);
+    w.major0 = q0.x;
+    w.minor0 = q0.y;
+    w.minor_d = e.y;
     w.first = max(int(ceil(start - 0.5)), 0);
-    w.last = min(int(ceil(end - 0.5)), int(push.size[w.major])) - 1;
-    w.per_pixel = 1.0 / w.d[w.major];
+    w.last = min(int(ceil(end - 0.5)), int(w.x_major ? push.size.x : push.size.y)) - 1;
+    w.per_pixel = 1.0 / e.x;
     w.depth0 = a.depth;
     w.depth1 = b.depth;
+    const vec2 far = max(abs(p0), abs(p1));
+    w.far = max(far.x, far.y);
     return true;
 }
 
 // Step i (a pixel column, or row, along the major axis): the pixel along the
 // minor axis, which may lie outside the image, and t, 0 at a and 1 at b.
 int walk_minor(Walk w, int i, out float t) {
-    t = (float(i) + 0.5 - w.p0[w.major]) * w.per_pixel;
-    return int(floor(w.p0[w.minor] + t * w.d[w.minor]));
+    t = (float(i) + 0.5 - w.major0) * w.per_pixel;
+    return int(floor(w.minor0 + t * w.minor_d));
 }
 
 // The word at t: the depth t = -1..1 as level 1..255 (0 is the background),
