@@ -16,6 +16,7 @@
 
 namespace ch20 {
 
+// [compute-barrier]
 // One memory barrier for every buffer: the compute writes so far, visible to
 // the next dispatch's reads and writes (and the next dispatch waits for every
 // earlier one, the previous frame's included).
@@ -31,6 +32,7 @@ inline void compute_barrier(VkCommandBuffer cmd) {
                                       .pMemoryBarriers = &barrier};
     vkCmdPipelineBarrier2(cmd, &dependency);
 }
+// [/compute-barrier]
 
 class BinnedRaster {
 public:
