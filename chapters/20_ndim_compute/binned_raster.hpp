@@ -42,10 +42,10 @@ public:
     // the boxes pass writes each frame. The tiles are as large as shared
     // memory allows (88x88 pixels in lavapipe's 32 KiB, 104x104 in 48 KiB),
     // so that one holds a small object whole. On a GPU, 1,024 invocations
-    // share out an object's lines (fewer were slower on the H100: 256 took
-    // 2.3x as long); on a CPU device, 8, one vector of lavapipe's SIMD lanes,
-    // which then never switches between groups of lanes at a barrier (64
-    // took 1.5x as long).
+    // share out an object's lines (512 took 1.5x as long on the H100); on a
+    // CPU device, 8, one vector of lavapipe's SIMD lanes, which then never
+    // switches between groups of lanes at a barrier (64 took up to 1.5x as
+    // long).
     BinnedRaster(const vkt::Context& context, VkPipelineLayout layout,
                  std::span<const VkDescriptorSet> sets, std::span<const uint32_t> line_counts,
                  uint32_t max_vertices)
