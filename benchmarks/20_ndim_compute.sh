@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Chapter 20's benchmark (benchmarks/20_ndim_compute.md): one n-cube and 250
 # n-cubes at n = 4, 8, 12, at 1920x1080, validation off, with the lines drawn
-# by the graphics pipeline and by the compute rasteriser; one JSON line per
+# by the graphics pipeline, the compute rasteriser and the binned one
+# (RASTERS, default "graphics compute binned"); one JSON line per
 # run (--benchmark: frame times and the GPU scopes "transform" and "raster"),
 # each preceded by a line naming its arguments and followed by the chapter's
 # CPU time per frame (building the poses). Fewer frames where a frame takes
@@ -18,7 +19,7 @@ size=1920x1080
 run() {
   local frames=$(($1 * scale))
   shift
-  for raster in graphics compute; do
+  for raster in ${RASTERS:-graphics compute binned}; do
     echo "# 20_ndim_compute $* --raster $raster --frames $frames"
     "$bin/20_ndim_compute" "$path" --no-validation --size "$size" --benchmark \
       --frames "$frames" "$@" --raster "$raster" 2>"$log"

@@ -1,7 +1,7 @@
 // Runs one chapter executable and judges the run. Used by CTest for every
 // chapter regression test and every bad-input test:
 //
-//   vkt_chapter_check --exe PATH --out DIR --name NAME [--golden PNG]
+//   vkt_chapter_check --exe PATH --out DIR --name NAME [--golden PNG [--exact]]
 //                     [--exit N] [--expect REGEX]... [--pixel X,Y,R,G,B[,TOL]]...
 //                     [--isolate DIR] -- ARGS...
 //   vkt_chapter_check --png FILE [--pixel X,Y,R,G,B[,TOL]]...
@@ -12,9 +12,10 @@
 // is N (default 0); with exit 0 and --validation in ARGS, stderr says
 // "validation: 0 warnings, 0 errors"; every REGEX matches stdout or stderr;
 // every --pixel of the screenshot has that colour (within TOL, default 1);
-// and the screenshot is within vkt::Tolerance of the golden image. The --png
-// form checks the pixels of an existing picture. A failed comparison leaves
-// NAME.png (rendered) and NAME.diff.png.
+// and the screenshot is within vkt::Tolerance of the golden image (with
+// --exact: equal to it in every pixel, for two ways of drawing that must
+// agree to the bit). The --png form checks the pixels of an existing picture.
+// A failed comparison leaves NAME.png (rendered) and NAME.diff.png.
 // With VKT_BLESS=1 in the environment the screenshot replaces the golden image.
 // --isolate DIR runs a copy of the executable from DIR/bin, so that it finds
 // DIR/shaders (prepared by the test: empty, or holding corrupt SPIR-V) instead
@@ -104,6 +105,7 @@ int main(int argc, char** argv) {
     std::string name;
     int expected_exit = 0;
     fs::path isolate, png_only;
+    bool exact = false;
     std::vector<std::string> expects, pixels, chapter_args;
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
@@ -129,6 +131,8 @@ int main(int argc, char** argv) {
             pixels.push_back(next());
         else if (arg == "--isolate")
             isolate = next();
+        else if (arg == "--exact")
+            exact = true;
         else if (arg == "--") {
             chapter_args.assign(argv + i + 1, argv + argc);
             break;
@@ -221,7 +225,9 @@ int main(int argc, char** argv) {
             return fail("picture is " + std::to_string(actual.width) + "x" +
                         std::to_string(actual.height) + ", golden is " +
                         std::to_string(expected.width) + "x" + std::to_string(expected.height));
-        const vkt::Tolerance tolerance;
+        const vkt::Tolerance tolerance =
+            exact ? vkt::Tolerance{.max_rmse = 0.0, .threshold = 0, .max_fraction = 0.0}
+                  : vkt::Tolerance{};
         const vkt::ImageDifference d = vkt::compare_images(actual, expected, tolerance.threshold);
         std::printf(
             "picture: RMSE %.3f (max %.1f), %.4f%% of pixels off by more than %d (max %.2f%%), "

@@ -3,7 +3,8 @@
 // pass that rasterises every line into a storage buffer of one word per
 // pixel (raster.comp: one invocation per line, atomicMax per pixel), laid
 // out as the colour target's pixels, and a copy that moves it onto the
-// colour target. It reads the projected vertices and line ends that the
+// colour target. The binned rasteriser (binned_raster.hpp) draws into the
+// same buffer with the same palette. It reads the projected vertices and line ends that the
 // transform pass and main.cpp set up, through the same descriptor sets.
 
 #include "scene_state.hpp"
@@ -94,11 +95,10 @@ public:
 
     // [compute-raster]
     // Fill the words with the background (after the previous frame's copy
-    // has read them), rasterise every line into them, copy them onto the
-    // colour target. The frame's descriptor set is bound already (by the
-    // transform pass, same layout); `projected` is what that pass wrote.
-    void record(const vkt::Frame& frame, VkBuffer projected) const {
-        const VkCommandBuffer cmd = frame.cmd;
+    // has read them), then rasterise every line into them. The frame's
+    // descriptor set is bound already (by the transform pass, same layout);
+    // `projected` is what that pass wrote.
+    void clear(VkCommandBuffer cmd) const {
         // The specification counts vkCmdFillBuffer among the clear commands
         // (CLEAR stage); validation layers before 2024 (Debian 12's among
         // them) count it as a copy. ALL_TRANSFER covers both.
@@ -110,6 +110,9 @@ public:
             cmd, pixels_.buffer, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
             VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    }
+    void draw(VkCommandBuffer cmd, VkBuffer projected) const {
+        clear(cmd);
         vkt::buffer_barrier(cmd, projected, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -120,12 +123,17 @@ public:
         const uint64_t rows = vkt::dispatch_count(groups, max_groups_x_);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
         vkCmdDispatch(cmd, uint32_t(rows == 1 ? groups : max_groups_x_), uint32_t(rows), 1);
+    }
+    // [/compute-raster]
 
-        // The words are the target's pixels already: a buffer-to-image copy
-        // takes the buffer's bytes as texels of the target's own format (4
-        // bytes each, rows tightly packed), bits unchanged. The target goes
-        // to its transfer layout for the copy and back to the layout the
-        // runner expects after record().
+    // [copy-to-target]
+    // The words are the target's pixels already: a buffer-to-image copy
+    // takes the buffer's bytes as texels of the target's own format (4
+    // bytes each, rows tightly packed), bits unchanged. The target goes to
+    // its transfer layout for the copy and back to the layout the runner
+    // expects after record(). (The binned rasteriser ends the same way.)
+    void copy_to_target(const vkt::Frame& frame) const {
+        const VkCommandBuffer cmd = frame.cmd;
         vkt::buffer_barrier(cmd, pixels_.buffer, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                             VK_ACCESS_2_TRANSFER_READ_BIT);
@@ -143,7 +151,9 @@ public:
             VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
     }
-    // [/compute-raster]
+    // [/copy-to-target]
+
+    VkBuffer pixels() const { return pixels_.buffer; }
 
 private:
     vkt::Gpu gpu_;

@@ -9,8 +9,11 @@
 // With --raster compute, a second compute pass draws the lines itself into a
 // storage buffer of one word per pixel (one invocation per line, atomicMax
 // per pixel), laid out as the colour target's pixels, and a copy moves it
-// onto the colour target (compute_raster.hpp).
+// onto the colour target (compute_raster.hpp). With --raster binned, the
+// lines are sorted into screen tiles first and each workgroup draws one tile
+// in shared memory (binned_raster.hpp): the same picture, pixel for pixel.
 
+#include "binned_raster.hpp"
 #include "compute_raster.hpp"
 #include "scene_state.hpp"
 #include "vkt/core/barrier.hpp"
@@ -52,6 +55,7 @@ public:
         n_ = choice.n;
         still_ = choice.still;
         verify_ = options.has("--verify");
+        verify_raster_ = verify_ && options.text("--verify") == "raster";
         verify_frame_ = options.frames.value_or(1) - 1;
         benchmark_ = options.benchmark;
         scene_ = nd::make_scene(scene, n_, still_);
@@ -71,7 +75,7 @@ public:
             coords.insert(coords.end(), mesh.coords.begin(), mesh.coords.end());
         }
         std::vector<ObjectInfo> objects;
-        std::vector<uint32_t> ends;
+        std::vector<uint32_t> ends, line_counts;
         for (const nd::SceneObject& object : scene_.objects) {
             const nd::Mesh& mesh = scene_.meshes[size_t(object.mesh)];
             const ObjectInfo info{mesh_first[size_t(object.mesh)], uint32_t(mesh.vertex_count()),
@@ -81,6 +85,7 @@ public:
                 ends.push_back(info.first_out + e.b);
             }
             objects.push_back(info);
+            line_counts.push_back(uint32_t(mesh.edges.size()));
             vertex_total_ += info.vertex_count;
             max_vertices_ = std::max(max_vertices_, info.vertex_count);
         }
@@ -120,16 +125,18 @@ public:
         // [descriptors]
         // One set layout for all the passes: 0 coordinates, 1 object table,
         // 2 poses, 3 projected vertices, 4 line ends, 5 the rasteriser's
-        // pixels, 6 its palette (5 and 6 written for --raster compute only).
-        VkDescriptorSetLayoutBinding bindings[7];
-        for (uint32_t b = 0; b < 7; ++b)
+        // pixels, 6 its palette (5 and 6 written for the compute rasterisers
+        // only), 7 to 9 the binned rasteriser's own (binned_raster.hpp).
+        constexpr uint32_t binding_count = 10;
+        VkDescriptorSetLayoutBinding bindings[binding_count];
+        for (uint32_t b = 0; b < binding_count; ++b)
             bindings[b] = {.binding = b,
                            .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                            .descriptorCount = 1,
                            .stageFlags = VK_SHADER_STAGE_COMPUTE_BIT};
         set_layout_ = vkt::create_descriptor_set_layout(device_, bindings);
         const VkDescriptorPoolSize sizes[] = {
-            {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 7 * context.frames_in_flight}};
+            {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, binding_count * context.frames_in_flight}};
         pool_ = vkt::create_descriptor_pool(device_, context.frames_in_flight, sizes);
         for (uint32_t i = 0; i < context.frames_in_flight; ++i) {
             const VkDescriptorSet set = vkt::allocate_descriptor_set(device_, pool_, set_layout_);
@@ -196,14 +203,18 @@ public:
                                                     .color_formats = {context.color_format}});
         // [/line-pipeline]
         // --raster compute: the lines drawn by a compute pass instead
-        // (compute_raster.hpp), through the same sets and pipeline layout.
-        if (options.text("--raster") == "compute")
+        // (compute_raster.hpp), through the same sets and pipeline layout;
+        // --raster binned: the same, tile by tile (binned_raster.hpp).
+        if (options.text("--raster") != "graphics")
             raster_.emplace(context, layout_, sets_, line_total_);
+        if (options.text("--raster") == "binned")
+            binned_.emplace(context, layout_, sets_, line_counts, max_vertices_);
     }
 
-    // The compute rasteriser's pixel buffer follows the window's size.
+    // The compute rasterisers' buffers follow the window's size.
     void resize(VkExtent2D extent) override {
         if (raster_) raster_->resize(extent, sets_);
+        if (binned_) binned_->resize(extent, sets_);
     }
 
     // With --benchmark, the CPU's share: building the poses each frame.
@@ -233,7 +244,7 @@ public:
             uint32_t(scene_.objects.size()),
             line_total_,
             {frame.extent.width, frame.extent.height}};
-        if (verify_ && frame.index == verify_frame_) verify(frame.slot, push);
+        if (verify_ && frame.index == verify_frame_) verify(frame, push);
 
         const VkCommandBuffer cmd = frame.cmd;
         const VkBuffer projected = projected_[frame.slot].buffer;
@@ -241,9 +252,20 @@ public:
             auto scope = frame.gpu_scope("transform");
             record_transform(cmd, frame.slot, push);
         }
+        if (binned_) {
+            {
+                auto scope = frame.gpu_scope("bin");
+                binned_->bin(cmd, frame.timer, frame.slot);
+            }
+            auto scope = frame.gpu_scope("raster");
+            binned_->draw(cmd, *raster_, frame.timer, frame.slot);
+            raster_->copy_to_target(frame);
+            return;
+        }
         if (raster_) {
             auto scope = frame.gpu_scope("raster");
-            raster_->record(frame, projected);
+            raster_->draw(cmd, projected);
+            raster_->copy_to_target(frame);
             return;
         }
         // [draw]
@@ -305,12 +327,16 @@ private:
     }
 
     // [verify]
-    // --verify: run the transform pass alone on the last frame's poses, read
-    // the projected vertices back and compare each with the CPU reference
-    // (scene_state.hpp: vkt::ndim's per-plane transform_point and
+    // --verify cpu: run the transform pass alone on the last frame's poses,
+    // read the projected vertices back and compare each with the CPU
+    // reference (scene_state.hpp: vkt::ndim's per-plane transform_point and
     // project_to_2d, a different path from the matrix the GPU uses). Throws
-    // above the tolerance.
-    void verify(uint32_t slot, const Push& push) {
+    // above the tolerance. (--verify raster: binned_raster.hpp.)
+    void verify(const vkt::Frame& frame, const Push& push) {
+        const uint32_t slot = frame.slot;
+        if (verify_raster_)
+            return binned_->verify(*raster_, frame.extent, projected_[slot].buffer,
+                                   [&](VkCommandBuffer cmd) { record_transform(cmd, slot, push); });
         const VkDeviceSize bytes = vertex_total_ * sizeof(Projected);
         vkt::Buffer host = vkt::create_host_buffer(gpu_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
         vkt::one_time_submit(gpu_, [&](VkCommandBuffer cmd) {
@@ -341,7 +367,7 @@ private:
     vkt::Gpu gpu_;
     VkDevice device_;
     int n_ = 4;
-    bool still_ = false, verify_ = false, benchmark_ = false;
+    bool still_ = false, verify_ = false, verify_raster_ = false, benchmark_ = false;
     std::vector<double> cpu_ms_;
     uint64_t verify_frame_ = 0;
     nd::Scene scene_;
@@ -358,7 +384,8 @@ private:
     std::vector<VkDescriptorSet> sets_;  // [slot]
     vkt::PipelineLayout layout_;
     vkt::Pipeline transform_, lines_;
-    std::optional<ch20::ComputeRaster> raster_;  // --raster compute
+    std::optional<ch20::ComputeRaster> raster_;  // --raster compute or binned
+    std::optional<ch20::BinnedRaster> binned_;   // --raster binned
 };
 
 }  // namespace
@@ -372,19 +399,28 @@ int main(int argc, char** argv) {
     spec.requirements.features = {VKT_FEATURE_13(maintenance4)};
     // --scene, --dim, --projection and --motion: vkt/scene/ndim_options.hpp.
     spec.options = vkt::ndim::scene_options();
-    spec.check_options = [](const vkt::Options& options) { vkt::ndim::scene_choice(options); };
+    spec.check_options = [](const vkt::Options& options) {
+        vkt::ndim::scene_choice(options);
+        if (options.has("--verify") && options.text("--verify") == "raster" &&
+            options.text("--raster") != "binned")
+            throw vkt::UsageError(
+                "--verify raster compares --raster binned with --raster compute: "
+                "use it with --raster binned");
+    };
     spec.options.insert(
         spec.options.end(),
         {
             {.name = "--raster",
              .type = vkt::OptionType::choice,
-             .help = "draw the lines with the graphics pipeline, or with a compute pass",
+             .help = "draw the lines with the graphics pipeline, a compute pass, or a compute "
+                     "pass tile by tile",
              .default_value = "graphics",
-             .choices = {"graphics", "compute"}},
+             .choices = {"graphics", "compute", "binned"}},
             {.name = "--verify",
              .type = vkt::OptionType::choice,
-             .help = "on the last frame, check the GPU's projected vertices against the CPU's",
-             .choices = {"cpu"}},
+             .help = "on the last frame, check the GPU's projected vertices against the CPU's "
+                     "(cpu), or the binned rasteriser's pixels against the compute one's (raster)",
+             .choices = {"cpu", "raster"}},
         });
     // [/spec]
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {

@@ -21,6 +21,7 @@ layout(std430, set = 0, binding = 5) buffer Pixels { uint pixels[]; };
 // each of the 255 depth levels has one word, built once on the CPU: the
 // colour sRGB-encoded in the target's byte order, the level in the top byte.
 layout(std430, set = 0, binding = 6) readonly buffer Palette { uint palette[256]; };
+#include "walk.glsl"
 
 // [lanes]
 // LANES invocations share a line, each taking every LANES-th pixel: with few
@@ -34,31 +35,18 @@ void main() {
     const uint line = index / LANES, lane = index % LANES;
     if (line >= push.line_count) return;
     // [/lanes]
-    const Projected a = projected[ends[2u * line]], b = projected[ends[2u * line + 1u]];
-    if ((a.colour >> 24) == 0u || (b.colour >> 24) == 0u) return;  // an end behind the eye
+    Walk w;
+    if (!start_walk(projected[ends[2u * line]], projected[ends[2u * line + 1u]], w)) return;
 
-    // [walk]
-    // Clip space to pixels, then one step per pixel along the major axis:
-    // at each pixel centre c on that axis, the line's other coordinate picks
-    // the pixel. The last pixel is left to the next line (half-open, like the
-    // hardware's lines), and the walk is clamped to the image.
-    const vec2 size = vec2(push.size);
-    const vec2 p0 = (a.xy * 0.5 + 0.5) * size, p1 = (b.xy * 0.5 + 0.5) * size, d = p1 - p0;
-    const int major = abs(d.x) >= abs(d.y) ? 0 : 1, minor = 1 - major;
-    if (d[major] == 0.0) return;  // a line of length 0 covers no pixel centre
-    const bool forward = d[major] > 0.0;
-    const float start = forward ? p0[major] : p1[major], end = forward ? p1[major] : p0[major];
-    const int first = max(int(ceil(start - 0.5)), 0);
-    const int last = min(int(ceil(end - 0.5)), int(push.size[major])) - 1;
-    const float per_pixel = 1.0 / d[major];  // t's step from one pixel to the next
-    for (int i = first + int(lane); i <= last; i += int(LANES)) {
-        const float t = (float(i) + 0.5 - p0[major]) * per_pixel;  // 0 at a, 1 at b
-        const int j = int(floor(p0[minor] + t * d[minor]));
-        if (j < 0 || j >= int(push.size[minor])) continue;
-        // The depth t = -1..1 as level 1..255 (0 is the background).
-        const float depth = clamp(0.5 + 0.5 * mix(a.depth, b.depth, t), 0.0, 1.0);
-        const uint word = palette[1u + uint(depth * 254.0 + 0.5)];
-        const uint at = major == 0 ? uint(j) * push.size.x + uint(i) : uint(i) * push.size.x + uint(j);
+    // [pixels]
+    // Every LANES-th step of the walk (walk.glsl), the pixels outside the
+    // image left out.
+    for (int i = w.first + int(lane); i <= w.last; i += int(LANES)) {
+        float t;
+        const int j = walk_minor(w, i, t);
+        if (j < 0 || j >= int(w.x_major ? push.size.y : push.size.x)) continue;
+        const uint word = walk_word(w, t);
+        const uint at = w.x_major ? uint(j) * push.size.x + uint(i) : uint(i) * push.size.x + uint(j);
         // Look before the read-modify-write: where a nearer line has the
         // pixel already, which is most pixels where thousands of lines
         // overlap, a plain (relaxed) atomic load is all it costs. Words only
@@ -67,5 +55,5 @@ void main() {
                        gl_SemanticsRelaxed) < word)
             atomicMax(pixels[at], word);
     }
-    // [/walk]
+    // [/pixels]
 }

@@ -39,12 +39,52 @@ foreach(mode headless offscreen)
     LABELS "${labels}")
 endforeach()
 
+# --raster binned: the compute rasteriser tile by tile (binned_raster.hpp). It
+# must draw the compute rasteriser's picture exactly, so it is checked against
+# that golden image with no tolerance at all (--exact), headless and
+# offscreen. VKT_BLESS=0: blessing never rewrites the compute image from here.
+foreach(mode headless offscreen)
+  set(test chapter.20_ndim_compute.binned.${mode})
+  add_test(NAME ${test} COMMAND vkt_chapter_check --exe $<TARGET_FILE:20_ndim_compute>
+    --out ${VKT_TEST_OUTPUT} --name ${test}
+    --golden ${VKT_GOLDEN_DIR}/20_ndim_compute_compute_raster.png --exact --expect "raster binned"
+    -- ${${mode}} --raster binned)
+  set_tests_properties(${test} PROPERTIES
+    ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD};VKT_BLESS=0" LABELS chapter)
+endforeach()
+# --exact can fail: chapter 19's picture is within the tolerance of chapter
+# 18's golden image (RMSE 0.9) but not equal to it.
+add_test(NAME chapter.20_ndim_compute.exact_catches_a_difference COMMAND vkt_chapter_check
+  --exe $<TARGET_FILE:19_ndim_gpu> --out ${VKT_TEST_OUTPUT}
+  --name chapter.20_ndim_compute.exact_catches_a_difference
+  --golden ${VKT_GOLDEN_DIR}/18_ndim_cpu.png --exact -- ${headless})
+set_tests_properties(chapter.20_ndim_compute.exact_catches_a_difference PROPERTIES
+  ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD};VKT_BLESS=0" LABELS chapter WILL_FAIL TRUE)
+# --verify raster: on the last frame both compute rasterisers draw the frame
+# and every word of the two pixel buffers is compared, in scenes the golden
+# image does not show: many objects, many tiles each (one 12-cube; long
+# lines of a 4-cube at 1280x720), tiles cut by the image's edge (333x211),
+# orthographic projection. Synchronisation validation on, as everywhere.
+set(VKT_20_SAME "verify: binned against compute, [0-9x]+ pixels \\([0-9]+ lit by lines\\), 0 differ")
+foreach(case "many;6;333x211" "cube;12;640x480" "cube;4;1280x720" "many;8;640x360")
+  list(GET case 0 scene)
+  list(GET case 1 dim)
+  list(GET case 2 size)
+  vkt_chapter_test(chapter.20_ndim_compute.verify_binned_${scene}${dim} 20_ndim_compute
+    ARGS --headless --validation --frames 3 --size ${size} --scene ${scene} --dim ${dim}
+         --raster binned --verify raster
+    EXPECT "${VKT_20_SAME}")
+endforeach()
+vkt_chapter_test(chapter.20_ndim_compute.verify_binned_ortho 20_ndim_compute
+  ARGS ${offscreen} --scene many --dim 5 --projection orthographic --raster binned --verify raster
+  EXPECT "${VKT_20_SAME}")
+
 # Hand-worked pixels, chapter 18's still 3-cube (its tests file has the
 # arithmetic): the near square's edges on rows 55 and 184 and columns 95 and
 # 224 in (233, 173, 147), the far square's on row 84 and columns 124 and 195
-# in (147, 156, 233), background (18, 18, 29). Both rasterisers, within 2
-# levels: the compute rasteriser quantises the depth colour to 255 levels.
-foreach(raster graphics compute)
+# in (147, 156, 233), background (18, 18, 29). All three rasterisers, within
+# 2 levels: the compute ones quantise the depth colour to 255 levels.
+foreach(raster graphics compute binned)
   set(png ${VKT_TEST_OUTPUT}/chapter.20_ndim_compute.still_cube_${raster}.png)
   vkt_chapter_test(chapter.20_ndim_compute.still_cube_${raster} 20_ndim_compute
     ARGS ${headless} --scene cube --dim 3 --motion still --raster ${raster} --screenshot ${png}
@@ -80,7 +120,7 @@ vkt_chapter_test(chapter.20_ndim_compute.verify_ortho 20_ndim_compute
   ARGS ${headless} --scene many --dim 5 --projection orthographic --verify cpu --raster compute
   EXPECT "${VKT_20_VERIFY}")
 vkt_chapter_test(chapter.20_ndim_compute.help 20_ndim_compute EXIT 0 ARGS --help
-  EXPECT "usage: 20_ndim_compute" "--raster graphics\\|compute" "--verify cpu")
+  EXPECT "usage: 20_ndim_compute" "--raster graphics\\|compute\\|binned" "--verify cpu\\|raster")
 
 # Bad input: a dimension outside 3..12, a scene or a rasteriser that does
 # not exist, --dim on the 4D scene, a target too big for the pixel buffer.
@@ -91,7 +131,10 @@ endforeach()
 vkt_chapter_test(bad_input.20_ndim_compute.scene 20_ndim_compute EXIT 2 ARGS --scene hypersphere
   EXPECT "--scene wants one of default, cube, many, not 'hypersphere'")
 vkt_chapter_test(bad_input.20_ndim_compute.raster 20_ndim_compute EXIT 2 ARGS --raster magic
-  EXPECT "--raster wants one of graphics, compute, not 'magic'")
+  EXPECT "--raster wants one of graphics, compute, binned, not 'magic'")
+vkt_chapter_test(bad_input.20_ndim_compute.verify_raster_alone 20_ndim_compute EXIT 2
+  ARGS --headless --frames 1 --verify raster
+  EXPECT "--verify raster compares --raster binned with --raster compute: use it with --raster binned")
 vkt_chapter_test(bad_input.20_ndim_compute.dim_default_scene 20_ndim_compute EXIT 2
   ARGS --headless --frames 1 --dim 5
   EXPECT "--dim 5: the default scene is 4-dimensional; use --scene cube or --scene many")
@@ -101,8 +144,9 @@ vkt_chapter_test(bad_input.20_ndim_compute.pixel_buffer_range 20_ndim_compute EX
   ARGS --offscreen --frames 1 --size 8192x4097 --raster compute
   EXPECT "8192x4097 needs a pixel buffer of 134250496 bytes, more than this device's maxStorageBufferRange \\(134217728\\)")
 
-# The compute rasteriser in a real window (B8G8R8A8 there too; the golden
-# image is the compute rasteriser's own).
+# The compute rasterisers in a real window (B8G8R8A8 there too; the golden
+# image is the compute rasteriser's own, and the binned one must match it
+# exactly there too).
 if(XVFB_RUN)
   add_test(NAME chapter.20_ndim_compute.compute_raster.window
     COMMAND ${XVFB_RUN} -a -s "-screen 0 640x480x24"
@@ -113,4 +157,13 @@ if(XVFB_RUN)
             --validation --frames ${VKT_TEST_FRAMES} --size ${VKT_TEST_SIZE} --raster compute)
   set_tests_properties(chapter.20_ndim_compute.compute_raster.window PROPERTIES
     ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS "chapter;window")
+  add_test(NAME chapter.20_ndim_compute.binned.window
+    COMMAND ${XVFB_RUN} -a -s "-screen 0 640x480x24"
+            $<TARGET_FILE:vkt_chapter_check> --exe $<TARGET_FILE:20_ndim_compute>
+            --out ${VKT_TEST_OUTPUT} --name chapter.20_ndim_compute.binned.window
+            --golden ${VKT_GOLDEN_DIR}/20_ndim_compute_compute_raster.png --exact
+            --expect "20_ndim_compute: .*, window B8G8R8A8_" --
+            --validation --frames ${VKT_TEST_FRAMES} --size ${VKT_TEST_SIZE} --raster binned)
+  set_tests_properties(chapter.20_ndim_compute.binned.window PROPERTIES
+    ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD};VKT_BLESS=0" LABELS "chapter;window")
 endif()
