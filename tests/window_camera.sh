@@ -24,6 +24,7 @@ start_chapter "$out/$(basename "$exe").window_camera.stderr" "$exe" --validation
 window=$(find_window "$title") || fail "no window titled '$title' appeared"
 wait_line 0 "cursor captured"
 wait_line 0 "presented a frame at 320x240"
+activate "$window"
 
 # released_pose MARK: prints "x y z yaw pitch" from the first release after MARK.
 released_pose() {

@@ -18,6 +18,7 @@ start_wm
 start_chapter "$out/18_ndim_cpu.window_keys.stderr" "$exe" --validation --size 320x240
 window=$(find_window "$title") || fail "no window titled '$title' appeared"
 wait_line 0 "presented a frame at 320x240"
+activate "$window"
 
 m=$(mark)
 xdotool keydown --window "$window" 1 F4 || fail "xdotool could not press 1 and F4"

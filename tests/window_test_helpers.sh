@@ -20,9 +20,22 @@ in_time() { [ "$SECONDS" -lt "$1" ]; }
 err=""   # the chapter's stderr, set by start_chapter
 pid=""   # the chapter's process id
 
+# fail MESSAGE: says what went wrong and where (the script and line that
+# called fail, or the wait that called it), how long the test had run, whether
+# the chapter is still running, and the last lines it printed (validation
+# messages included: they may be why), then stops the chapter and the test.
 fail() {
+  local where="${BASH_SOURCE[1]##*/} line ${BASH_LINENO[0]}"
+  [ "${FUNCNAME[1]:-}" != main ] && where="$where, in ${FUNCNAME[1]} (called from ${BASH_SOURCE[2]##*/} line ${BASH_LINENO[1]})"
   echo "FAIL: $*"
-  if [ -n "$err" ] && [ -f "$err" ]; then echo "--- the chapter's stderr ---"; grep -v '^\[validation' "$err"; fi
+  echo "  at $where, ${SECONDS} s into the test"
+  if [ -n "$pid" ]; then
+    if kill -0 "$pid" 2>/dev/null; then echo "  the chapter (pid $pid) is still running"; else echo "  the chapter has exited"; fi
+  fi
+  if [ -n "$err" ] && [ -f "$err" ]; then
+    echo "--- the last 25 of the $(wc -l <"$err") lines the chapter printed ---"
+    tail -n 25 "$err" | cut -c1-400
+  fi
   [ -n "$pid" ] && kill "$pid" 2>/dev/null
   exit 1
 }
@@ -66,6 +79,16 @@ find_window() {
   return 1
 }
 
+# activate WINDOW: asks the window manager for the focus for the window and
+# waits until the window has it. Keys are sent after this, never before: GLFW
+# releases every held key when its window loses the focus, so a focus change
+# that comes late (a loaded window manager) would let go of a key the test
+# holds before any frame saw it held.
+activate() {
+  timeout "$VKT_EVENT_SECONDS" xdotool windowactivate --sync "$1" >/dev/null 2>&1 ||
+    fail "the window manager did not give the window the focus (waited ${VKT_EVENT_SECONDS} s)"
+}
+
 # mark: the number of lines the chapter has written so far; wait_line MARK
 # REGEX waits for a line matching REGEX written after that mark.
 mark() { wc -l <"$err"; }
@@ -77,7 +100,7 @@ wait_line() {
     kill -0 "$pid" 2>/dev/null || { tail -n "+$from" "$err" | grep -qE "$what" && return 0; fail "the chapter exited before it said: $what"; }
     sleep 0.1
   done
-  fail "the chapter never said: $what"
+  fail "the chapter never said: $what (waited ${VKT_EVENT_SECONDS} s)"
 }
 
 # resize WINDOW W H: resizes the window and waits until the chapter has

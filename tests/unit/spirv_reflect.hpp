@@ -51,7 +51,7 @@ void for_each_instruction(const std::vector<uint32_t>& words, F&& f) {
         const uint32_t count = words[i] >> 16, opcode = words[i] & 0xffffu;
         if (count == 0 || i + count > words.size())
             throw std::runtime_error("malformed SPIR-V instruction");
-        f(opcode, &words[i + 1], count - 1);
+        f(opcode, words.data() + i + 1, count - 1);  // count - 1 may be 0
         i += count;
     }
 }

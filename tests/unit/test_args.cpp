@@ -158,6 +158,18 @@ TEST_CASE("a chapter's flags take values in range, separate or inline", "[args][
     CHECK(parse_chapter({"--lights", "1"}).integer("--lights") == 1);
 }
 
+// Found by tests/fuzz/fuzz_args.cpp (regressions/args/subnormal_number): a
+// subnormal number passed the range check but std::stod refused to read it
+// back, so 14_physics --warmup 4e-320 ended with "error: stod".
+TEST_CASE("a number the check accepts reads back, subnormal ones too", "[args][chapter-options]") {
+    const std::vector<vkt::OptionSpec> from_zero = {
+        {.name = "--warmup", .type = vkt::OptionType::number, .min = 0, .max = 60}};
+    const std::vector<const char*> args = {"--warmup", "4e-320"};
+    const Options o = parse_args(args, Flags::frame_loop, from_zero);
+    CHECK(o.number("--warmup") > 0.0);
+    CHECK(o.number("--warmup") < 1e-300);
+}
+
 TEST_CASE("a chapter's flags refuse bad values with a clear message", "[args][chapter-options]") {
     auto message = [](std::vector<const char*> args) {
         try {

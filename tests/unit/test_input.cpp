@@ -39,6 +39,26 @@ TEST_CASE("a tap between two frames is still seen as pressed", "[input]") {
     CHECK_FALSE(input.down('E'));
 }
 
+// The runner takes a snapshot, then finds the swapchain out of date and draws
+// nothing: that snapshot goes back, so a key tapped in it is still seen.
+TEST_CASE("a snapshot given back is seen by the next one", "[input]") {
+    InputAccumulator events;
+    events.key('R', true);
+    events.key('R', false);
+    events.scroll(2);
+    const vkt::Input unused = events.take();
+    events.key('W', true);
+    events.scroll(1);
+    events.give_back(unused);
+    const vkt::Input next = events.take();
+    CHECK(next.went_down('R'));
+    CHECK_FALSE(next.down('R'));
+    CHECK(next.went_down('W'));
+    CHECK(next.down('W'));
+    CHECK(next.scroll == 3);
+    CHECK_FALSE(events.take().went_down('R'));  // and only once
+}
+
 TEST_CASE("unknown key codes are ignored", "[input]") {
     InputAccumulator events;
     events.key(-1, true);

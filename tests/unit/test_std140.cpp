@@ -50,10 +50,13 @@ std::map<std::string, uint32_t> block_offsets(const std::vector<uint32_t>& words
             const uint32_t count = words[i] >> 16, opcode = words[i] & 0xffffu;
             REQUIRE(count > 0);
             REQUIRE(i + count <= words.size());
-            const uint32_t* operands = &words[i + 1];
-            if (pass == 0 && opcode == op_name && spirv_string(operands + 1, count - 2) == block)
+            // An instruction may have no operands (OpFunctionEnd, the last
+            // one, is a single word): read operands[0] only when there is one.
+            const uint32_t* operands = words.data() + i + 1;
+            if (pass == 0 && opcode == op_name && count >= 3 &&
+                spirv_string(operands + 1, count - 2) == block)
                 type = operands[0];
-            if (pass == 1 && type != 0 && operands[0] == type) {
+            if (pass == 1 && type != 0 && count >= 2 && operands[0] == type) {
                 if (opcode == op_member_name)
                     names[operands[1]] = spirv_string(operands + 2, count - 3);
                 if (opcode == op_member_decorate && operands[2] == decoration_offset)

@@ -93,7 +93,12 @@ int64_t Options::integer(std::string_view name) const {
 }
 
 double Options::number(std::string_view name) const {
-    return std::stod(text(name));
+    // from_chars, as the check that let the value in: std::stod would refuse
+    // a subnormal such as 4e-320 (out_of_range) that the check accepted.
+    const std::string& value = text(name);
+    double out = 0;
+    std::from_chars(value.data(), value.data() + value.size(), out);
+    return out;
 }
 
 Options parse_args(std::span<const char* const> args, Flags flags,

@@ -30,4 +30,11 @@ Input InputAccumulator::take() {
     return out;
 }
 
+void InputAccumulator::give_back(const Input& unused) {
+    current_.pressed |= unused.pressed;
+    current_.mouse_dx += unused.mouse_dx;
+    current_.mouse_dy += unused.mouse_dy;
+    current_.scroll += unused.scroll;
+}
+
 }  // namespace vkt

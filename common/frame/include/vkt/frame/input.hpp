@@ -48,6 +48,10 @@ public:
     void scroll(double steps) { current_.scroll += steps; }
     void set_captured(bool captured);
     Input take();
+    // A snapshot that no frame used (the runner took it, then had to recreate
+    // the swapchain instead of drawing): its presses, movement and scroll go
+    // back into the next snapshot, so that a key tapped then is not lost.
+    void give_back(const Input& unused);
 
 private:
     Input current_;

@@ -38,6 +38,8 @@ public:
     double seconds() const;
     // What happened since the last call (always empty for InputUse::none).
     Input take_input() { return input_.take(); }
+    // A snapshot no frame used goes back (see InputAccumulator::give_back).
+    void give_back_input(const Input& unused) { input_.give_back(unused); }
 
 private:
     void capture_cursor(bool capture);
