@@ -86,7 +86,8 @@ check "debian-12: would write the backports source" \
   has "would write: $work/sources/bookworm-backports.sources \\(bookworm-backports, main\\)"
 check "debian-12: apt-get update" has 'would run: apt-get update'
 for pkg in libvulkan-dev libglfw3-dev libtinygltf-dev libstb-dev glslang-tools python3-markdown \
-  python3-matplotlib graphviz chromium shellcheck clang-tidy clang libclang-rt-14-dev; do
+  python3-matplotlib graphviz chromium shellcheck clang-tidy clang libclang-rt-14-dev clang-16 \
+  libclang-rt-16-dev fonts-dejavu-core; do
   check "debian-12: installs $pkg" has "would run: apt-get install .* $pkg( |\$)"
 done
 check "debian-12: Mesa and Catch2 from backports" \
