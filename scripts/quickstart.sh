@@ -11,7 +11,8 @@ scripts/install-deps.sh
 cmake --preset release
 cmake --build --preset release
 
-chapter=${1:-$(basename "$(ls -d chapters/[0-9][0-9]_*/ | sort | tail -n 1)")}
+chapters=(chapters/[0-9][0-9]_*/)  # a glob sorts its matches: the last is the newest chapter
+chapter=${1:-$(basename "${chapters[-1]}")}
 exe=build/release/bin/$chapter
 [ -x "$exe" ] || { echo "no chapter named '$chapter' (see chapters/)" >&2; exit 2; }
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
