@@ -17,7 +17,7 @@
 set -eu
 exe=${1:?usage: bench-13.sh PATH/TO/13_compute [FRAMES] [MORE CHAPTER FLAGS...]}
 frames=${2:-100}
-[ $# -ge 2 ] && shift 2 || shift 1
+if [ $# -ge 2 ]; then shift 2; else shift 1; fi
 
 # field JSON PATH...: the number after "median"/"p95" inside the named object,
 # e.g. field "$json" gpu_frame_ms median; "simulate" and "draw" live inside

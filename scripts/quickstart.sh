@@ -13,7 +13,7 @@ scripts/install-deps.sh
 cmake --preset release
 cmake --build --preset release
 
-chapters=(chapters/[0-9][0-9]_*/) # a glob expands sorted: the newest is last
+chapters=(chapters/[0-9][0-9]_*/)  # a glob sorts its matches: the last is the newest chapter
 chapter=${1:-$(basename "${chapters[-1]}")}
 exe=build/release/bin/$chapter
 [ -x "$exe" ] || { echo "no chapter named '$chapter' (see chapters/)" >&2; exit 2; }

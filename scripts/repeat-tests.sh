@@ -14,7 +14,7 @@
 # Prints one line per failing run (with the failing tests) and a summary; the
 # exit status is 0 only if every run passed. Logs go to build/release/repeat/.
 set -u
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/.." || exit 2
 label=${1:?usage: scripts/repeat-tests.sh LABEL COUNT [--load]}
 count=${2:?usage: scripts/repeat-tests.sh LABEL COUNT [--load]}
 load=${3:-}

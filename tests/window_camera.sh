@@ -15,6 +15,7 @@
 # depends on the speed of the machine; only the direction is checked.
 #   window_camera.sh CHAPTER_EXE OUT_DIR TITLE
 set -u
+# shellcheck source=window_test_helpers.sh
 . "$(dirname "$0")/window_test_helpers.sh"
 exe=$1 out=$2 title=$3
 mkdir -p "$out"
@@ -58,7 +59,7 @@ m=$(mark)
 xdotool mousemove_relative -- 100 0 mousemove_relative -- 100 0 mousemove_relative -- 100 0 \
   key Escape || fail "xdotool could not move the mouse"
 wait_line "$m" "cursor released at"
-read -r x2 y2 z2 yaw2 pitch2 <<<"$(released_pose "$m")"
+read -r _ _ _ yaw2 pitch2 <<<"$(released_pose "$m")"
 echo "after the mouse: yaw $yaw2, pitch $pitch2"
 awk -v a="$yaw" -v b="$yaw2" 'BEGIN { exit !(b > a + 0.1) }' ||
   fail "moving the mouse right did not turn right (yaw $yaw -> $yaw2)"

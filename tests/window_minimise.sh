@@ -9,6 +9,7 @@
 # validation report and the triangle in its screenshot.
 #   window_minimise.sh CHAPTER_EXE OUT_DIR TITLE CHECKER
 set -u
+# shellcheck source=window_test_helpers.sh
 . "$(dirname "$0")/window_test_helpers.sh"
 exe=$1 out=$2 title=$3 checker=$4
 mkdir -p "$out"

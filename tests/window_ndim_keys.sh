@@ -11,6 +11,7 @@
 #   Escape              -> exit 0 with a clean validation report.
 #   window_ndim_keys.sh CHAPTER_EXE OUT_DIR TITLE
 set -u
+# shellcheck source=window_test_helpers.sh
 . "$(dirname "$0")/window_test_helpers.sh"
 exe=$1 out=$2 title=$3
 mkdir -p "$out"

@@ -8,6 +8,7 @@
 # last frame, at the last size, showing the triangle.
 #   window_resize.sh CHAPTER_EXE OUT_DIR TITLE CHECKER
 set -u
+# shellcheck source=window_test_helpers.sh
 . "$(dirname "$0")/window_test_helpers.sh"
 exe=$1 out=$2 title=$3 checker=$4
 mkdir -p "$out"

@@ -8,6 +8,7 @@
 # size. One storm size is larger than the start (the read-back buffers grow).
 #   window_resize_storm.sh CHAPTER_EXE OUT_DIR TITLE RESIZES CHECKER
 set -u
+# shellcheck source=window_test_helpers.sh
 . "$(dirname "$0")/window_test_helpers.sh"
 exe=$1 out=$2 title=$3 resizes=$4 checker=$5
 mkdir -p "$out"
@@ -19,7 +20,8 @@ window=$(find_window "$title") || fail "no window titled '$title' appeared"
 wait_line 0 "presented a frame at 320x240"
 sizes=("300 200" "640 480" "200 300" "320 240" "250 250" "17 9")
 for i in $(seq 0 $((resizes - 1))); do
-  xdotool windowsize "$window" ${sizes[$((i % ${#sizes[@]}))]} 2>/dev/null || fail "xdotool could not resize the window"
+  read -r w h <<<"${sizes[$((i % ${#sizes[@]}))]}"
+  xdotool windowsize "$window" "$w" "$h" 2>/dev/null || fail "xdotool could not resize the window"
 done
 resize "$window" 301 199
 echo "$(grep -c 'swapchain recreated' "$err") recreations for $resizes + 1 resize requests"

@@ -35,6 +35,7 @@ command -v Xvfb >/dev/null || { echo "with_xvfb.sh: Xvfb is not installed (apt i
 dir=$(mktemp -d -t with_xvfb.XXXXXX)
 xvfb=""
 command_pid=""
+# shellcheck disable=SC2317  # reached through the EXIT trap below
 stop_server() {
   if [ -n "$command_pid" ]; then kill "$command_pid" 2>/dev/null; wait "$command_pid" 2>/dev/null; fi
   if [ -n "$xvfb" ]; then kill "$xvfb" 2>/dev/null; wait "$xvfb" 2>/dev/null; fi

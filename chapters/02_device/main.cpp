@@ -177,6 +177,7 @@ int run(const vkt::Options& options) {
         VKT_CHECK(vkEnumeratePhysicalDevices(instance, &count, devices.data()));
         std::printf("%u physical devices:\n", count);
         std::vector<Candidate> candidates;
+        candidates.reserve(devices.size());
         for (VkPhysicalDevice device : devices) candidates.push_back(evaluate(device));
         const Candidate& chosen = choose(candidates, options.device);
 

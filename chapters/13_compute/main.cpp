@@ -51,7 +51,7 @@ struct ComputePush {
 };
 
 std::string mib(uint64_t bytes, bool round_up) {
-    const uint64_t m = 1024 * 1024;
+    const uint64_t m = uint64_t{1024} * 1024;
     return std::to_string(round_up ? (bytes + m - 1) / m : bytes / m) + " MiB";
 }
 

@@ -46,8 +46,8 @@ static_assert(sizeof(LineVertex) == 12);
 uint32_t depth_colour(float t) {
     t = std::clamp(0.5f + 0.5f * t, 0.0f, 1.0f);
     const float r = 0.10f + 0.90f * t, g = 0.30f + 0.15f * t, b = 1.00f - 0.90f * t;
-    return uint32_t(r * 255.0f + 0.5f) | uint32_t(g * 255.0f + 0.5f) << 8 |
-           uint32_t(b * 255.0f + 0.5f) << 16 | 0xff000000u;
+    return uint32_t(std::lround(r * 255.0f)) | uint32_t(std::lround(g * 255.0f)) << 8 |
+           uint32_t(std::lround(b * 255.0f)) << 16 | 0xff000000u;
 }
 
 // GLFW key codes for the controls (vkt/frame/input.hpp has the common ones).

@@ -39,7 +39,10 @@ VkBool32& FeatureChain::operator[](const Feature& feature) {
 }
 
 bool FeatureChain::has(const Feature& feature) const {
-    return const_cast<FeatureChain&>(*this)[feature] == VK_TRUE;
+    // operator[] finds the field; here it is only read, so casting away const
+    // is safe, and one lookup serves both.
+    return const_cast<FeatureChain&>(*this)[feature] ==  // NOLINT(*-pro-type-const-cast)
+           VK_TRUE;
 }
 
 std::span<const Feature> base_features() {

@@ -208,21 +208,24 @@ double determinant(const Matrix& m) {
     const int n = m.size();
     std::vector<double> a(m.data().begin(), m.data().end());
     double det = 1.0;
+    // Row r, column c of the n x n matrix, indexed in size_t from the start.
+    const auto at = [&a, n](int r, int c) -> double& {
+        return a[size_t(r) * size_t(n) + size_t(c)];
+    };
     for (int col = 0; col < n; ++col) {
         int pivot = col;
         for (int row = col + 1; row < n; ++row)
-            if (std::abs(a[size_t(row * n + col)]) > std::abs(a[size_t(pivot * n + col)]))
-                pivot = row;
-        if (a[size_t(pivot * n + col)] == 0.0) return 0.0;
+            if (std::abs(at(row, col)) > std::abs(at(pivot, col))) pivot = row;
+        if (at(pivot, col) == 0.0) return 0.0;
         if (pivot != col) {
-            for (int k = 0; k < n; ++k) std::swap(a[size_t(pivot * n + k)], a[size_t(col * n + k)]);
+            for (int k = 0; k < n; ++k) std::swap(at(pivot, k), at(col, k));
             det = -det;
         }
-        const double diagonal = a[size_t(col * n + col)];
+        const double diagonal = at(col, col);
         det *= diagonal;
         for (int row = col + 1; row < n; ++row) {
-            const double f = a[size_t(row * n + col)] / diagonal;
-            for (int k = col; k < n; ++k) a[size_t(row * n + k)] -= f * a[size_t(col * n + k)];
+            const double f = at(row, col) / diagonal;
+            for (int k = col; k < n; ++k) at(row, k) -= f * at(col, k);
         }
     }
     return det;

@@ -40,7 +40,7 @@ std::string joined(const std::vector<std::string>& words, const char* separator)
 
 // Checks one value of a chapter option; returns it as it will be stored.
 std::string check_option_value(const OptionSpec& spec, std::string_view text) {
-    const std::string given(text);
+    std::string given(text);  // not const: returned, so moved
     switch (spec.type) {
         case OptionType::integer: {
             int64_t value = 0;
@@ -217,10 +217,12 @@ std::string help_text(std::string_view program, Flags flags,
             if (spec.type == OptionType::integer || spec.type == OptionType::number)
                 right += " (" + format_number(spec.min) + ".." + format_number(spec.max) + ")";
             if (!spec.default_value.empty()) right += " [default: " + spec.default_value + "]";
-            if (left.size() < 23)
-                text += left + std::string(23 - left.size(), ' ') + right + "\n";
-            else
-                text += left + "\n" + std::string(23, ' ') + right + "\n";
+            text += left;
+            // The help in a column of its own: beside the flag, or below it.
+            text +=
+                left.size() < 23 ? std::string(23 - left.size(), ' ') : "\n" + std::string(23, ' ');
+            text += right;
+            text += "\n";
         }
         text += "\nshared flags:\n";
     }

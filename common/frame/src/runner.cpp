@@ -120,8 +120,10 @@ void ChapterRun::run(const RendererFactory& factory) {
         // Input only in an open-ended window run: with --frames, as headless,
         // every frame sees an empty snapshot, so the run is reproducible.
         const Input input = window_ && fixed_step == false ? window_->take_input() : Input{};
-        if (!draw_frame(index, time, input)) {  // swapchain recreated: try again
-            if (window_) window_->give_back_input(input);  // no frame saw it: keep the presses
+        if (!draw_frame(index, time, input)) {
+            // The swapchain was recreated instead: try again, with this input
+            // given back, since no frame saw it (a key tapped now still counts).
+            if (window_) window_->give_back_input(input);
             continue;
         }
         if (options_.benchmark)  // only --benchmark keeps a time per frame (8 bytes)

@@ -190,6 +190,7 @@ inline void verify(const std::string& check, const VerifyInputs& in, const Verif
     });
 
     std::vector<std::vector<glm::vec3>> pictures;
+    pictures.reserve(target_count);
     for (int i = 0; i < target_count; ++i) pictures.push_back(host_colours(copies[i]));
     vkt::GBufferTexels texels{e.width,
                               e.height,
