@@ -118,7 +118,7 @@ if [ -n "$binned" ]; then
     echo "|---|---|---:|---|---|---|---|---:|---|"
     for lights in ${LIGHTS:-65536}; do
         for shade in $shades; do
-            t_all= b_all=
+            t_all='' b_all=''
             r=1
             while [ "$r" -le "$repeat" ]; do
                 if [ $((r % 2)) -eq 1 ]; then

@@ -75,7 +75,7 @@ std::filesystem::path resolve_inside(const std::filesystem::path& folder, std::s
     // whether the file's path starts with the folder's.
     std::error_code error;
     const fs::path root = fs::weakly_canonical(fs::absolute(folder, error), error);
-    const fs::path target = error ? fs::path() : fs::weakly_canonical(root / relative, error);
+    fs::path target = error ? fs::path() : fs::weakly_canonical(root / relative, error);
     if (error) throw Error(named + ": " + error.message());
     const fs::path inside = target.lexically_relative(root);
     if (inside.empty() || *inside.begin() == "..")

@@ -54,9 +54,10 @@ Scene add_falling_boxes(World& world, uint32_t count, uint32_t seed) {
         uint32_t layer = 0, in_layer = 0;
         for (uint32_t i = first; i < last; ++i, ++in_layer) {
             if (in_layer == (side - layer / 2) * (side - layer / 2)) ++layer, in_layer = 0;
-            const uint32_t m = side - layer / 2;  // this layer is m x m
-            const float x = centre.x + (float(in_layer % m) - 0.5f * float(m - 1)) * kSpacing;
-            const float z = centre.y + (float(in_layer / m) - 0.5f * float(m - 1)) * kSpacing;
+            const uint32_t m = side - layer / 2;                       // this layer is m x m
+            const uint32_t column = in_layer % m, row = in_layer / m;  // whole numbers
+            const float x = centre.x + (float(column) - 0.5f * float(m - 1)) * kSpacing;
+            const float z = centre.y + (float(row) - 0.5f * float(m - 1)) * kSpacing;
             // Over the ramp, start above its surface there.
             const float ground =
                 cluster == 1 ? std::max(0.0f, (x - low_edge.x) * std::tan(angle)) : 0.0f;

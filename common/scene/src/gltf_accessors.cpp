@@ -180,11 +180,11 @@ std::vector<float> Accessors::read_floats(int index, const std::string& what,
     if (a.count > (size_t(1) << 28))
         fail(name + ": count " + std::to_string(a.count) + " is too large");
     out.assign(a.count * size_t(components), 0.0f);
-    const size_t element_size = size_t(components * component_size);
+    const size_t element_size = size_t(components) * size_t(component_size);
     // One element's components, from `element`, into out[i].
     auto decode = [&](const uint8_t* element, size_t i) {
         for (int c = 0; c < components; ++c) {
-            const uint8_t* p = element + c * component_size;
+            const uint8_t* p = element + ptrdiff_t(c) * component_size;
             float v = 0;
             switch (a.componentType) {
                 case TINYGLTF_COMPONENT_TYPE_FLOAT:
