@@ -34,7 +34,8 @@ apt_common=(
 # Debian 12: clang is clang 14, whose runtime (libFuzzer, LeakSanitizer) is its
 # own package; lavapipe 25.x and Catch2 3 come from bookworm-backports (Debian
 # 12's own are Mesa 22.3 and Catch2 2.x).
-debian12_main=(chromium libclang-rt-14-dev clang-16 libclang-rt-16-dev clang-tidy-16)
+debian12_main=(chromium libclang-rt-14-dev clang-16 libclang-rt-16-dev clang-tidy-16 clang-format
+  nlohmann-json3-dev gdb)
 debian12_backports=(mesa-vulkan-drivers catch2)
 # Ubuntu 24.04: clang is clang 18. Its chromium deb only installs the snap, so
 # it is left out (see ubuntu_notes).
