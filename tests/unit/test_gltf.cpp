@@ -1,6 +1,7 @@
 // vkt/scene/gltf.hpp (chapter 10): the glTF loader, on files these tests write
 // themselves (JSON by hand, buffers byte by byte, a .glb container by hand).
 
+#include "base64.hpp"
 #include "vkt/core/check.hpp"
 #include "vkt/core/files.hpp"
 #include "vkt/scene/gltf.hpp"
@@ -54,20 +55,7 @@ struct Bin {
     }
 };
 
-std::string base64(const std::vector<uint8_t>& data) {
-    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (size_t i = 0; i < data.size(); i += 3) {
-        uint32_t n = uint32_t(data[i]) << 16;
-        if (i + 1 < data.size()) n |= uint32_t(data[i + 1]) << 8;
-        if (i + 2 < data.size()) n |= data[i + 2];
-        out += digits[(n >> 18) & 63];
-        out += digits[(n >> 12) & 63];
-        out += i + 1 < data.size() ? digits[(n >> 6) & 63] : '=';
-        out += i + 2 < data.size() ? digits[n & 63] : '=';
-    }
-    return out;
-}
+using vkt_test::base64;  // tests/unit/base64.hpp
 
 std::string data_uri(const std::vector<uint8_t>& data,
                      const char* mime = "application/octet-stream") {

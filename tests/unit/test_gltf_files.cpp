@@ -4,6 +4,7 @@
 // Every fixture is written here, into the build folder; the files "past
 // 1 GiB" are sparse (resize_file), so they take no disk space, and are removed.
 
+#include "base64.hpp"
 #include "vkt/core/check.hpp"
 #include "vkt/core/files.hpp"
 #include "vkt/scene/gltf.hpp"
@@ -62,20 +63,7 @@ std::vector<uint8_t> triangle_bin() {
     return bytes;
 }
 
-std::string base64(const std::vector<uint8_t>& data) {
-    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (size_t i = 0; i < data.size(); i += 3) {
-        uint32_t n = uint32_t(data[i]) << 16;
-        if (i + 1 < data.size()) n |= uint32_t(data[i + 1]) << 8;
-        if (i + 2 < data.size()) n |= data[i + 2];
-        out += digits[(n >> 18) & 63];
-        out += digits[(n >> 12) & 63];
-        out += i + 1 < data.size() ? digits[(n >> 6) & 63] : '=';
-        out += i + 2 < data.size() ? digits[n & 63] : '=';
-    }
-    return out;
-}
+using vkt_test::base64;  // tests/unit/base64.hpp
 
 // The triangle's glTF with its buffer at `uri` (byteLength `length`), and
 // `extra` after the buffers (images, say).
