@@ -27,7 +27,7 @@ apt_common=(
   build-essential cmake ninja-build pkg-config
   libvulkan-dev vulkan-validationlayers glslang-tools vulkan-tools
   libglfw3-dev libglm-dev libtinygltf-dev libstb-dev xvfb xauth xdotool openbox wmctrl
-  stress-ng
+  libx11-dev stress-ng
   python3 python3-markdown python3-pygments
   python3-matplotlib python3-pil fonts-dejavu-core graphviz shellcheck clang clang-tidy
 )

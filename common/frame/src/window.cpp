@@ -4,8 +4,37 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#if VKT_WINDOW_X11
+#include <X11/Xlib.h>
+// GLFW's native-access functions for X11, declared here rather than through
+// <GLFW/glfw3native.h>, which would also need the XRandR headers.
+extern "C" Display* glfwGetX11Display(void);
+extern "C" ::Window glfwGetX11Window(GLFWwindow* window);
+#endif
 
 namespace vkt {
+
+namespace {
+
+// Shows the window. On X11, GLFW 3.3 maps the window and then waits for the
+// X server to say it is visible; that wait is meant to give up after 0.1 s,
+// but under a window manager on a loaded machine it was seen to spin for
+// minutes (tests/window_repeat_record.txt). Nothing here needs the window to
+// be visible before drawing (a swapchain can be made for a window not yet
+// shown), so on X11 we map it ourselves and carry on; the X server shows it
+// when it can, and GLFW learns of it from the events it polls.
+void show(GLFWwindow* window) {
+#if VKT_WINDOW_X11
+    if (Display* display = glfwGetX11Display()) {
+        XMapRaised(display, glfwGetX11Window(window));
+        XFlush(display);
+        return;
+    }
+#endif
+    glfwShowWindow(window);
+}
+
+}  // namespace
 
 Window::Window(const std::string& title, VkExtent2D size, InputUse use) : use_(use) {
     if (!glfwInit()) throw Error("GLFW cannot initialise (no display?)");
@@ -15,6 +44,7 @@ Window::Window(const std::string& title, VkExtent2D size, InputUse use) : use_(u
     }
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);  // Vulkan, not OpenGL
     glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);  // shown by show(), below
     window_ = glfwCreateWindow(int(size.width), int(size.height), title.c_str(), nullptr, nullptr);
     if (!window_) {
         glfwTerminate();
@@ -37,6 +67,7 @@ Window::Window(const std::string& title, VkExtent2D size, InputUse use) : use_(u
         if (self->use_ != InputUse::none && action != GLFW_REPEAT)
             self->input_.key(key, action == GLFW_PRESS);
     });
+    show(window_);
     if (use_ == InputUse::none) return;  // the chapter sees no input at all
     glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
         static_cast<Window*>(glfwGetWindowUserPointer(w))->input_.scroll(dy);
