@@ -34,6 +34,9 @@ if [ "$load" = --load ]; then
   trap 'kill $stress 2>/dev/null; wait $stress 2>/dev/null' EXIT
 fi
 
+# One line per run in $logs/progress, so that a long repeat can be read (or
+# stopped) before it ends.
+: >"$logs/progress"
 failures=0
 tests_per_run=0
 start=$(date +%s.%N)
@@ -41,7 +44,9 @@ for run in $(seq "$count"); do
   log="$logs/${label//[^A-Za-z0-9_.-]/_}.$run.log"
   if ctest --preset release "${select[@]}" >"$log" 2>&1; then
     rm -f "$log"
+    echo "run $run passed" >>"$logs/progress"
   else
+    echo "run $run FAILED" >>"$logs/progress"
     failures=$((failures + 1))
     echo "run $run FAILED: $(grep -E '^\s+[0-9]+ - ' "$log" | sed 's/^ *//' | tr '\n' ' ') (log: $log)"
   fi
