@@ -35,12 +35,20 @@ if [ "$load" = --load ]; then
 fi
 
 # One line per run in $logs/progress, so that a long repeat can be read (or
-# stopped) before it ends.
+# stopped) before it ends; touch $logs/pause to hold it between runs.
 : >"$logs/progress"
 failures=0
 tests_per_run=0
 start=$(date +%s.%N)
 for run in $(seq "$count"); do
+  # A file named "pause" in the log folder holds the repeat (and its load)
+  # between two runs, e.g. while a benchmark needs the machine quiet.
+  if [ -e "$logs/pause" ]; then
+    echo "paused before run $run" >>"$logs/progress"
+    if [ -n "$stress" ]; then pkill -STOP -P "$stress"; kill -STOP "$stress"; fi
+    while [ -e "$logs/pause" ]; do sleep 2; done
+    if [ -n "$stress" ]; then kill -CONT "$stress"; pkill -CONT -P "$stress"; fi
+  fi
   log="$logs/${label//[^A-Za-z0-9_.-]/_}.$run.log"
   if ctest --preset release "${select[@]}" >"$log" 2>&1; then
     rm -f "$log"
