@@ -22,6 +22,7 @@ TEST_CASE("no arguments give the defaults", "[args]") {
     CHECK(o.height == 600);
     CHECK(o.screenshot.empty());
     CHECK_FALSE(o.benchmark);
+    CHECK_FALSE(o.copy_to_swapchain);
     CHECK(o.device.empty());
     CHECK_FALSE(o.validation.has_value());
     CHECK_FALSE(o.help);
@@ -39,6 +40,7 @@ TEST_CASE("every flag is understood, with a separate or an inline value", "[args
     CHECK(o.device == "llvmpipe");
     CHECK(o.validation == false);
     CHECK(parse({"--validation"}).validation == true);
+    CHECK(parse({"--copy-to-swapchain"}).copy_to_swapchain);
     CHECK(parse({"--frames=3"}).frames == 3u);
     CHECK(parse({"--help"}).help);
     CHECK(parse({"-h"}).help);
@@ -100,7 +102,7 @@ TEST_CASE("usage and help name every flag the chapter takes", "[args]") {
     std::string help = vkt::help_text("04_triangle");
     for (const char* flag :
          {"--headless", "--offscreen", "--frames", "--size", "--screenshot", "--benchmark",
-          "--device", "--validation", "--no-validation", "--help"})
+          "--copy-to-swapchain", "--device", "--validation", "--no-validation", "--help"})
         CHECK(help.find(flag) != std::string::npos);
     std::string text = vkt::usage_line("02_device", Flags::device);
     CHECK(text.find("--frames") == std::string::npos);

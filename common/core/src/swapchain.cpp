@@ -9,9 +9,9 @@ namespace vkt {
 // [choose-format]
 VkSurfaceFormatKHR choose_surface_format(std::span<const VkSurfaceFormatKHR> available,
                                          VkFormat keep) {
-    // Any of these will do: we always render into an _SRGB image of our own
-    // (see render_format_for) and copy its bytes into the swapchain image.
-    // Headless surfaces offer only _UNORM formats.
+    // Any of these will do. _SRGB first: we can draw straight into it. A
+    // _UNORM image gets its bytes copied in from an _SRGB image of our own
+    // (see render_format_for); headless surfaces offer only _UNORM formats.
     // When recreating, `keep` and then its sibling with the same byte order come
     // first: the chapter's pipelines were made for that byte order.
     VkFormat sibling = VK_FORMAT_UNDEFINED;
@@ -95,7 +95,8 @@ Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR su
     std::vector<VkPresentModeKHR> modes(count);
     VKT_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(physical, surface, &count, modes.data()));
 
-    // We never draw into swapchain images directly: each frame is copied in.
+    // Frames are copied or cleared into the images (TRANSFER_DST) in any case:
+    // when we cannot draw into them, and by chapters that copy their picture in.
     if (!(capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
         throw Error("the surface's images cannot be copied into (no TRANSFER_DST usage)");
 
@@ -105,6 +106,14 @@ Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR su
     // --screenshot reads back the image we present, where the surface allows it.
     readable_ =
         request.readable && (capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    // Drawing straight into the images saves a full-screen copy per frame. It
+    // needs the _SRGB format the chapters' pipelines are made for (a _UNORM
+    // image would take our linear colours as already encoded), and, for
+    // --screenshot, images we can read back.
+    const bool drawable =
+        request.drawable && format_.format == render_format_for(format_.format) &&
+        (capabilities.supportedUsageFlags & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) &&
+        readable_ == request.readable;
 
     VkSwapchainCreateInfoKHR info{
         .sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR,
@@ -114,9 +123,11 @@ Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR su
         .imageColorSpace = format_.colorSpace,
         .imageExtent = extent_,
         .imageArrayLayers = 1,
-        .imageUsage =
-            VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-            (readable_ ? VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_SRC_BIT} : VkImageUsageFlags{0}),
+        .imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                      (readable_ ? VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_SRC_BIT}
+                                 : VkImageUsageFlags{0}) |
+                      (drawable ? VkImageUsageFlags{VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT}
+                                : VkImageUsageFlags{0}),
         .imageSharingMode = VK_SHARING_MODE_EXCLUSIVE,  // one queue draws and presents
         .preTransform = capabilities.currentTransform,
         .compositeAlpha = (capabilities.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)
@@ -136,6 +147,25 @@ Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR su
     VKT_CHECK(vkGetSwapchainImagesKHR(device, swapchain, &count, images_.data()));
     for (uint32_t i = 0; i < count; ++i) ready_to_present_.push_back(create_semaphore(device));
     // [/create-swapchain]
+
+    // [swapchain-views]
+    // To render into an image, a pipeline sees it through a view: which
+    // format, which mip levels and layers. Ours is the whole image as it is.
+    if (drawable) {
+        for (VkImage image : images_) {
+            VkImageViewCreateInfo view_info{
+                .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+                .image = image,
+                .viewType = VK_IMAGE_VIEW_TYPE_2D,
+                .format = format_.format,
+                .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1},
+            };
+            VkImageView view;
+            VKT_CHECK(vkCreateImageView(device, &view_info, nullptr, &view));
+            views_.emplace_back(device, view);
+        }
+    }
+    // [/swapchain-views]
 }
 
 const char* format_name(VkFormat format) {

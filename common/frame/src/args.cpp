@@ -21,7 +21,8 @@ std::optional<uint32_t> parse_positive(std::string_view text) {
 
 bool is_frame_loop_flag(std::string_view flag) {
     return flag == "--headless" || flag == "--offscreen" || flag == "--frames" ||
-           flag == "--size" || flag == "--screenshot" || flag == "--benchmark";
+           flag == "--size" || flag == "--screenshot" || flag == "--benchmark" ||
+           flag == "--copy-to-swapchain";
 }
 
 std::string format_number(double value) {
@@ -143,6 +144,9 @@ Options parse_args(std::span<const char* const> args, Flags flags,
         } else if (flag == "--benchmark") {
             no_value();
             options.benchmark = true;
+        } else if (flag == "--copy-to-swapchain") {
+            no_value();
+            options.copy_to_swapchain = true;
         } else if (flag == "--validation") {
             no_value();
             options.validation = true;
@@ -198,7 +202,7 @@ std::string usage_line(std::string_view program, Flags flags,
     if (flags == Flags::frame_loop)
         line +=
             " [--headless | --offscreen] [--frames N] [--size WxH] [--screenshot FILE.png]"
-            " [--benchmark]";
+            " [--benchmark] [--copy-to-swapchain]";
     if (flags != Flags::instance) line += " [--device NAME|INDEX]";
     line += " [--validation | --no-validation] [--help]";
     for (const auto& spec : chapter_options)
@@ -236,7 +240,10 @@ std::string help_text(std::string_view program, Flags flags,
             "                       (headless default: 60 frames)\n"
             "  --size WxH           size of the window or the headless image (default 800x600)\n"
             "  --screenshot FILE.png  write the last frame, as presented, as a PNG\n"
-            "  --benchmark          print CPU and GPU frame times as JSON on stdout\n";
+            "  --benchmark          print CPU and GPU frame times as JSON on stdout\n"
+            "  --copy-to-swapchain  draw into our own image and copy it into the swapchain\n"
+            "                       image (default: draw straight into the swapchain image\n"
+            "                       where its format allows)\n";
     if (flags != Flags::instance)
         text += "  --device NAME|INDEX  use this physical device (index, or part of its name)\n";
     text +=

@@ -113,7 +113,8 @@ void ChapterRun::open_presentation(const Options& options, const ChapterSpec& sp
             std::make_unique<Swapchain>(device_->physical(), *device_, surface_,
                                         SwapchainRequest{.extent = extent,
                                                          .uncapped = options.benchmark,
-                                                         .readable = !options.screenshot.empty()},
+                                                         .readable = !options.screenshot.empty(),
+                                                         .drawable = !options.copy_to_swapchain},
                                         VK_NULL_HANDLE);
         extent = swapchain_->extent();
     }
@@ -124,6 +125,14 @@ void ChapterRun::open_presentation(const Options& options, const ChapterSpec& sp
 void ChapterRun::create_target(VkExtent2D extent) {
     VkFormat format =
         swapchain_ ? render_format_for(swapchain_->format()) : VK_FORMAT_R8G8B8A8_SRGB;
+    if (swapchain_ && swapchain_->drawable()) {
+        // Frames are drawn straight into the swapchain's images: no image of
+        // our own, only its size and format, which the chapter is told.
+        target_ = Image{};
+        target_.format = format;
+        target_.extent = extent;
+        return;
+    }
     target_ = create_image_2d(device_->physical(), *device_, format, extent,
                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
                                   VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
@@ -145,7 +154,8 @@ void ChapterRun::recreate_swapchain() {
         SwapchainRequest{.extent = window_ ? window_->framebuffer_size() : target_.extent,
                          .uncapped = options_.benchmark,
                          .readable = !options_.screenshot.empty(),
-                         .keep = swapchain_->format()},
+                         .keep = swapchain_->format(),
+                         .drawable = !options_.copy_to_swapchain},
         swapchain_->get());
     swapchain_ = std::move(next);  // the old swapchain is destroyed after the new one exists
     // The chapter's pipelines were made for our target's format; it must not change.
@@ -156,10 +166,13 @@ void ChapterRun::recreate_swapchain() {
     presented_ = {};  // the next present is reported, whatever its size
     std::fprintf(stderr, "%s: swapchain recreated at %ux%u\n", spec_.name.c_str(), extent.width,
                  extent.height);
-    if (extent.width != target_.extent.width || extent.height != target_.extent.height) {
+    const bool resized =
+        extent.width != target_.extent.width || extent.height != target_.extent.height;
+    // A new size needs a new target; so does a swapchain we can no longer draw
+    // into (or now can), e.g. one that came back in the _UNORM format.
+    if (resized || swapchain_->drawable() != (target_.image.get() == VK_NULL_HANDLE))
         create_target(extent);
-        renderer_->resize(extent);
-    }
+    if (resized) renderer_->resize(extent);
 }
 // [/recreate]
 

@@ -65,7 +65,8 @@ ChapterRun::ChapterRun(const Options& options, const ChapterSpec& spec)
     if (swapchain_)
         where += std::string(" ") + format_name(swapchain_->format()) + " " +
                  present_mode_name(swapchain_->present_mode()) + " x" +
-                 std::to_string(swapchain_->images().size());
+                 std::to_string(swapchain_->images().size()) +
+                 (swapchain_->drawable() ? " drawn into" : " copied into");
     std::fprintf(stderr, "%s: %s, %s, %ux%u %s, validation %s\n", spec.name.c_str(),
                  device_->properties().deviceName, where.c_str(), target_.extent.width,
                  target_.extent.height, format_name(target_.format),
@@ -147,12 +148,16 @@ void ChapterRun::run(const RendererFactory& factory) {
                       json_summary(scope.samples);
         std::printf(
             "{\"chapter\": %s, \"device\": %s, \"presentation\": %s, \"width\": %u, \"height\": "
-            "%u, "
+            "%u, \"into_swapchain\": %s, "
             "\"frames\": %zu, \"cpu_frame_ms\": %s, \"gpu_frame_ms\": %s, \"gpu_scopes_ms\": "
             "{%s}}\n",
             json_string(spec_.name).c_str(), json_string(device_->properties().deviceName).c_str(),
             json_string(presentation_name(presentation_)).c_str(), target_.extent.width,
-            target_.extent.height, cpu_ms_.size(), json_summary(cpu_ms_).c_str(),
+            target_.extent.height,
+            !swapchain_              ? "null"
+            : swapchain_->drawable() ? "\"drawn\""
+                                     : "\"copied\"",
+            cpu_ms_.size(), json_summary(cpu_ms_).c_str(),
             json_summary(gpu_timer_.samples_ms()).c_str(), scopes.c_str());
     }
     renderer_.reset();
@@ -184,18 +189,24 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
     VKT_CHECK(vkResetFences(*device_, 1, &done));  // only now that we will submit
     // [/wait-acquire]
 
+    // The chapter draws into the acquired swapchain image itself where it can,
+    // else into our own image, which record() then copies into the swapchain's.
+    const bool direct = swapchain_ && swapchain_->drawable();
     VKT_CHECK(vkResetCommandPool(*device_, slot.pool, 0));
     record(slot, image_index,
-           Frame{slot.cmd, target_.image, target_.view, target_.extent, index, time, slot_index,
-                 input, gpu_timer_ ? &gpu_timer_ : nullptr});
+           Frame{slot.cmd, direct ? swapchain_->images()[image_index] : target_.image.get(),
+                 direct ? swapchain_->view(image_index) : target_.view.get(), target_.extent, index,
+                 time, slot_index, input, gpu_timer_ ? &gpu_timer_ : nullptr});
 
     // [submit]
-    // Submit: wait for the acquired image before copying into it, signal the
-    // image's own ready_to_present semaphore, and the slot's fence for the CPU.
+    // Submit: wait for the acquired image before the first write to it (the
+    // chapter's drawing, or our copy), signal the image's own ready_to_present
+    // semaphore, and the slot's fence for the CPU.
     VkSemaphoreSubmitInfo wait{
         .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
         .semaphore = slot.image_acquired,
-        .stageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
+        .stageMask =
+            direct ? VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT : VK_PIPELINE_STAGE_2_COPY_BIT,
     };
     VkSemaphoreSubmitInfo signal{
         .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
@@ -252,64 +263,78 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
     };
     VKT_CHECK(vkBeginCommandBuffer(cmd, &begin));
     gpu_timer_.begin(cmd, frame.slot);
+    const bool direct = swapchain_ && swapchain_->drawable();
+    const bool screenshot = !options_.screenshot.empty();
+    // --screenshot reads back what each frame presents: the swapchain image
+    // where the surface lets us read it, else our target.
+    const bool read_swapchain = screenshot && swapchain_ && swapchain_->readable();
 
     // [frame-barriers]
-    // Our colour target: the previous frame's copy must have read it before we
-    // overwrite it; its old contents do not matter (UNDEFINED).
-    image_barrier(cmd, target_.image, VK_IMAGE_LAYOUT_UNDEFINED,
-                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
-                  VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
+    // The image the chapter draws into, whose old contents do not matter
+    // (UNDEFINED). Our own target: the previous frame's copy must have read it
+    // before we overwrite it. A swapchain image: the acquire semaphore, which
+    // the submit waits for at the colour-output stage, says when.
+    image_barrier(
+        cmd, frame.target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+        direct ? VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT : VK_PIPELINE_STAGE_2_COPY_BIT,
+        VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
 
     renderer_->record(frame);  // the chapter draws
 
-    // GPU time ends here: the copy below waits for the presentation engine,
-    // which is not the chapter's cost.
+    // GPU time ends here: what follows is presentation, not the chapter's cost.
     gpu_timer_.end(cmd, frame.slot);
 
-    // The chapter's writes must be finished and visible before we copy.
-    image_barrier(cmd, target_.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
-                  VK_ACCESS_2_TRANSFER_READ_BIT);
+    // Our target: the chapter's writes must be finished and visible before we
+    // copy or read it (and before the next frame's barrier, which waits for
+    // the COPY stage, overwrites it).
+    if (!direct)
+        image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                      VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                      VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                      VK_ACCESS_2_TRANSFER_READ_BIT);
 
-    // --screenshot reads back what each frame presents: the swapchain image
-    // after the copy where the surface lets us read it, else our target.
-    const bool screenshot = !options_.screenshot.empty();
-    const bool read_swapchain = screenshot && swapchain_ && swapchain_->readable();
     if (swapchain_) {
-        // The swapchain image: after the acquire semaphore (waited for at the
-        // COPY stage), make it a copy destination, copy, then hand it to present.
         VkImage image = swapchain_->images()[image_index];
-        image_barrier(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                      VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
-                      VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        VkImageCopy region{
-            .srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-            .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-            .extent = {frame.extent.width, frame.extent.height, 1},
-        };
-        vkCmdCopyImage(cmd, target_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image,
-                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        VkImageLayout layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-        VkAccessFlags2 access = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        VkImageLayout layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+        VkAccessFlags2 access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
+        if (!direct) {
+            // Copy our target in: after the acquire semaphore (waited for at the
+            // COPY stage), make the image a copy destination, then copy.
+            image_barrier(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED,
+                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                          VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
+                          VK_ACCESS_2_TRANSFER_WRITE_BIT);
+            VkImageCopy region{
+                .srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                .extent = {frame.extent.width, frame.extent.height, 1},
+            };
+            vkCmdCopyImage(cmd, frame.target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+            layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+            stage = VK_PIPELINE_STAGE_2_COPY_BIT;
+            access = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        }
         if (read_swapchain) {
-            image_barrier(cmd, image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                          VK_PIPELINE_STAGE_2_COPY_BIT, access, VK_PIPELINE_STAGE_2_COPY_BIT,
-                          VK_ACCESS_2_TRANSFER_READ_BIT);
+            image_barrier(cmd, image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, stage, access,
+                          VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
             record_readback(device_->physical(), *device_, cmd, image, swapchain_->format(),
                             frame.extent, slot.readback);
             layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+            stage = VK_PIPELINE_STAGE_2_COPY_BIT;
             access = VK_ACCESS_2_NONE;  // after a read, ordering is all we need
         }
-        image_barrier(cmd, image, layout, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
-                      VK_PIPELINE_STAGE_2_COPY_BIT, access, VK_PIPELINE_STAGE_2_NONE,
-                      VK_ACCESS_2_NONE);
+        // Then hand the image to the presentation engine, which waits for the
+        // ready_to_present semaphore: no later stage of ours needs to wait.
+        image_barrier(cmd, image, layout, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, stage, access,
+                      VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE);
     }
     // [/frame-barriers]
     if (screenshot && !read_swapchain)
-        record_readback(device_->physical(), *device_, cmd, target_.image, target_.format,
+        record_readback(device_->physical(), *device_, cmd, frame.target, target_.format,
                         frame.extent, slot.readback);
 
     VKT_CHECK(vkEndCommandBuffer(cmd));

@@ -37,6 +37,7 @@ struct SwapchainRequest {
     bool uncapped = false;                // --benchmark: do not wait for the display
     bool readable = false;                // --screenshot: images may be copied from
     VkFormat keep = VK_FORMAT_UNDEFINED;  // on recreation: the format we had
+    bool drawable = false;                // draw straight into the images where we can
 };
 
 class Swapchain {
@@ -51,6 +52,11 @@ public:
     // Whether the images can be copied from (asked for, and the surface allows it).
     bool readable() const { return readable_; }
     const std::vector<VkImage>& images() const { return images_; }
+    // Whether the images are drawn into directly: asked for, the format is the
+    // _SRGB one the chapters render in, and the surface allows it. Then each
+    // image has a view for rendering; otherwise frames are copied in.
+    bool drawable() const { return !views_.empty(); }
+    VkImageView view(uint32_t image) const { return views_[image]; }
     // Signalled when the image's frame is rendered; presenting it waits on it.
     // One per swapchain image, not per frame in flight: the presentation engine
     // holds the semaphore until the image comes back from the screen.
@@ -64,6 +70,7 @@ private:
     bool readable_ = false;
     std::vector<VkImage> images_;
     std::vector<Semaphore> ready_to_present_;
+    std::vector<ImageView> views_;  // after swapchain_: destroyed before its images go
 };
 
 const char* format_name(VkFormat format);

@@ -39,6 +39,7 @@ struct Options {
     uint32_t width = 800, height = 600;  // --size WxH
     std::string screenshot;              // --screenshot FILE.png: the last frame as a PNG
     bool benchmark = false;              // --benchmark: JSON timings on stdout
+    bool copy_to_swapchain = false;      // --copy-to-swapchain: never draw into its images
     std::string device;                  // --device NAME|INDEX
     std::optional<bool> validation;      // --validation / --no-validation (unset: on if installed)
     bool help = false;                   // --help
