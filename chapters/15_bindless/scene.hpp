@@ -141,8 +141,9 @@ inline Scene make_scene(uint32_t grid, uint32_t texture_count) {
     for (uint32_t i = 0; i < grid * grid; ++i) {
         const uint32_t h = hash(i), g = hash(h);
         const float size = 0.7f + 0.3f * float(h % 1000) / 1000.0f;
-        const glm::vec3 position((float(i % grid) + 0.5f) * spacing - half_width, 0.5f * size,
-                                 (float(i / grid) + 0.5f) * spacing - half_width);
+        const uint32_t column = i % grid, row = i / grid;  // whole numbers
+        const glm::vec3 position((float(column) + 0.5f) * spacing - half_width, 0.5f * size,
+                                 (float(row) + 0.5f) * spacing - half_width);
         const float shade = 0.8f + 0.2f * float((g >> 8) % 100) / 100.0f;
         scene.objects.push_back({vkt::transform(position, glm::radians(float((h >> 10) % 360)),
                                                 {0, 1, 0}, glm::vec3(size)),
@@ -158,10 +159,11 @@ inline Scene make_scene(uint32_t grid, uint32_t texture_count) {
 // Slot 0 of the texture array: a grey checker, the floor's texture and what
 // an object shows while its own texture is still "loading".
 inline vkt::RgbaImage grey_checker() {
-    vkt::RgbaImage image{64, 64, std::vector<uint8_t>(64 * 64 * 4, 255)};
+    vkt::RgbaImage image{64, 64, std::vector<uint8_t>(size_t(64) * 64 * 4, 255)};
     for (uint32_t y = 0; y < 64; ++y)
         for (uint32_t x = 0; x < 64; ++x)
-            std::memset(&image.pixels[(y * 64 + x) * 4], ((x / 32 + y / 32) % 2) ? 150 : 110, 3);
+            std::memset(&image.pixels[(size_t(y) * 64 + x) * 4],
+                        ((x / 32 + y / 32) % 2) ? 150 : 110, 3);
     return image;
 }
 

@@ -87,7 +87,8 @@ public:
     }
 
     ~TiledDeferred() override {
-        for (uint32_t slot = 0; slot < stats_.size(); ++slot) read_stats(slot, true);
+        // Only the counting: the run is over, no bins to grow (which may throw).
+        for (uint32_t slot = 0; slot < stats_.size(); ++slot) count_stats(slot);
         if (tiles_seen_ > 0)
             std::fprintf(stderr,
                          "17_tiled_deferred: lights per lit tile: mean %.1f, most %u (a list "
@@ -257,12 +258,19 @@ private:
         objects_ = make_objects(t);
     }
 
-    // What the slot's last frame counted (it is finished), then zeroed.
-    // `finished`: the run is over, nothing more to grow for.
-    void read_stats(uint32_t slot, bool finished = false) {
+    // What the slot's last frame counted (it is finished); the bins grow
+    // for the next frames if its fill dropped candidates.
+    void read_stats(uint32_t slot) {
+        const uint32_t needed = count_stats(slot);
+        if (binned_ && bins_.grow(needed)) bins_.write_descriptors(screen_set_);
+    }
+
+    // The slot's counts, added to the run's and zeroed; returns the
+    // candidates its bins needed (0 when it has not drawn yet).
+    uint32_t count_stats(uint32_t slot) {
         if (!stats_pending_[slot]) {
             stats_pending_[slot] = true;  // the coming frame will count
-            return;
+            return 0;
         }
         TileStats stats{};
         std::memcpy(&stats, stats_[slot].mapped, sizeof stats);
@@ -275,8 +283,7 @@ private:
         most_candidates_ = std::max(most_candidates_, stats.most_candidates);
         // Candidates the fill dropped: counted, and the bins grow for the next frames.
         if (stats.binned_entries > stats.binned_budget) ++dropped_frames_;
-        if (binned_ && !finished && bins_.grow(stats.binned_entries))
-            bins_.write_descriptors(screen_set_);
+        return stats.binned_entries;
     }
 
     // [verify]

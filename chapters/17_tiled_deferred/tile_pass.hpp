@@ -87,7 +87,8 @@ public:
         // (TRANSFER_SRC: --verify bins copies them to the host.)
         const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
         const auto local = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-        counts_ = vkt::create_buffer(physical, device, grid.count() * 4, storage, local);
+        counts_ =
+            vkt::create_buffer(physical, device, VkDeviceSize{grid.count()} * 4, storage, local);
         lists_ = vkt::create_buffer(physical, device, list_bytes, storage, local);
         shaded_ = vkt::create_image_2d(physical, device, shaded_format, extent,
                                        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,

@@ -43,14 +43,14 @@ inline void verify_bins(const vkt::Gpu& gpu, VkExtent2D e, uint32_t light_count,
                           {host(count_bytes), host(list_bytes)}};
     std::vector<vkt::Image> targets;                   // the fragment pass's pictures, [binned]
     std::vector<vkt::deferred::HostCopy> pictures[2];  // [binned]: fragment, then compute
-    for (int binned = 0; binned < 2; ++binned) {
+    for (std::vector<vkt::deferred::HostCopy>& copies : pictures) {  // tiled, then binned
         targets.push_back(vkt::create_image_2d(
             gpu.physical, gpu.device, VK_FORMAT_R32G32B32A32_SFLOAT, e,
             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
             VK_IMAGE_ASPECT_COLOR_BIT));
-        pictures[binned].push_back(
+        copies.push_back(
             vkt::deferred::make_host_copy(gpu.physical, gpu.device, targets.back().image, e, 16));
-        pictures[binned].push_back(
+        copies.push_back(
             vkt::deferred::make_host_copy(gpu.physical, gpu.device, tiles.shaded(), e, 16));
     }
     constexpr auto colour_out = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;

@@ -104,7 +104,7 @@ public:
         // Per frame in flight: the poses the CPU writes (host-visible), and
         // the projected vertices the transform pass writes (device-local: the
         // draw reads them as a vertex buffer, the rasteriser as storage).
-        pose_floats_ = size_t(n_ * n_ + n_);
+        pose_floats_ = size_t(n_) * size_t(n_) + size_t(n_);
         const VkDeviceSize pose_bytes = scene_.objects.size() * pose_floats_ * sizeof(float);
         for (uint32_t i = 0; i < context.frames_in_flight; ++i) {
             poses_.push_back(

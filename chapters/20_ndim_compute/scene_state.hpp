@@ -45,7 +45,7 @@ constexpr uint32_t group = 64;  // local_size_x of both compute shaders
 inline std::vector<uint32_t> palette(bool bgra) {
     const auto byte = [](float c) {  // linear to sRGB-encoded, 0..255
         c = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-        return uint32_t(std::clamp(c, 0.0f, 1.0f) * 255.0f + 0.5f);
+        return uint32_t(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f));
     };
     std::vector<uint32_t> words(256, 0u);  // level 0: no line
     for (uint32_t level = 1; level < 256; ++level) {
