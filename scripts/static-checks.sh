@@ -12,9 +12,8 @@
 # clang-tidy must be 15 or newer (Debian 12: clang-tidy-16): clang 14 cannot
 # parse GCC 12's <source_location>, which every file includes.
 #
-# scripts/static-checks-pending.txt names files whose clang-tidy findings are
-# listed but do not fail the run (yet): files others were restructuring when
-# the checks came in. Each line goes once its file is clean.
+# Every clang-tidy finding fails the run (the files once left out while they
+# were being restructured are clean now).
 set -u
 cd "$(dirname "$0")/.." || exit 2
 jobs=${1:-$(nproc)}
@@ -55,30 +54,12 @@ printf '%s\n' "${sources[@]}" | sort -u |
 # Findings, each once (a header's are found by every file that includes it).
 mapfile -t findings < <(cat "$out"/*.txt | grep -E '^/.*:[0-9]+:[0-9]+: (error|warning): ' |
                         sed "s|^$PWD/||" | sort -u)
-pending_patterns=()
-if [ -f scripts/static-checks-pending.txt ]; then
-  mapfile -t pending_patterns < <(grep -vE '^\s*(#|$)' scripts/static-checks-pending.txt)
-fi
-new=() pending=()
-for finding in "${findings[@]}"; do
-  file=${finding%%:*}
-  is_pending=0
-  for pattern in "${pending_patterns[@]}"; do
-    # shellcheck disable=SC2053  # the pattern is a glob on purpose
-    [[ $file == $pattern ]] && { is_pending=1; break; }
-  done
-  if [ "$is_pending" -eq 1 ]; then pending+=("$finding"); else new+=("$finding"); fi
-done
-if [ "${#pending[@]}" -gt 0 ]; then
-  echo "clang-tidy: ${#pending[@]} findings in files of static-checks-pending.txt (not failing):"
-  printf '  %s\n' "${pending[@]}"
-fi
-if [ "${#new[@]}" -gt 0 ]; then
-  echo "clang-tidy: ${#new[@]} findings:"
-  printf '  %s\n' "${new[@]}"
+if [ "${#findings[@]}" -gt 0 ]; then
+  echo "clang-tidy: ${#findings[@]} findings:"
+  printf '  %s\n' "${findings[@]}"
   failed+=(clang-tidy)
 fi
-echo "clang-tidy ($tidy): ${#sources[@]} files, ${#new[@]} findings, ${#pending[@]} pending, $((SECONDS - start)) s"
+echo "clang-tidy ($tidy): ${#sources[@]} files, ${#findings[@]} findings, $((SECONDS - start)) s"
 
 # --- clang-format ------------------------------------------------------------
 start=$SECONDS
