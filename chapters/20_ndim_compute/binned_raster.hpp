@@ -141,7 +141,10 @@ public:
     // workgroup per tile, as many as bin.comp wrote into the dispatch.
     void draw(VkCommandBuffer cmd, const ComputeRaster& raster, vkt::GpuTimer* timer = nullptr,
               uint32_t slot = 0) const {
-        raster.clear(cmd);
+        {
+            vkt::GpuScope fill(timer, cmd, slot, "fill");
+            raster.clear(cmd);
+        }
         compute_barrier(cmd);
         vkt::buffer_barrier(cmd, tiles_.buffer, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

@@ -259,6 +259,7 @@ public:
             }
             auto scope = frame.gpu_scope("raster");
             binned_->draw(cmd, *raster_, frame.timer, frame.slot);
+            auto copy = frame.gpu_scope("copy");
             raster_->copy_to_target(frame);
             return;
         }
