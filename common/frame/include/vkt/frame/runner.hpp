@@ -5,10 +5,11 @@
 // record into each frame.
 //
 // The contract with a chapter: each frame, record() gets a command buffer and
-// the frame's colour target, an image of our own in an _SRGB format, already in
+// the frame's colour target in an _SRGB format (the acquired swapchain image
+// where its format allows, else an image of our own), already in
 // VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL with undefined contents. record()
 // draws into it and leaves it in COLOR_ATTACHMENT_OPTIMAL; the runner then
-// copies it to the swapchain image (or keeps it, offscreen).
+// presents it, copies our own into the swapchain image, or keeps it offscreen.
 
 #include "vkt/core/device.hpp"
 #include "vkt/frame/args.hpp"
