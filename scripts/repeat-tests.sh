@@ -31,7 +31,8 @@ if [ "$load" = --load ]; then
   command -v stress-ng >/dev/null || { echo "--load needs stress-ng (apt install stress-ng)"; exit 2; }
   stress-ng --cpu "$(nproc)" --quiet &
   stress=$!
-  trap 'kill $stress 2>/dev/null; wait $stress 2>/dev/null' EXIT
+  # Continued as well as killed: a held (stopped) process takes no signal.
+  trap 'kill $stress 2>/dev/null; pkill -CONT -P $stress; kill -CONT $stress 2>/dev/null; wait $stress 2>/dev/null' EXIT
 fi
 
 # One line per run in $logs/progress, so that a long repeat can be read (or
