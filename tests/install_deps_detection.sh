@@ -85,9 +85,9 @@ check "debian-12: plan" has '^install-deps: plan: debian-12'
 check "debian-12: would write the backports source" \
   has "would write: $work/sources/bookworm-backports.sources \\(bookworm-backports, main\\)"
 check "debian-12: apt-get update" has 'would run: apt-get update'
-for pkg in libvulkan-dev libglfw3-dev libtinygltf-dev libstb-dev glslang-tools python3-markdown \
-  python3-matplotlib graphviz chromium shellcheck clang-tidy clang libclang-rt-14-dev clang-16 \
-  libclang-rt-16-dev fonts-dejavu-core; do
+for pkg in libvulkan-dev libglfw3-dev libtinygltf-dev libpng-dev libjpeg-dev libstb-dev \
+  glslang-tools python3-markdown python3-matplotlib graphviz chromium shellcheck clang-tidy clang \
+  libclang-rt-14-dev clang-16 libclang-rt-16-dev fonts-dejavu-core; do
   check "debian-12: installs $pkg" has "would run: apt-get install .* $pkg( |\$)"
 done
 check "debian-12: Mesa and Catch2 from backports" \
@@ -106,8 +106,8 @@ check "ubuntu-24.04: exit 0" test "$status" -eq 0
 check "ubuntu-24.04: plan" has '^install-deps: plan: ubuntu-24.04'
 check "ubuntu-24.04: apt-get update" has 'would run: apt-get update'
 for pkg in libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers catch2 libglfw3-dev libglm-dev \
-  libtinygltf-dev libstb-dev glslang-tools python3-matplotlib graphviz shellcheck clang-tidy \
-  libclang-rt-18-dev; do
+  libtinygltf-dev libpng-dev libjpeg-dev libstb-dev glslang-tools python3-matplotlib graphviz \
+  shellcheck clang-tidy libclang-rt-18-dev; do
   check "ubuntu-24.04: installs $pkg" has "would run: apt-get install .* $pkg( |\$)"
 done
 check "ubuntu-24.04: no apt source written" lacks 'would write|already there|sources\.list'
@@ -123,7 +123,7 @@ check "ubuntu-24.04: would check lavapipe" has 'would check: .*VK_EXT_headless_s
 dry "$work/os/fedora"
 check "fedora: exit 3" test "$status" -eq 3
 check "fedora: changed nothing" has 'Changed nothing'
-check "fedora: dnf names" has 'sudo dnf install .*vulkan-loader-devel.* python3-matplotlib .*clang-tools-extra'
+check "fedora: dnf names" has 'sudo dnf install .*vulkan-loader-devel.* libpng-devel libjpeg-turbo-devel .*python3-matplotlib .*clang-tools-extra'
 check "fedora: runs nothing" lacks 'would run|would write'
 
 dry "$work/os/mint"

@@ -15,8 +15,6 @@
 #include "vkt/resources/shader.hpp"
 #include "vkt/resources/texture.hpp"
 
-#include <stb/stb_image.h>
-
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -24,25 +22,20 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <span>
 #include <vector>
 
 namespace {
 
 // [load]
-// stb_image decodes PNG, JPEG, BMP, TGA...; asking for 4 channels gives
-// 8-bit RGBA whatever the file holds (alpha 255 where it has none). The file
-// itself is read by vkt::read_file, which names it when it is missing, a
-// directory or past 1 GiB (so its length also fits stb's int).
+// Decoding is not Vulkan's business: vkt::decode_image hands PNG to libpng
+// and JPEG to libjpeg-turbo, and asks both for 8-bit RGBA whatever the file
+// holds (alpha 255 where it has none). The file itself is read by
+// vkt::read_file, which names it when it is missing, a directory or past 1 GiB.
 vkt::RgbaImage load_texture(const std::filesystem::path& path) {
     const std::vector<char> file = vkt::read_file(path);
-    int width = 0, height = 0, channels_in_file = 0;
-    stbi_uc* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(file.data()),
-                                          int(file.size()), &width, &height, &channels_in_file, 4);
-    if (!data) throw vkt::Error(path.string() + ": cannot decode image: " + stbi_failure_reason());
-    vkt::RgbaImage image{uint32_t(width), uint32_t(height), {}};
-    image.pixels.assign(data, data + size_t(width) * size_t(height) * 4);
-    stbi_image_free(data);
-    return image;
+    return vkt::decode_image(std::span(reinterpret_cast<const uint8_t*>(file.data()), file.size()),
+                             path.string());
 }
 // [/load]
 

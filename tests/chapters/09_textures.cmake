@@ -23,8 +23,8 @@ vkt_chapter_test(chapter.09_textures.no_mips 09_textures ${VKT_09_PIXEL}
 vkt_chapter_test(chapter.09_textures.help 09_textures EXIT 0 ARGS --help
   EXPECT "usage: 09_textures" "--texture FILE" "--mips blit\\|cpu\\|none")
 
-# Bad input: a missing texture, a file stb cannot decode, a --mips it does
-# not know.
+# Bad input: a missing texture, a file that is no PNG or JPEG, a --mips it
+# does not know.
 vkt_chapter_test(bad_input.09_textures.missing_texture 09_textures EXIT 1
   ARGS --headless --frames 1 --texture ${CMAKE_CURRENT_BINARY_DIR}/no-such-texture.png
   EXPECT "cannot open .*no-such-texture.png")

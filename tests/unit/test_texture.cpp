@@ -70,15 +70,17 @@ TEST_CASE("decode_image refuses bytes that are no image, with a clear message", 
                       ContainsSubstring("empty: cannot decode image"));
 }
 
-// A PNG that is only a header claiming 20000 x 100 pixels (stb_image does
-// not check the header's CRC, so it is left 0): refused before decoding.
+// A PNG that is only a header claiming 20000 x 100 pixels and the start of
+// an empty pixel chunk (libpng reads up to there before it gives the size):
+// refused before decoding. The header's CRC is right: libpng checks it.
 TEST_CASE("decode_image refuses a picture larger than max_image_side", "[texture]") {
     const std::vector<uint8_t> header = {
-        0x89, 'P', 'N',  'G',  '\r', '\n', 0x1a, '\n',  // signature
-        0,    0,   0,    13,   'I',  'H',  'D',  'R',   // IHDR, 13 bytes
-        0,    0,   0x4e, 0x20, 0,    0,    0,    100,   // 20000 x 100
-        8,    6,   0,    0,    0,                       // 8-bit RGBA
-        0,    0,   0,    0};                            // CRC
+        0x89, 'P',  'N',  'G',  '\r', '\n', 0x1a, '\n',  // signature
+        0,    0,    0,    13,   'I',  'H',  'D',  'R',   // IHDR, 13 bytes
+        0,    0,    0x4e, 0x20, 0,    0,    0,    100,   // 20000 x 100
+        8,    6,    0,    0,    0,                       // 8-bit RGBA
+        0x63, 0x8d, 0,    0x67,                          // CRC
+        0,    0,    0,    0,    'I',  'D',  'A',  'T'};  // IDAT, 0 bytes
     CHECK_THROWS_WITH(vkt::decode_image(header, "huge.png"),
                       "huge.png: cannot decode image: it is 20000x100, larger than 16384x16384");
 }

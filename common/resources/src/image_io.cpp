@@ -2,35 +2,32 @@
 
 #include "vkt/core/check.hpp"
 
-#include <stb_image.h>
-#include <stb_image_write.h>
+#include <png.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <string>
 
 namespace vkt {
 
+// libpng's simplified API: one call, its errors as a message in the struct
+// (no setjmp here: it keeps its own). The same library that reads them.
 void write_png(const std::filesystem::path& path, const RgbaImage& image) {
     if (image.pixels.size() != size_t{image.width} * image.height * 4)
         throw Error("write_png: pixel data does not match " + std::to_string(image.width) + "x" +
                     std::to_string(image.height));
-    if (!stbi_write_png(path.c_str(), static_cast<int>(image.width), static_cast<int>(image.height),
-                        4, image.pixels.data(), static_cast<int>(image.width * 4)))
-        throw Error("cannot write " + path.string() + ": " + std::strerror(errno));
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    png.width = image.width;
+    png.height = image.height;
+    png.format = PNG_FORMAT_RGBA;
+    if (!png_image_write_to_file(&png, path.c_str(), 0, image.pixels.data(), 0, nullptr))
+        throw Error("cannot write " + path.string() + ": " + png.message);
 }
 
 RgbaImage read_png(const std::filesystem::path& path) {
-    int width = 0, height = 0, channels = 0;
-    stbi_uc* data = stbi_load(path.c_str(), &width, &height, &channels, 4);
-    if (!data) throw Error("cannot read image " + path.string() + ": " + stbi_failure_reason());
-    RgbaImage image{static_cast<uint32_t>(width), static_cast<uint32_t>(height), {}};
-    image.pixels.assign(data, data + size_t(width) * size_t(height) * 4);
-    stbi_image_free(data);
-    return image;
+    return load_image_file(path);
 }
 
 ImageDifference compare_images(const RgbaImage& a, const RgbaImage& b, int threshold) {

@@ -3,60 +3,14 @@
 #include "vkt/core/barrier.hpp"
 
 #include "vkt/core/check.hpp"
-#include "vkt/core/files.hpp"
-
-#include <stb/stb_image.h>
 
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <climits>
 #include <cmath>
 #include <cstring>
 
 namespace vkt {
-
-RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what) {
-    if (bytes.size() > size_t(INT_MAX))
-        throw Error(what + ": cannot decode image: larger than 2 GiB");
-    // PNG and JPEG only, told by their first bytes (glTF allows no other, and
-    // neither do this tutorial's pages): stb_image also reads TGA, which has
-    // no signature, so any bytes at all could pass for a picture of garbage
-    // (found by tests/fuzz/fuzz_image.cpp: 20 bytes "decoded" to 2848x2816).
-    const bool png = bytes.size() >= 8 && std::memcmp(bytes.data(), "\x89PNG\r\n\x1a\n", 8) == 0;
-    const bool jpeg = bytes.size() >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff;
-    if (!png && !jpeg) throw Error(what + ": cannot decode image: not a PNG or JPEG file");
-    int width = 0, height = 0, channels = 0;
-    // A few hundred bytes of JPEG or PNG may claim a picture of gigabytes
-    // (found by tests/fuzz/fuzz_image.cpp: stb_image would allocate it and
-    // decode garbage into it). Refuse, from the header alone, what no texture
-    // of this tutorial could hold.
-    if (stbi_info_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels) &&
-        (uint32_t(width) > max_image_side || uint32_t(height) > max_image_side))
-        throw Error(what + ": cannot decode image: it is " + std::to_string(width) + "x" +
-                    std::to_string(height) + ", larger than " + std::to_string(max_image_side) +
-                    "x" + std::to_string(max_image_side));
-    // Ask for 4 channels whatever the file holds: grey, RGB and palette images
-    // all arrive as RGBA, alpha 255 where the file has none.
-    stbi_uc* data =
-        stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 4);
-    if (!data) {
-        const char* reason = stbi_failure_reason();
-        throw Error(what + ": cannot decode image: " + (reason ? reason : "unknown reason"));
-    }
-    RgbaImage out;
-    out.width = uint32_t(width);
-    out.height = uint32_t(height);
-    out.pixels.assign(data, data + size_t(width) * size_t(height) * 4);
-    stbi_image_free(data);
-    return out;
-}
-
-RgbaImage load_image_file(const std::filesystem::path& path) {
-    std::vector<char> file = read_file(path);  // throws "cannot open FILE"
-    return decode_image(std::span(reinterpret_cast<const uint8_t*>(file.data()), file.size()),
-                        path.string());
-}
 
 uint32_t mip_level_count(uint32_t width, uint32_t height) {
     // floor(log2(n)) + 1 is the number of bits n needs.

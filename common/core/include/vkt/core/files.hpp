@@ -19,8 +19,8 @@ std::filesystem::path shader_path(std::string_view chapter, std::string_view gls
 std::filesystem::path asset_path(std::string_view name);
 
 // The most read_file reads from one file: 1 GiB. Far more than any asset here,
-// and below 2^31, so a length still fits the int that stb_image and tinygltf
-// take (chapters 09 and 10).
+// and below 2^31, so a length still fits the int that tinygltf takes
+// (chapter 10).
 inline constexpr uintmax_t max_file_bytes = uintmax_t(1) << 30;
 
 // The whole file; throws Error naming the file when it cannot be read. It

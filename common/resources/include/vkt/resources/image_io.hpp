@@ -1,9 +1,12 @@
 #pragma once
-// PNG files and picture comparison: screenshots (--screenshot), the golden
+// Image files and picture comparison: decoding PNG and JPEG (chapter 09's
+// textures, chapter 10's glTF images), screenshots (--screenshot), the golden
 // image tests, and the difference image a failing test leaves behind.
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace vkt {
@@ -13,7 +16,37 @@ struct RgbaImage {
     std::vector<uint8_t> pixels;  // width * height * 4 bytes, rows top to bottom, R G B A
 };
 
+// Decodes a PNG (with libpng) or JPEG (with libjpeg-turbo) into 8-bit RGBA;
+// `what` names the bytes in the message: "WHAT: cannot decode image: <reason>",
+// the reason being "not a PNG or JPEG file", the decoder's own words (a bad
+// checksum, a file that ends early, ...) or the size check below. Grey,
+// palette and RGB images arrive as RGBA, alpha 255 where the file has none;
+// 16-bit PNG channels keep their high byte. No gamma is applied: the bytes
+// are the file's. An image wider or taller than max_image_side is refused
+// from its header, before anything is decoded.
+RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what);
+
+// The same for a file: "cannot open FILE" (vkt::read_file) when it cannot be
+// read, then decode_image's messages, naming the file.
+RgbaImage load_image_file(const std::filesystem::path& path);
+
+// The largest side decode_image accepts: the most maxImageDimension2D that
+// desktop GPUs offer (lavapipe's too); 16384 x 16384 RGBA8 is 1 GiB.
+constexpr uint32_t max_image_side = 16384;
+
+// The size a PNG or JPEG says it has, from what comes before its pixel data
+// (PNG: the chunks up to the first IDAT's type; JPEG: the markers up to the
+// first scan). Nothing is decoded and no limit applied; the same errors as
+// decode_image otherwise.
+struct ImageSize {
+    uint32_t width = 0, height = 0;
+};
+ImageSize read_image_size(std::span<const uint8_t> bytes, const std::string& what);
+
+// Writes 8-bit RGBA as a PNG (libpng); throws Error naming the file.
 void write_png(const std::filesystem::path& path, const RgbaImage& image);
+// Screenshots and golden images: load_image_file, the one decoder for every
+// picture the project reads.
 RgbaImage read_png(const std::filesystem::path& path);
 
 // How far two pictures of the same size are apart, over the R, G and B channels

@@ -1,36 +1,17 @@
 #pragma once
-// Textures: the tidy form of chapter 09. Decode a PNG or JPEG (stb_image) into
-// RGBA bytes, upload it into a sampled image with a full mip chain (generated
-// on the GPU with vkCmdBlitImage where the format allows linear blits, else on
-// the CPU with a box filter), and make a sampler for it.
+// Textures: the tidy form of chapter 09. Decode a PNG or JPEG into RGBA bytes
+// (decode_image, in image_io.hpp), upload it into a sampled image with a full
+// mip chain (generated on the GPU with vkCmdBlitImage where the format allows
+// linear blits, else on the CPU with a box filter), and make a sampler for it.
 
 #include "vkt/core/memory.hpp"
 #include "vkt/resources/image_io.hpp"
 #include "vkt/resources/upload.hpp"
 
 #include <cstdint>
-#include <filesystem>
-#include <span>
-#include <string>
 #include <vector>
 
 namespace vkt {
-
-// Decodes a PNG or JPEG file into 8-bit RGBA (with stb_image; the other
-// formats stb reads are refused). Throws Error "cannot open FILE" when the
-// file cannot be read, and "FILE: cannot decode image: <reason>" when it is
-// not a PNG or JPEG, or stb cannot decode it.
-RgbaImage load_image_file(const std::filesystem::path& path);
-
-// The same for an image already in memory (a .glb buffer, a data: URI);
-// `what` names it in the message: "WHAT: cannot decode image: <reason>".
-// An image wider or taller than max_image_side is refused from its header,
-// before anything is decoded.
-RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what);
-
-// The largest side decode_image accepts: the most maxImageDimension2D that
-// desktop GPUs offer (lavapipe's too); 16384 x 16384 RGBA8 is 1 GiB.
-constexpr uint32_t max_image_side = 16384;
 
 // The number of levels in a full mip chain: floor(log2(max(w, h))) + 1,
 // down to 1x1 (1024x1024: 11, 640x480: 10, 1x1: 1). 0 for an empty image.
