@@ -45,8 +45,27 @@ fail() {
       echo "--- the chapter has exited ---"
     fi
   fi
+  describe_x
   [ -n "$pid" ] && kill "$pid" 2>/dev/null
   exit 1
+}
+
+# describe_x: what the X server and the window manager say, for a failure:
+# every window with a name, whether it is mapped and in which WM_STATE, and
+# whether the window manager still answers.
+describe_x() {
+  echo "--- the X server's named windows (id, map state, WM_STATE) ---"
+  local w
+  for w in $(xdotool search --name . 2>/dev/null | head -n 20); do
+    echo "  $w '$(xdotool getwindowname "$w" 2>/dev/null)'" \
+      "$(xwininfo -id "$w" 2>/dev/null | grep -o 'Map State: .*')" \
+      "$(xprop -id "$w" WM_STATE 2>/dev/null | grep -o 'window state: .*')"
+  done
+  if wmctrl -m >/dev/null 2>&1; then
+    echo "--- the window manager answers: $(wmctrl -m | head -n 1) ---"
+  else
+    echo "--- no window manager answers (wmctrl -m) ---"
+  fi
 }
 
 # start_wm: a real window manager (openbox) on the Xvfb display, so that
