@@ -137,14 +137,12 @@ public:
         vkCmdDispatch(cmd, 1, 1, 1);
     }
 
-    // The image filled with the background (ComputeRaster's fill), then one
-    // workgroup per tile, as many as bin.comp wrote into the dispatch.
-    void draw(VkCommandBuffer cmd, const ComputeRaster& raster, vkt::GpuTimer* timer = nullptr,
+    // The image filled with the background (ComputeRaster's clear: a fill,
+    // or none after the last frame's resolve), then one workgroup per tile,
+    // as many as bin.comp wrote into the dispatch.
+    void draw(VkCommandBuffer cmd, ComputeRaster& raster, vkt::GpuTimer* timer = nullptr,
               uint32_t slot = 0) const {
-        {
-            vkt::GpuScope fill(timer, cmd, slot, "fill");
-            raster.clear(cmd);
-        }
+        raster.clear(cmd, timer, slot);
         compute_barrier(cmd);
         vkt::buffer_barrier(cmd, tiles_.buffer, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
@@ -160,7 +158,7 @@ public:
     // --verify raster: the frame drawn by both compute rasterisers, one after
     // the other into the same pixel buffer, each copied out; then every word
     // compared. `transform` records the transform pass (and binds the set).
-    void verify(const ComputeRaster& simple, VkExtent2D extent, VkBuffer projected,
+    void verify(ComputeRaster& simple, VkExtent2D extent, VkBuffer projected,
                 const std::function<void(VkCommandBuffer)>& transform) const {
         const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
         vkt::Buffer a = vkt::create_host_buffer(gpu_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);

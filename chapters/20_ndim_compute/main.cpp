@@ -8,8 +8,9 @@
 // that buffer as its vertex buffer and draws every line of every object.
 // With --raster compute, a second compute pass draws the lines itself into a
 // storage buffer of one word per pixel (one invocation per line, atomicMax
-// per pixel), laid out as the colour target's pixels, and a copy moves it
-// onto the colour target (compute_raster.hpp). With --raster binned, the
+// per pixel), laid out as the colour target's pixels, and a copy, or on a
+// GPU a compute pass, moves it onto the colour target (compute_raster.hpp,
+// resolve_pass.hpp). With --raster binned, the
 // lines are sorted into screen tiles first and each workgroup draws one tile
 // in shared memory (binned_raster.hpp): the same picture, pixel for pixel.
 
@@ -259,14 +260,15 @@ public:
             }
             auto scope = frame.gpu_scope("raster");
             binned_->draw(cmd, *raster_, frame.timer, frame.slot);
-            auto copy = frame.gpu_scope("copy");
-            raster_->copy_to_target(frame);
+            auto finish = frame.gpu_scope(raster_->resolves(frame) ? "resolve" : "copy");
+            raster_->finish(frame);
             return;
         }
         if (raster_) {
             auto scope = frame.gpu_scope("raster");
             raster_->draw(cmd, projected);
-            raster_->copy_to_target(frame);
+            auto finish = frame.gpu_scope(raster_->resolves(frame) ? "resolve" : "copy");
+            raster_->finish(frame);
             return;
         }
         // [draw]
@@ -398,6 +400,11 @@ int main(int argc, char** argv) {
     // The build's SPIR-V gives compute shaders their workgroup size as
     // LocalSizeId, which needs maintenance4 (as in chapter 13).
     spec.requirements.features = {VKT_FEATURE_13(maintenance4)};
+    // The compute rasterisers store their pixels into the colour target
+    // where they can (resolve_pass.hpp): a storage view of it, written
+    // without a format qualifier.
+    spec.storage_target = true;
+    spec.requirements.optional_features = {VKT_FEATURE_10(shaderStorageImageWriteWithoutFormat)};
     // --scene, --dim, --projection and --motion: vkt/scene/ndim_options.hpp.
     spec.options = vkt::ndim::scene_options();
     spec.check_options = [](const vkt::Options& options) {
@@ -417,6 +424,12 @@ int main(int argc, char** argv) {
                      "pass tile by tile",
              .default_value = "graphics",
              .choices = {"graphics", "compute", "binned"}},
+            {.name = "--to-target",
+             .type = vkt::OptionType::choice,
+             .help = "how the compute rasterisers' pixels reach the colour target: a compute "
+                     "pass that stores them, a fill and a copy, or auto (store on a GPU)",
+             .default_value = "auto",
+             .choices = {"auto", "store", "copy"}},
             {.name = "--verify",
              .type = vkt::OptionType::choice,
              .help = "on the last frame, check the GPU's projected vertices against the CPU's "

@@ -52,6 +52,30 @@ foreach(mode headless offscreen)
   set_tests_properties(${test} PROPERTIES
     ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD};VKT_BLESS=0" LABELS chapter)
 endforeach()
+# --to-target store: the compute pass that stores the pixel buffer into the
+# colour target through the runner's _UNORM storage view of it
+# (resolve_pass.hpp), which a CPU device leaves out by default. The picture
+# must not change by a bit: headless (a B8G8R8A8_UNORM view, the bytes
+# swizzled) and offscreen (R8G8B8A8_UNORM), both rasterisers; the --benchmark
+# scopes say the resolve ran. The binned runs end with --verify raster, whose
+# frame then fills the buffer again (the resolve had left it clean) and
+# still gives the same picture.
+foreach(raster compute binned)
+  foreach(mode headless offscreen)
+    set(test chapter.20_ndim_compute.store_${raster}.${mode})
+    set(verify)
+    if(raster STREQUAL "binned")
+      set(verify --verify raster)
+    endif()
+    add_test(NAME ${test} COMMAND vkt_chapter_check --exe $<TARGET_FILE:20_ndim_compute>
+      --out ${VKT_TEST_OUTPUT} --name ${test}
+      --golden ${VKT_GOLDEN_DIR}/20_ndim_compute_compute_raster.png --exact
+      --expect "raster ${raster}" --expect "\"resolve\": \\{"
+      -- ${${mode}} --raster ${raster} --to-target store --benchmark ${verify})
+    set_tests_properties(${test} PROPERTIES
+      ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD};VKT_BLESS=0" LABELS chapter)
+  endforeach()
+endforeach()
 # --exact can fail: chapter 19's picture is within the tolerance of chapter
 # 18's golden image (RMSE 0.9) but not equal to it.
 add_test(NAME chapter.20_ndim_compute.exact_catches_a_difference COMMAND vkt_chapter_check
@@ -66,13 +90,17 @@ set_tests_properties(chapter.20_ndim_compute.exact_catches_a_difference PROPERTI
 # lines of a 4-cube at 1280x720), tiles cut by the image's edge (333x211),
 # orthographic projection. Synchronisation validation on, as everywhere.
 set(VKT_20_SAME "verify: binned against compute, [0-9x]+ pixels \\([0-9]+ lit by lines\\), 0 differ")
-foreach(case "many;6;333x211" "cube;12;640x480" "cube;4;1280x720" "many;8;640x360")
+# The first also stores each frame into the target (--to-target store) at
+# a size that cuts the resolve pass's 16 x 16 workgroups.
+foreach(case "many;6;333x211;store" "cube;12;640x480;auto" "cube;4;1280x720;auto"
+        "many;8;640x360;auto")
   list(GET case 0 scene)
   list(GET case 1 dim)
   list(GET case 2 size)
+  list(GET case 3 to_target)
   vkt_chapter_test(chapter.20_ndim_compute.verify_binned_${scene}${dim} 20_ndim_compute
     ARGS --headless --validation --frames 3 --size ${size} --scene ${scene} --dim ${dim}
-         --raster binned --verify raster
+         --raster binned --verify raster --to-target ${to_target}
     EXPECT "${VKT_20_SAME}")
 endforeach()
 vkt_chapter_test(chapter.20_ndim_compute.verify_binned_ortho 20_ndim_compute
@@ -166,4 +194,26 @@ if(XVFB_RUN)
             --validation --frames ${VKT_TEST_FRAMES} --size ${VKT_TEST_SIZE} --raster binned)
   set_tests_properties(chapter.20_ndim_compute.binned.window PROPERTIES
     ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD};VKT_BLESS=0" LABELS "chapter;window")
+  # Drawn straight into the swapchain image, a frame has no storage view:
+  # the copy, even with --to-target store. Through our own target
+  # (--copy-to-swapchain), the resolve stores into it.
+  foreach(variant "direct;copy" "copied;resolve")
+    list(GET variant 0 how)
+    list(GET variant 1 scope)
+    set(test chapter.20_ndim_compute.store_binned.window_${how})
+    set(copy)
+    if(how STREQUAL "copied")
+      set(copy --copy-to-swapchain)
+    endif()
+    add_test(NAME ${test}
+      COMMAND ${XVFB_RUN} -a -s "-screen 0 640x480x24"
+              $<TARGET_FILE:vkt_chapter_check> --exe $<TARGET_FILE:20_ndim_compute>
+              --out ${VKT_TEST_OUTPUT} --name ${test}
+              --golden ${VKT_GOLDEN_DIR}/20_ndim_compute_compute_raster.png --exact
+              --expect "20_ndim_compute: .*, window B8G8R8A8_" --expect "\"${scope}\": \\{" --
+              --validation --frames ${VKT_TEST_FRAMES} --size ${VKT_TEST_SIZE} --raster binned
+              --to-target store --benchmark ${copy})
+    set_tests_properties(${test} PROPERTIES
+      ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD};VKT_BLESS=0" LABELS "chapter;window")
+  endforeach()
 endif()

@@ -77,6 +77,8 @@ private:
     std::unique_ptr<Device> device_;
     std::unique_ptr<Swapchain> swapchain_;
     Image target_;
+    ImageView target_storage_;  // with ChapterSpec::storage_target: see create_target
+    VkFormat storage_format_ = VK_FORMAT_UNDEFINED;  // Context::storage_format
     std::vector<FrameSlot> slots_;
     GpuTimer gpu_timer_;
     std::unique_ptr<Renderer> renderer_;

@@ -121,10 +121,113 @@ void ChapterRun::open_presentation(const Options& options, const ChapterSpec& sp
     create_target(extent);
 }
 
+namespace {
+
+// [storage-view]
+// Our target with a second view, for a chapter that writes its pixels from a
+// compute shader (ChapterSpec::storage_target). Most devices cannot store to
+// an _SRGB format, but the bytes a compute pass writes are sRGB-encoded
+// already: it stores them through a view in the _UNORM format with the same
+// byte order, where that format can be a storage image (R8G8B8A8_UNORM can
+// on every device; B8G8R8A8_UNORM not on all). VK_FORMAT_UNDEFINED: no view.
+VkFormat storage_format_for(VkPhysicalDevice physical, VkFormat format, VkImageUsageFlags usage) {
+    const VkFormat unorm = format == VK_FORMAT_B8G8R8A8_SRGB   ? VK_FORMAT_B8G8R8A8_UNORM
+                           : format == VK_FORMAT_R8G8B8A8_SRGB ? VK_FORMAT_R8G8B8A8_UNORM
+                                                               : VK_FORMAT_UNDEFINED;
+    if (unorm == VK_FORMAT_UNDEFINED) return unorm;
+    VkFormatProperties features{};
+    vkGetPhysicalDeviceFormatProperties(physical, unorm, &features);
+    if (!(features.optimalTilingFeatures & VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT))
+        return VK_FORMAT_UNDEFINED;
+    VkImageFormatProperties limits{};
+    const VkResult result = vkGetPhysicalDeviceImageFormatProperties(
+        physical, format, VK_IMAGE_TYPE_2D, VK_IMAGE_TILING_OPTIMAL,
+        usage | VK_IMAGE_USAGE_STORAGE_BIT,
+        VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT | VK_IMAGE_CREATE_EXTENDED_USAGE_BIT, &limits);
+    return result == VK_SUCCESS ? unorm : VK_FORMAT_UNDEFINED;
+}
+
+// MUTABLE_FORMAT lets views have another format of the same texel size (the
+// format list names the two, so a driver may still compress the image);
+// EXTENDED_USAGE lets the image have a usage, STORAGE, that only one of its
+// views' formats supports. Each view then says which usages are its own.
+VkImageView create_view(VkDevice device, VkImage image, VkFormat format, VkImageUsageFlags usage) {
+    const VkImageViewUsageCreateInfo view_usage{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_USAGE_CREATE_INFO, .usage = usage};
+    const VkImageViewCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+        .pNext = &view_usage,
+        .image = image,
+        .viewType = VK_IMAGE_VIEW_TYPE_2D,
+        .format = format,
+        .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1},
+    };
+    VkImageView view;
+    VKT_CHECK(vkCreateImageView(device, &info, nullptr, &view));
+    return view;
+}
+// [/storage-view]
+
+Image create_storage_target(VkPhysicalDevice physical, VkDevice device, VkFormat format,
+                            VkFormat storage_format, VkExtent2D extent, VkImageUsageFlags usage,
+                            ImageView& storage_view) {
+    const VkFormat formats[] = {format, storage_format};
+    const VkImageFormatListCreateInfo format_list{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_FORMAT_LIST_CREATE_INFO,
+        .viewFormatCount = 2,
+        .pViewFormats = formats,
+    };
+    const VkImageCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
+        .pNext = &format_list,
+        .flags = VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT | VK_IMAGE_CREATE_EXTENDED_USAGE_BIT,
+        .imageType = VK_IMAGE_TYPE_2D,
+        .format = format,
+        .extent = {extent.width, extent.height, 1},
+        .mipLevels = 1,
+        .arrayLayers = 1,
+        .samples = VK_SAMPLE_COUNT_1_BIT,
+        .tiling = VK_IMAGE_TILING_OPTIMAL,
+        .usage = usage | VK_IMAGE_USAGE_STORAGE_BIT,
+        .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
+        .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED,
+    };
+    Image out;
+    out.format = format;
+    out.extent = extent;
+    VkImage image;
+    VKT_CHECK(vkCreateImage(device, &info, nullptr, &image));
+    out.image = ImageHandle(device, image);
+    VkMemoryRequirements requirements;
+    vkGetImageMemoryRequirements(device, image, &requirements);
+    const VkMemoryAllocateInfo allocate{
+        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
+        .allocationSize = requirements.size,
+        .memoryTypeIndex = find_memory_type(physical, requirements.memoryTypeBits,
+                                            VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
+    };
+    VkDeviceMemory memory;
+    VKT_CHECK(vkAllocateMemory(device, &allocate, nullptr, &memory));
+    out.memory = DeviceMemory(device, memory);
+    VKT_CHECK(vkBindImageMemory(device, image, memory, 0));
+    out.view = ImageView(device, create_view(device, image, format, usage));
+    storage_view =
+        ImageView(device, create_view(device, image, storage_format, VK_IMAGE_USAGE_STORAGE_BIT));
+    return out;
+}
+
+}  // namespace
+
 // [create-target]
 void ChapterRun::create_target(VkExtent2D extent) {
     VkFormat format =
         swapchain_ ? render_format_for(swapchain_->format()) : VK_FORMAT_R8G8B8A8_SRGB;
+    const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                    VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                    VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    if (spec_.storage_target)
+        storage_format_ = storage_format_for(device_->physical(), format, usage);
+    target_storage_.reset();  // before the image it views
     if (swapchain_ && swapchain_->drawable()) {
         // Frames are drawn straight into the swapchain's images: no image of
         // our own, only its size and format, which the chapter is told.
@@ -133,10 +236,12 @@ void ChapterRun::create_target(VkExtent2D extent) {
         target_.extent = extent;
         return;
     }
-    target_ = create_image_2d(device_->physical(), *device_, format, extent,
-                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
-                                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                              VK_IMAGE_ASPECT_COLOR_BIT);
+    if (storage_format_ != VK_FORMAT_UNDEFINED)
+        target_ = create_storage_target(device_->physical(), *device_, format, storage_format_,
+                                        extent, usage, target_storage_);
+    else
+        target_ = create_image_2d(device_->physical(), *device_, format, extent, usage,
+                                  VK_IMAGE_ASPECT_COLOR_BIT);
 }
 // [/create-target]
 

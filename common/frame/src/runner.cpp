@@ -83,6 +83,7 @@ void ChapterRun::run(const RendererFactory& factory) {
         .queue = device_->queue(),
         .queue_family = device_->queue_family(),
         .color_format = target_.format,
+        .storage_format = storage_format_,
         .extent = target_.extent,
         .frames_in_flight = frames_in_flight,
         .properties = device_->properties(),
@@ -195,8 +196,9 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
     VKT_CHECK(vkResetCommandPool(*device_, slot.pool, 0));
     record(slot, image_index,
            Frame{slot.cmd, direct ? swapchain_->images()[image_index] : target_.image.get(),
-                 direct ? swapchain_->view(image_index) : target_.view.get(), target_.extent, index,
-                 time, slot_index, input, gpu_timer_ ? &gpu_timer_ : nullptr});
+                 direct ? swapchain_->view(image_index) : target_.view.get(),
+                 direct ? VK_NULL_HANDLE : target_storage_.get(), target_.extent, index, time,
+                 slot_index, input, gpu_timer_ ? &gpu_timer_ : nullptr});
 
     // [submit]
     // Submit: wait for the acquired image before the first write to it (the

@@ -10,6 +10,9 @@
 // VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL with undefined contents. record()
 // draws into it and leaves it in COLOR_ATTACHMENT_OPTIMAL; the runner then
 // presents it, copies our own into the swapchain image, or keeps it offscreen.
+// Where the chapter asks for it (ChapterSpec::storage_target), a frame drawn
+// into our own target also carries a storage view of it
+// (Frame::target_storage), for a compute pass that writes the pixels itself.
 
 #include "vkt/core/device.hpp"
 #include "vkt/frame/args.hpp"
@@ -33,7 +36,11 @@ struct Context {
     VkQueue queue;
     uint32_t queue_family;
     VkFormat color_format;  // the colour target's format (always an _SRGB format)
-    VkExtent2D extent;      // the colour target's size at start (see Renderer::resize)
+    // The format of Frame::target_storage where a frame has one: the _UNORM
+    // format with color_format's byte order. VK_FORMAT_UNDEFINED: never (the
+    // chapter did not ask, or the device cannot store to that format).
+    VkFormat storage_format;
+    VkExtent2D extent;  // the colour target's size at start (see Renderer::resize)
     uint32_t frames_in_flight;
     const VkPhysicalDeviceProperties& properties;  // limits, name, ...
     const FeatureChain& features;  // what was enabled: ask it about optional features
@@ -47,6 +54,12 @@ struct Frame {
     VkCommandBuffer cmd;
     VkImage target;
     VkImageView target_view;
+    // A view of the same image in Context::storage_format, for compute
+    // shaders (imageStore writes the sRGB-encoded bytes as they are; the
+    // image must be in VK_IMAGE_LAYOUT_GENERAL then). VK_NULL_HANDLE where
+    // there is none: the frame goes straight into a swapchain image, or
+    // Context::storage_format is VK_FORMAT_UNDEFINED.
+    VkImageView target_storage;
     VkExtent2D extent;
     uint64_t index;  // 0, 1, 2, ...
     double time;    // seconds: index / 60 headless or with --frames (reproducible), else wall clock
@@ -75,6 +88,11 @@ struct ChapterSpec {
     DeviceRequirements requirements;
     std::vector<OptionSpec> options;  // the chapter's own flags (--model, --lights, ...)
     InputUse input = InputUse::none;  // what input the chapter wants in a window (chapter 11)
+    // The chapter may write its frames from a compute shader: give our own
+    // target a storage view (Frame::target_storage, chapter 20). Only where
+    // asked for, since a storage usage can cost a colour target its
+    // compression on some GPUs.
+    bool storage_target = false;
     // Checks between the chapter's own flags (two that contradict each other),
     // run right after parsing, before any Vulkan object exists: throw
     // UsageError, and the chapter exits with status 2 like any bad argument.
