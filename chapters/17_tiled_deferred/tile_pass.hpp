@@ -109,14 +109,7 @@ public:
                                      counts_.buffer, 0, VK_WHOLE_SIZE);
         vkt::write_buffer_descriptor(device, screen_set, 5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                      lists_.buffer, 0, VK_WHOLE_SIZE);
-        const VkDescriptorImageInfo image{VK_NULL_HANDLE, shaded_.view, VK_IMAGE_LAYOUT_GENERAL};
-        const VkWriteDescriptorSet write{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                         .dstSet = screen_set,
-                                         .dstBinding = 6,
-                                         .descriptorCount = 1,
-                                         .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-                                         .pImageInfo = &image};
-        vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+        vkt::write_storage_image_descriptor(device, screen_set, 6, shaded_.view);
     }
 
     VkImage shaded() const { return shaded_.image; }

@@ -37,7 +37,8 @@ public:
 
     // Its own set per frame in flight: 0 the pixel buffer, 1 the target's
     // storage view, both pointed at each frame (the runner may have made a
-    // new target since this slot's last frame). BGRA, a specialization
+    // new target since this slot's last frame, and a new view may even reuse
+    // the old one's handle, so comparing handles cannot tell). BGRA, a specialization
     // constant, says which way round the view's components lie.
     explicit ResolvePass(const vkt::Context& context) : device_(context.device) {
         const VkDescriptorSetLayoutBinding bindings[] = {
@@ -70,15 +71,7 @@ public:
         const VkDescriptorSet set = sets_[frame.slot];  // its last frame is finished
         vkt::write_buffer_descriptor(device_, set, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pixels, 0,
                                      VK_WHOLE_SIZE);
-        const VkDescriptorImageInfo image{VK_NULL_HANDLE, frame.target_storage,
-                                          VK_IMAGE_LAYOUT_GENERAL};
-        const VkWriteDescriptorSet write{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                         .dstSet = set,
-                                         .dstBinding = 1,
-                                         .descriptorCount = 1,
-                                         .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-                                         .pImageInfo = &image};
-        vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+        vkt::write_storage_image_descriptor(device_, set, 1, frame.target_storage);
 
         const VkCommandBuffer cmd = frame.cmd;
         vkt::buffer_barrier(

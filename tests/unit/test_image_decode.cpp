@@ -191,8 +191,8 @@ TEST_CASE("decode_image refuses a corrupt JPEG, naming it", "[image_decode]") {
     CHECK_THROWS_WITH(vkt::decode_image(file, "corrupt.jpg"),
                       "corrupt.jpg: cannot decode image: Unsupported JPEG data precision 7");
     // A file that is only the start-of-image marker.
-    CHECK_THROWS_WITH(vkt::decode_image(Bytes{0xff, 0xd8, 0xff}, "stub.jpg"),
-                      StartsWith("stub.jpg: cannot decode image: "));
+    CHECK_THROWS_WITH(vkt::decode_image(Bytes{0xff, 0xd8, 0xff}, "three-bytes.jpg"),
+                      StartsWith("three-bytes.jpg: cannot decode image: "));
 }
 
 TEST_CASE("decode_image refuses a truncated JPEG instead of greying its end", "[image_decode]") {

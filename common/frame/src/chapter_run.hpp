@@ -62,6 +62,9 @@ private:
     void create_target(VkExtent2D extent);
     void recreate_swapchain();
     void note_presented(VkExtent2D extent);
+    // Whether frames are drawn straight into the swapchain's images (chapter
+    // 03: an _SRGB swapchain) rather than into target_ and copied in.
+    bool direct() const { return swapchain_ && swapchain_->drawable(); }
 
     // runner.cpp: the frame loop.
     bool draw_frame(uint64_t index, double time, const Input& input);

@@ -228,7 +228,7 @@ void ChapterRun::create_target(VkExtent2D extent) {
     if (spec_.storage_target)
         storage_format_ = storage_format_for(device_->physical(), format, usage);
     target_storage_.reset();  // before the image it views
-    if (swapchain_ && swapchain_->drawable()) {
+    if (direct()) {
         // Frames are drawn straight into the swapchain's images: no image of
         // our own, only its size and format, which the chapter is told.
         target_ = Image{};

@@ -192,12 +192,12 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
 
     // The chapter draws into the acquired swapchain image itself where it can,
     // else into our own image, which record() then copies into the swapchain's.
-    const bool direct = swapchain_ && swapchain_->drawable();
+    const bool straight_in = direct();
     VKT_CHECK(vkResetCommandPool(*device_, slot.pool, 0));
     record(slot, image_index,
-           Frame{slot.cmd, direct ? swapchain_->images()[image_index] : target_.image.get(),
-                 direct ? swapchain_->view(image_index) : target_.view.get(),
-                 direct ? VK_NULL_HANDLE : target_storage_.get(), target_.extent, index, time,
+           Frame{slot.cmd, straight_in ? swapchain_->images()[image_index] : target_.image.get(),
+                 straight_in ? swapchain_->view(image_index) : target_.view.get(),
+                 straight_in ? VK_NULL_HANDLE : target_storage_.get(), target_.extent, index, time,
                  slot_index, input, gpu_timer_ ? &gpu_timer_ : nullptr});
 
     // [submit]
@@ -207,8 +207,8 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
     VkSemaphoreSubmitInfo wait{
         .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
         .semaphore = slot.image_acquired,
-        .stageMask =
-            direct ? VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT : VK_PIPELINE_STAGE_2_COPY_BIT,
+        .stageMask = straight_in ? VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT
+                                 : VK_PIPELINE_STAGE_2_COPY_BIT,
     };
     VkSemaphoreSubmitInfo signal{
         .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
@@ -265,7 +265,7 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
     };
     VKT_CHECK(vkBeginCommandBuffer(cmd, &begin));
     gpu_timer_.begin(cmd, frame.slot);
-    const bool direct = swapchain_ && swapchain_->drawable();
+    const bool straight_in = direct();
     const bool screenshot = !options_.screenshot.empty();
     // --screenshot reads back what each frame presents: the swapchain image
     // where the surface lets us read it, else our target.
@@ -276,11 +276,12 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
     // (UNDEFINED). Our own target: the previous frame's copy must have read it
     // before we overwrite it. A swapchain image: the acquire semaphore, which
     // the submit waits for at the colour-output stage, says when.
-    image_barrier(
-        cmd, frame.target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-        direct ? VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT : VK_PIPELINE_STAGE_2_COPY_BIT,
-        VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
+    image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_UNDEFINED,
+                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                  straight_in ? VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT
+                              : VK_PIPELINE_STAGE_2_COPY_BIT,
+                  VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
 
     renderer_->record(frame);  // the chapter draws
 
@@ -290,7 +291,7 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
     // Our target: the chapter's writes must be finished and visible before we
     // copy or read it (and before the next frame's barrier, which waits for
     // the COPY stage, overwrites it).
-    if (!direct)
+    if (!straight_in)
         image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                       VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
@@ -302,7 +303,7 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
         VkImageLayout layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
         VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
         VkAccessFlags2 access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
-        if (!direct) {
+        if (!straight_in) {
             // Copy our target in: after the acquire semaphore (waited for at the
             // COPY stage), make the image a copy destination, then copy.
             image_barrier(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED,

@@ -73,4 +73,18 @@ void write_image_descriptor(VkDevice device, VkDescriptorSet set, uint32_t bindi
     vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
 }
 
+void write_storage_image_descriptor(VkDevice device, VkDescriptorSet set, uint32_t binding,
+                                    VkImageView view) {
+    VkDescriptorImageInfo image_info{.imageView = view, .imageLayout = VK_IMAGE_LAYOUT_GENERAL};
+    VkWriteDescriptorSet write{
+        .sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+        .dstSet = set,
+        .dstBinding = binding,
+        .descriptorCount = 1,
+        .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+        .pImageInfo = &image_info,
+    };
+    vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+}
+
 }  // namespace vkt

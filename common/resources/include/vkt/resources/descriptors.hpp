@@ -38,4 +38,10 @@ void write_buffer_descriptor(VkDevice device, VkDescriptorSet set, uint32_t bind
 void write_image_descriptor(VkDevice device, VkDescriptorSet set, uint32_t binding,
                             VkImageView view, VkSampler sampler, VkImageLayout layout);
 
+// Points `binding` of `set` (a STORAGE_IMAGE) at view, which a compute shader
+// writes in the GENERAL layout (chapter 17's shaded image, chapter 20's
+// target).
+void write_storage_image_descriptor(VkDevice device, VkDescriptorSet set, uint32_t binding,
+                                    VkImageView view);
+
 }  // namespace vkt
