@@ -12,10 +12,9 @@
 # of ROUNDS rounds and the ratios within each round.
 #   benchmarks/03_window.sh [BIN_DIR] [ROUNDS] [FRAMES]
 set -euo pipefail
-here=$(cd "$(dirname "$0")" && pwd)
-if [ -z "${VKT_IN_XVFB:-}" ]; then
-  VKT_IN_XVFB=1 exec "$here/../tests/with_xvfb.sh" -s "-screen 0 1920x1080x24" "$0" "$@"
-fi
+# shellcheck source=benchmarks/in_window.sh
+. "$(dirname "$0")/in_window.sh"
+in_own_xvfb 1920x1080 "$0" "$@"
 bin=${1:-build/release/bin}
 rounds=${2:-5}
 frames=${3:-600}

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# shellcheck disable=SC2086  # $args and $ch are split into words on purpose
 # Chapters 18 and 19 side by side in one run (benchmarks/19_ndim_gpu.md):
 # the same scenes, frame counts and size, one after the other, then the
 # 250 12-cubes and one 12-cube at 64x48, where drawing the lines costs

@@ -18,10 +18,9 @@ mode=${4:-headless}
 case $mode in
   headless) where=(--headless) ;;
   window)
-    if [ -z "${VKT_IN_XVFB:-}" ]; then
-      here=$(cd "$(dirname "$0")" && pwd)
-      VKT_IN_XVFB=1 exec "$here/../tests/with_xvfb.sh" -s "-screen 0 ${size}x24" "$0" "$@"
-    fi
+    # shellcheck source=benchmarks/in_window.sh
+    . "$(dirname "$0")/in_window.sh"
+    in_own_xvfb "$size" "$0" "$@"
     where=() ;;
   *) echo "benchmarks/run.sh: the mode is headless or window, not '$mode'" >&2; exit 2 ;;
 esac
