@@ -6,6 +6,8 @@
 //   vkt_fuzz_seeds OUT_DIR   writes OUT_DIR/{gltf,image,args}/*
 #include <stb_image_write.h>
 
+#include "../unit/base64.hpp"  // the glTF unit tests' base64, for data: URIs
+
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -54,21 +56,6 @@ Bytes picture(int width, int height, int channels, bool jpeg) {
     else
         stbi_write_png_to_func(append_to, &out, width, height, channels, pixels.data(),
                                width * channels);
-    return out;
-}
-
-std::string base64(const Bytes& bytes) {
-    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (size_t i = 0; i < bytes.size(); i += 3) {
-        uint32_t group = uint32_t(bytes[i]) << 16;
-        if (i + 1 < bytes.size()) group |= uint32_t(bytes[i + 1]) << 8;
-        if (i + 2 < bytes.size()) group |= bytes[i + 2];
-        out += digits[(group >> 18) & 63];
-        out += digits[(group >> 12) & 63];
-        out += i + 1 < bytes.size() ? digits[(group >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? digits[group & 63] : '=';
-    }
     return out;
 }
 
@@ -156,8 +143,8 @@ void gltf_seeds(const fs::path& dir, const fs::path& assets) {
     // Everything inline: the buffer and the image as data: URIs.
     const Bytes plain = quad_buffer({});
     write(dir / "quad_data_uris.gltf",
-          quad_json("data:application/octet-stream;base64," + base64(plain), plain.size(), 0,
-                    "data:image/png;base64," + base64(png)));
+          quad_json("data:application/octet-stream;base64," + vkt_test::base64(plain), plain.size(),
+                    0, "data:image/png;base64," + vkt_test::base64(png)));
     // External files beside it: the repository's scene.bin and checker.png.
     // scene.bin's first 140 bytes are not this quad, so the loader refuses
     // it (an index past the vertices): a seed for the checks' paths.

@@ -1,6 +1,7 @@
 #pragma once
-// What the glTF unit tests (test_gltf.cpp, test_gltf_files.cpp) share to
-// write their fixtures: base64 for data: URIs.
+// What the glTF unit tests (test_gltf.cpp, test_gltf_files.cpp) and the
+// fuzzers' seed writer (tests/fuzz/make_seeds.cpp) share to write glTF files:
+// base64 for data: URIs.
 
 #include <cstdint>
 #include <string>
