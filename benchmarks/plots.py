@@ -8,7 +8,9 @@
 Each chart has labelled axes with their units, logarithmic axes where the data
 spans decades, a legend, the device and the date of the measurement in its
 title, and the frame budgets of 60 and 144 frames a second drawn and labelled
-where they fall inside it. Text stays text in the SVG (searchable, and checked
+(the axis widened to take in one that lies just outside the data; one far
+outside is named in the legend, with the side it lies on). The date is the
+one in the results file's name, else that of the last commit that changed it. Text stays text in the SVG (searchable, and checked
 by tests/book_browser.py through the ids x-axis-label, y-axis-label, legend
 and title). Needs Debian's python3-matplotlib; run it with /usr/bin/python3.
 
@@ -37,6 +39,7 @@ RESULTS = HERE / "results"
 
 # Frame budgets: a frame at 60 and at 144 frames a second.
 BUDGETS = [(1000.0 / 60.0, "60 fps"), (1000.0 / 144.0, "144 fps")]
+NEAR_BUDGET = 3.0
 # The book's palette (book/diagrams/svg.py): one colour per path or chapter.
 RED, ORANGE, BLUE, CYAN, GREEN, GREY = "#c0362c", "#d9822b", "#1f5fbf", "#1a9bb0", "#1e7b34", "#6e7781"
 
@@ -57,16 +60,18 @@ class Chart:
 # ----------------------------------------------------------------------------------------------
 
 def measured_on(path: Path) -> str:
-    """The date of a results file: from its name, else from the commit that added it."""
+    """The date of a results file: from its name, else from the last commit that changed it
+    (a file re-measured in place keeps its name; the commit that first added it would date
+    the chart by the oldest run)."""
     match = re.search(r"\d{4}-\d{2}-\d{2}", path.name)
     if match:
         return match.group(0)
     try:
-        run = subprocess.run(["git", "log", "--diff-filter=A", "--format=%cs", "--", path.name],
+        run = subprocess.run(["git", "log", "-1", "--format=%cs", "--", path.name],
                              cwd=path.parent, capture_output=True, text=True, timeout=30)
         dates = run.stdout.split()
         if run.returncode == 0 and dates:
-            return dates[-1]
+            return dates[0]
     except OSError:
         pass
     import datetime
@@ -228,6 +233,7 @@ def render(chart: Chart, target: Path) -> None:
     import matplotlib
     matplotlib.use("svg")
     import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
     from matplotlib.ticker import FuncFormatter
 
     matplotlib.rcParams.update({
@@ -250,18 +256,32 @@ def render(chart: Chart, target: Path) -> None:
         return f"{value:,.0f}" if value >= 1 else f"{value:g}"
     ax.yaxis.set_major_formatter(FuncFormatter(plain))
 
+    # A budget just outside the data (within a factor of NEAR_BUDGET on these log axes)
+    # widens the axis to show it; one further off is named in the legend instead, so
+    # that a chart never leaves a reader wondering where 144 fps went.
     low, high = ax.get_ylim()
+    off_axis = []
     for ms, name in BUDGETS:
-        if low < ms < high:
-            ax.axhline(ms, color=GREY, linestyle=(0, (5, 4)), linewidth=1.2, zorder=1)
-            ax.annotate(f"{name} budget: {ms:.1f} ms", xy=(1.0, ms), xycoords=("axes fraction", "data"),
-                        xytext=(-4, 3), textcoords="offset points", ha="right", va="bottom", fontsize=9.5,
-                        color="#3d444d", bbox={"boxstyle": "round,pad=0.2", "facecolor": "white",
-                                                "edgecolor": "none", "alpha": 0.85})
+        if low / NEAR_BUDGET < ms <= low:
+            low = ms / 1.25
+        elif high <= ms < high * NEAR_BUDGET:
+            high = ms * 1.25
+    for ms, name in BUDGETS:
+        if not low < ms < high:
+            where = "below" if ms <= low else "above"
+            off_axis.append(Line2D([], [], color=GREY, linestyle=(0, (5, 4)), linewidth=1.2,
+                                   label=f"{name} budget: {ms:.1f} ms, {where} the axis"))
+            continue
+        ax.axhline(ms, color=GREY, linestyle=(0, (5, 4)), linewidth=1.2, zorder=1)
+        ax.annotate(f"{name} budget: {ms:.1f} ms", xy=(1.0, ms), xycoords=("axes fraction", "data"),
+                    xytext=(-4, 3), textcoords="offset points", ha="right", va="bottom", fontsize=9.5,
+                    color="#3d444d", bbox={"boxstyle": "round,pad=0.2", "facecolor": "white",
+                                            "edgecolor": "none", "alpha": 0.85})
     ax.set_ylim(low, high)
     title = ax.set_title(f"{chart.options['title']}\n{device}; measured {date}", loc="left")
     # Below the axes, where it hides no data.
-    legend = ax.legend(handles=chart.options.get("handles"), loc="upper center", bbox_to_anchor=(0.5, -0.13),
+    handles = chart.options.get("handles") or ax.get_legend_handles_labels()[0]
+    legend = ax.legend(handles=handles + off_axis, loc="upper center", bbox_to_anchor=(0.5, -0.13),
                        ncol=2, fontsize=9.5, frameon=False)
     title.set_gid("title")
     ax.xaxis.label.set_gid("x-axis-label")
