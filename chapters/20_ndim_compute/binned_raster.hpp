@@ -1,18 +1,20 @@
 #pragma once
 // Chapter 20's third way to draw the lines (--raster binned): the compute
 // rasteriser of compute_raster.hpp, binned. Each object's box on the screen
-// (boxes.comp) is cut into tiles small enough for one workgroup's shared
-// memory (bin.comp: a count, a prefix sum, a scatter); one workgroup per tile
-// draws the object's lines into shared memory and merges the tile into the
-// image with one atomic per pixel reached (tiles.comp). It draws into
-// ComputeRaster's pixel buffer with its palette (bindings 5 and 6) and keeps
-// its own buffers in bindings 7 to 9.
+// (the transform pass's, transform_boxes.comp) is cut into tiles small enough for one workgroup's
+// shared memory (bin.comp: a count, a prefix sum, a scatter); one workgroup per tile draws the
+// object's lines into shared memory and merges the tile into the image with one atomic per pixel
+// reached (tiles.comp). It draws into ComputeRaster's pixel buffer with its palette (bindings 5 and
+// 6) and keeps its own buffers in bindings 7 to 9.
 
 #include "compute_raster.hpp"
+#include "vkt/core/device.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <stdexcept>
+#include <string>
 
 namespace ch20 {
 
@@ -36,6 +38,28 @@ inline void compute_barrier(VkCommandBuffer cmd) {
 
 class BinnedRaster {
 public:
+    // [subgroups]
+    // The transform pass merges the boxes with subgroupMin and subgroupMax
+    // (transform_boxes.comp). Vulkan 1.1 promises subgroups in compute
+    // shaders, but of their operations only the basic ones; min and max are
+    // "arithmetic", which nearly every device has, lavapipe included.
+    static void check_device(const vkt::Context& context) {
+        VkPhysicalDeviceSubgroupProperties subgroups{
+            .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+        VkPhysicalDeviceProperties2 properties{
+            .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, .pNext = &subgroups};
+        vkGetPhysicalDeviceProperties2(context.physical, &properties);
+        const char* flag = "VK_SUBGROUP_FEATURE_ARITHMETIC_BIT";
+        if (!(subgroups.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) ||
+            !(subgroups.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT) ||
+            vkt::hidden_by_tests(flag))
+            throw std::runtime_error(std::string("--raster binned needs subgroup arithmetic in "
+                                                 "compute shaders (") +
+                                     flag + "), which " + properties.properties.deviceName +
+                                     " lacks: use --raster compute");
+    }
+    // [/subgroups]
+
     // [binned-setup]
     // Built once: each object's first line and line count (line_counts:
     // each object's, in the order of the index buffer), and its box, which
@@ -47,12 +71,10 @@ public:
     // switches between groups of lanes at a barrier (64 took up to 1.5x as
     // long).
     BinnedRaster(const vkt::Context& context, VkPipelineLayout layout,
-                 std::span<const VkDescriptorSet> sets, std::span<const uint32_t> line_counts,
-                 uint32_t max_vertices)
+                 std::span<const VkDescriptorSet> sets, std::span<const uint32_t> line_counts)
         : gpu_(context.gpu()),
           device_(context.device),
-          object_count_(uint32_t(line_counts.size())),
-          max_vertices_(max_vertices) {
+          object_count_(uint32_t(line_counts.size())) {
         std::vector<uint32_t> lines;  // (first, count) per object
         uint32_t first = 0;
         for (uint32_t count : line_counts) {
@@ -84,7 +106,6 @@ public:
             vkt::ShaderModule shader = vkt::load_shader(device_, context.chapter, name);
             return vkt::create_compute_pipeline(device_, shader, layout, specialization);
         };
-        boxes_pass_ = load("boxes.comp", nullptr);
         bin_ = load("bin.comp", &piece);
         tiles_pass_ = load("tiles.comp", &piece_and_group);
         resize(context.extent, sets);
@@ -108,11 +129,9 @@ public:
     // [/work-list]
 
     // [binned-record]
-    // The boxes, from zeros (after the previous frame's passes have read
-    // them), then the work list (after the previous frame's indirect
-    // dispatch has read it). The frame's set and push constants are bound
-    // already (by the transform pass).
-    void bin(VkCommandBuffer cmd, vkt::GpuTimer* timer = nullptr, uint32_t slot = 0) const {
+    // Before the transform pass: the boxes from zeros (after the previous
+    // frame's passes have read them), for its atomicMax to grow.
+    void clear_boxes(VkCommandBuffer cmd) const {
         vkt::buffer_barrier(cmd, boxes_.buffer, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
                             VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
@@ -121,14 +140,13 @@ public:
             cmd, boxes_.buffer, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
             VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-        compute_barrier(cmd);  // the transform pass's vertices
-        {
-            vkt::GpuScope scope(timer, cmd, slot, "boxes");
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, boxes_pass_);
-            vkCmdDispatch(cmd, uint32_t(vkt::dispatch_count(max_vertices_, group)), object_count_,
-                          1);
-        }
-        compute_barrier(cmd);
+    }
+
+    // After it: the work list from the boxes (once the previous frame's
+    // indirect dispatch has read the list). The frame's set and push
+    // constants are bound already (by the transform pass).
+    void bin(VkCommandBuffer cmd) const {
+        compute_barrier(cmd);  // the transform pass's boxes
         vkt::buffer_barrier(cmd, tiles_.buffer, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
                             VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT,
                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -174,6 +192,7 @@ public:
                                 VK_ACCESS_2_HOST_READ_BIT);
         };
         vkt::one_time_submit(gpu_, [&](VkCommandBuffer cmd) {
+            clear_boxes(cmd);
             transform(cmd);
             simple.draw(cmd, projected);
             copy_out(cmd, a.buffer);
@@ -202,10 +221,10 @@ public:
 private:
     vkt::Gpu gpu_;
     VkDevice device_;
-    uint32_t object_count_ = 0, max_vertices_ = 0;
+    uint32_t object_count_ = 0;
     uint32_t piece_ = 64;  // the shaders' PIECE: a tile's largest side
     vkt::Buffer object_lines_, boxes_, tiles_;
-    vkt::Pipeline boxes_pass_, bin_, tiles_pass_;
+    vkt::Pipeline bin_, tiles_pass_;
 };
 
 }  // namespace ch20

@@ -44,7 +44,7 @@ namespace {
 
 namespace nd = vkt::ndim;
 
-using ch20::group, ch20::ObjectInfo, ch20::Projected, ch20::Push;
+using ch20::ObjectInfo, ch20::Projected, ch20::Push;
 
 class NdimCompute : public vkt::Renderer {
 public:
@@ -125,9 +125,8 @@ public:
 
         // [descriptors]
         // One set layout for all the passes: 0 coordinates, 1 object table,
-        // 2 poses, 3 projected vertices, 4 line ends, 5 the rasteriser's
-        // pixels, 6 its palette (5 and 6 written for the compute rasterisers
-        // only), 7 to 9 the binned rasteriser's own (binned_raster.hpp).
+        // 2 poses, 3 projected vertices, 4 line ends, 5 and 6 the compute
+        // rasterisers' pixels and palette, 7 to 9 the binned one's own.
         constexpr uint32_t binding_count = 10;
         VkDescriptorSetLayoutBinding bindings[binding_count];
         for (uint32_t b = 0; b < binding_count; ++b)
@@ -156,27 +155,31 @@ public:
 
         // [transform-pipeline]
         // n as a specialization constant: the shader's point is float x[N].
-        // A GPU hides memory latency with many invocations in flight, one
-        // per vertex. A CPU device such as lavapipe runs them 8 or 16 at a
-        // time in the SIMD lanes of a core and pays for each one's set-up,
-        // here reading its object's matrix (n^2 + n numbers) out of shared
-        // memory; there, fewer invocations that each keep their own copy of
-        // the matrix and transform 16 vertices were 3x faster for 250
-        // 12-cubes. Constant 1 of transform.comp, OWN_COPY, says which.
+        // A GPU runs one invocation per vertex, 128 to a workgroup (64 and 256
+        // were slower on the H100); lavapipe, with 8 or 16 SIMD lanes a core,
+        // was 3x faster with fewer invocations that each keep their own copy
+        // of the matrix and transform 16 vertices (transform.glsl's OWN_COPY).
+        // --raster binned adds each object's box (transform_boxes.comp).
         const bool cpu = context.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+        const bool binned = options.text("--raster") == "binned";
+        if (binned) ch20::BinnedRaster::check_device(context);
         vertices_per_lane_ = cpu ? 16u : 1u;
+        transform_group_ = cpu ? 64u : 128u;
         const struct {
             int n;
             VkBool32 own_copy;
-        } constants{n_, cpu ? VK_TRUE : VK_FALSE};
+            uint32_t group;
+        } constants{n_, VkBool32(cpu), transform_group_};
         const VkSpecializationMapEntry entries[] = {
             {.constantID = 0, .offset = 0, .size = sizeof(int)},
-            {.constantID = 1, .offset = sizeof(int), .size = sizeof(VkBool32)}};
-        const VkSpecializationInfo specialization{.mapEntryCount = 2,
+            {.constantID = 1, .offset = sizeof(int), .size = sizeof(VkBool32)},
+            {.constantID = 2, .offset = 2 * sizeof(int), .size = sizeof(uint32_t)}};
+        const VkSpecializationInfo specialization{.mapEntryCount = 3,
                                                   .pMapEntries = entries,
                                                   .dataSize = sizeof(constants),
                                                   .pData = &constants};
-        vkt::ShaderModule transform = vkt::load_shader(device_, context.chapter, "transform.comp");
+        vkt::ShaderModule transform = vkt::load_shader(
+            device_, context.chapter, binned ? "transform_boxes.comp" : "transform.comp");
         transform_ = vkt::create_compute_pipeline(device_, transform, layout_, &specialization);
         // [/transform-pipeline]
 
@@ -208,8 +211,7 @@ public:
         // --raster binned: the same, tile by tile (binned_raster.hpp).
         if (options.text("--raster") != "graphics")
             raster_.emplace(context, layout_, sets_, line_total_);
-        if (options.text("--raster") == "binned")
-            binned_.emplace(context, layout_, sets_, line_counts, max_vertices_);
+        if (binned) binned_.emplace(context, layout_, sets_, line_counts);
     }
 
     // The compute rasterisers' buffers follow the window's size.
@@ -249,6 +251,7 @@ public:
 
         const VkCommandBuffer cmd = frame.cmd;
         const VkBuffer projected = projected_[frame.slot].buffer;
+        if (binned_) binned_->clear_boxes(cmd);
         {
             auto scope = frame.gpu_scope("transform");
             record_transform(cmd, frame.slot, push);
@@ -256,7 +259,7 @@ public:
         if (binned_) {
             {
                 auto scope = frame.gpu_scope("bin");
-                binned_->bin(cmd, frame.timer, frame.slot);
+                binned_->bin(cmd);
             }
             auto scope = frame.gpu_scope("raster");
             binned_->draw(cmd, *raster_, frame.timer, frame.slot);
@@ -312,14 +315,15 @@ private:
     // [/poses]
 
     // [dispatch]
-    // x runs over the largest mesh's vertices in workgroups of 64, one vertex
-    // per invocation (vertices_per_lane_ on a CPU device), y over the objects.
+    // x runs over the largest mesh's vertices in workgroups of 128 (64 on a
+    // CPU device, each invocation taking vertices_per_lane_), y the objects.
     void record_transform(VkCommandBuffer cmd, uint32_t slot, const Push& push) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, transform_);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &sets_[slot], 0,
                                 nullptr);
         vkCmdPushConstants(cmd, layout_, push_stages, 0, sizeof(Push), &push);
-        vkCmdDispatch(cmd, uint32_t(vkt::dispatch_count(max_vertices_, group * vertices_per_lane_)),
+        const uint32_t per_group = transform_group_ * vertices_per_lane_;
+        vkCmdDispatch(cmd, uint32_t(vkt::dispatch_count(max_vertices_, per_group)),
                       uint32_t(scene_.objects.size()), 1);
     }
     // [/dispatch]
@@ -378,7 +382,8 @@ private:
     double last_time_ = 0.0;
     float spin_time_ = 0.0f;
     uint32_t vertex_total_ = 0, line_total_ = 0, max_vertices_ = 0;
-    uint32_t vertices_per_lane_ = 1;  // transform.comp: vertices per invocation
+    uint32_t vertices_per_lane_ = 1;  // transform.glsl: vertices per invocation
+    uint32_t transform_group_ = 64;   // transform.glsl's workgroup size
     size_t pose_floats_ = 0;
     vkt::Buffer coords_, objects_, ends_;
     std::vector<vkt::Buffer> poses_, projected_;  // [slot]

@@ -34,7 +34,7 @@ struct ObjectInfo {
 };
 static_assert(sizeof(Projected) == 16 && sizeof(ObjectInfo) == 16 && sizeof(Push) == 32);
 
-constexpr uint32_t group = 64;  // local_size_x of both compute shaders
+constexpr uint32_t group = 64;  // local_size_x of raster.comp
 
 // [palette]
 // The compute rasteriser's colours: word `level` (1..255; raster.comp stores

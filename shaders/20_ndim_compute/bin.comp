@@ -1,9 +1,9 @@
 #version 450
-// Chapter 20, --raster binned, pass 2 of 3: the work list. Each object's box
-// (boxes.comp) is cut into pieces of at most PIECE x PIECE pixels, each small
-// enough for one workgroup's shared memory: count each object's pieces, turn
-// the counts into where each object's entries start (an exclusive prefix
-// sum), and write one entry per piece. A few hundred objects: one workgroup.
+// Chapter 20, --raster binned, after the transform pass: the work list. Each
+// object's box (transform_boxes.comp) is cut into pieces of at most PIECE x
+// PIECE pixels, each small enough for one workgroup's shared memory: count
+// each object's pieces, turn the counts into where each object's entries
+// start (a prefix sum), and write one entry per piece. A few hundred objects: one workgroup.
 #extension GL_GOOGLE_include_directive : require
 #include "ndim.glsl"
 
@@ -24,28 +24,31 @@ void main() {
     const uint lid = gl_LocalInvocationID.x, objects = push.object_count;
     // [count-scan-scatter]
     // Each invocation takes a run of consecutive objects and counts their
-    // pieces; the first invocation turns the 256 counts into where each run
-    // starts; each invocation then writes its run's entries from there.
+    // pieces; the counts become where each run starts (a prefix sum); each
+    // invocation then writes its run's entries from there.
     const uint per = (objects + 255u) / 256u;
     const uint begin = min(lid * per, objects), end = min(begin + per, objects);
     uint count = 0u;
     for (uint o = begin; o < end; ++o) count += pieces(o);
+    // The counts' running sums, in eight steps of a scan: after the step
+    // that adds the count `step` places back, each entry holds the sum of
+    // the 2 * step counts up to and including its own.
     partial[lid] = count;
     barrier();
-    if (lid == 0u) {
-        uint run = 0u;
-        for (uint k = 0u; k < 256u; ++k) {
-            const uint c = partial[k];
-            partial[k] = run;
-            run += c;
-        }
-        // The tile pass's workgroups, one per entry, in rows of 65,535.
-        tile_count = run;
-        const uint rows = (run + 65534u) / 65535u;
-        tile_groups = uvec3(rows > 1u ? 65535u : run, rows, 1u);
+    for (uint step = 1u; step < 256u; step *= 2u) {
+        const uint before = lid >= step ? partial[lid - step] : 0u;
+        barrier();
+        partial[lid] += before;
+        barrier();
     }
-    barrier();
-    uint at = partial[lid];
+    if (lid == 0u) {
+        // The tile pass's workgroups, one per entry, in rows of 65,535.
+        const uint total = partial[255];
+        tile_count = total;
+        const uint rows = (total + 65534u) / 65535u;
+        tile_groups = uvec3(rows > 1u ? 65535u : total, rows, 1u);
+    }
+    uint at = partial[lid] - count;  // where this run's entries start
     for (uint o = begin; o < end; ++o) {
         const uint n = pieces(o);
         for (uint p = 0u; p < n; ++p) tiles[at++] = uvec2(o, p);

@@ -1,9 +1,9 @@
-// Chapter 20, --raster binned: what its three passes (boxes.comp, bin.comp,
+// Chapter 20, --raster binned: what its passes (transform_boxes.comp, bin.comp,
 // tiles.comp) share. Needs ndim.glsl.
 
 // [bins]
 // Per object: its lines in the line list (built once), and its box on the
-// screen in pixels (boxes.comp, each frame), stored as (0xffff - lo.x,
+// screen in pixels (the transform pass, each frame), stored as (0xffff - lo.x,
 // 0xffff - lo.y, hi.x, hi.y) so that every part grows with the box and
 // atomicMax merges boxes, from all zeros: an empty box.
 layout(std430, set = 0, binding = 7) readonly buffer ObjectLines { uvec2 object_lines[]; };
@@ -24,6 +24,23 @@ bool object_box(uint o, out ivec2 lo, out ivec2 hi) {
     hi = ivec2(box.zw);
     return all(lessThanEqual(lo, hi));
 }
+
+// [vertex-box]
+// A line lies between its ends, so the box of an object's visible vertices
+// holds every line of it that is drawn (lines with an end behind the eye are
+// not). The walk (walk.glsl) picks pixels within one pixel of the line, give
+// or take rounding: a pixel of slack each way, more for a vertex far off the
+// screen, whose coordinates carry less precision. An empty box is lo = size,
+// hi = -1: min and max leave it.
+void vertex_box(Projected p, inout ivec2 lo, inout ivec2 hi) {
+    if ((p.colour >> 24) == 0u) return;
+    const ivec2 size = ivec2(push.size);
+    const vec2 at = (p.xy * 0.5 + 0.5) * vec2(size);
+    const float slack = 1.0 + max(abs(at.x), abs(at.y)) / 1048576.0;
+    lo = min(lo, max(ivec2(clamp(floor(at - slack), -1.0, 65535.0)), 0));
+    hi = max(hi, min(ivec2(clamp(floor(at + slack), -1.0, 65535.0)), size - 1));
+}
+// [/vertex-box]
 
 // How many pieces of PIECE x PIECE pixels cover the box, across and down.
 uvec2 piece_grid(ivec2 lo, ivec2 hi, uint piece) { return (uvec2(hi - lo) + piece) / piece; }

@@ -1,5 +1,5 @@
 #version 450
-// Chapter 20, --raster binned, pass 3 of 3: one workgroup per entry of the
+// Chapter 20, --raster binned, the last pass: one workgroup per entry of the
 // work list (bin.comp), a tile: a piece of one object's box. It walks every
 // line of the object, the steps that fall in the tile only, into the tile in
 // shared memory, then merges the tile into the pixel buffer: one atomicMax

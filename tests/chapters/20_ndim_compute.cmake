@@ -171,6 +171,12 @@ vkt_chapter_test(bad_input.20_ndim_compute.dim_default_scene 20_ndim_compute EXI
 vkt_chapter_test(bad_input.20_ndim_compute.pixel_buffer_range 20_ndim_compute EXIT 1
   ARGS --offscreen --frames 1 --size 8192x4097 --raster compute
   EXPECT "8192x4097 needs a pixel buffer of 134250496 bytes, more than this device's maxStorageBufferRange \\(134217728\\)")
+# A device without subgroup arithmetic in compute shaders, which the binned
+# rasteriser's transform pass needs (lavapipe has it; the test hides it).
+vkt_chapter_test(bad_input.20_ndim_compute.no_subgroup_arithmetic 20_ndim_compute EXIT 1
+  ARGS --headless --frames 1 --raster binned
+  ENV VKT_HIDE_FEATURES=VK_SUBGROUP_FEATURE_ARITHMETIC_BIT
+  EXPECT "--raster binned needs subgroup arithmetic in compute shaders \\(VK_SUBGROUP_FEATURE_ARITHMETIC_BIT\\), which .* lacks: use --raster compute")
 
 # The compute rasterisers in a real window (B8G8R8A8 there too; the golden
 # image is the compute rasteriser's own, and the binned one must match it

@@ -87,11 +87,7 @@ int device_type_score(VkPhysicalDeviceType type) {
     }
 }
 
-// VKT_HIDE_FEATURES=name,name,...: the tests' way to play a device that lacks
-// a feature or an extension (lavapipe has nearly all of them), so the message a
-// reader with such a device would see can be checked. Names as in the Vulkan
-// structs and extension strings: bufferDeviceAddress, VK_KHR_swapchain.
-static bool hidden_by_tests(std::string_view name) {
+bool hidden_by_tests(std::string_view name) {
     const char* list = std::getenv("VKT_HIDE_FEATURES");
     if (!list) return false;
     std::string_view rest(list);

@@ -85,6 +85,13 @@ struct DeviceCandidate {
     std::string unsuitable;            // empty when the device can run the chapter
 };
 
+// VKT_HIDE_FEATURES=name,name,...: the tests' way to play a device that lacks
+// a feature or an extension (lavapipe has nearly all of them), so the message a
+// reader with such a device would see can be checked. Names as in the Vulkan
+// structs and extension strings: bufferDeviceAddress, VK_KHR_swapchain (and,
+// for a chapter that checks a property itself, the flag's name).
+bool hidden_by_tests(std::string_view name);
+
 // Discrete GPUs first, then integrated, virtual, and software rasterisers last.
 int device_type_score(VkPhysicalDeviceType type);
 // The score chapter 02 prints: the type first, then the largest image size.
