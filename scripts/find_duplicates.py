@@ -79,6 +79,9 @@ def allowed_pairs(root):
     """File pairs from CONTRIBUTING.md's table: | `a` | `b` | reason |."""
     text = (root / "CONTRIBUTING.md").read_text() if (root / "CONTRIBUTING.md").exists() else ""
     section = text.split("### Repeated on purpose", 1)[-1] if "### Repeated on purpose" in text else ""
+    # Only that section's own table: a later heading (such as "Alike in shape",
+    # pairs this script does not see) allows nothing.
+    section = re.split(r"^#", section, maxsplit=1, flags=re.M)[0]
     pairs = set()
     for a, b in re.findall(r"^\|\s*`([^`]+)`\s*\|\s*`([^`]+)`\s*\|", section, re.M):
         pairs.add(frozenset((a, b)))
