@@ -2,11 +2,16 @@
 #
 # vkt_missing_dependency(<what> APT <debian 12 and ubuntu 24.04 names>
 #                        [DEBIAN <Debian 12 only>] [UBUNTU <Ubuntu 24.04 only>]
-#                        FEDORA <names> ARCH <names> ELSEWHERE <how>)
+#                        FEDORA <names> ARCH <names> ELSEWHERE <how>
+#                        [OTHERWISE <a way round it, e.g. an option to turn off>])
 # stops the configure step with the package to install on every system that
 # scripts/install-deps.sh knows (Fedora and Arch names as we believe them).
 function(vkt_missing_dependency what)
-  cmake_parse_arguments(ARG "" "APT;DEBIAN;UBUNTU;FEDORA;ARCH;ELSEWHERE" "" ${ARGN})
+  cmake_parse_arguments(ARG "" "APT;DEBIAN;UBUNTU;FEDORA;ARCH;ELSEWHERE;OTHERWISE" "" ${ARGN})
+  set(otherwise "")
+  if(ARG_OTHERWISE)
+    set(otherwise "Or ${ARG_OTHERWISE}.\n")
+  endif()
   if(NOT ARG_DEBIAN)
     set(ARG_DEBIAN "${ARG_APT}")
   endif()
@@ -20,6 +25,7 @@ function(vkt_missing_dependency what)
     "  Fedora:         dnf install ${ARG_FEDORA}\n"
     "  Arch:           pacman -S ${ARG_ARCH}\n"
     "  Windows, macOS: ${ARG_ELSEWHERE}\n"
+    "${otherwise}"
     "Installed somewhere CMake does not look? Add its prefix to CMAKE_PREFIX_PATH.")
 endfunction()
 

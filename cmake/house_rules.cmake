@@ -10,6 +10,9 @@
 #    below it (domains and core at the bottom, then resources, frame, scene).
 #    The include paths already enforce this for the compiler; this check says
 #    which file broke it, and why, before the compiler does.
+# 3. Every header of common/ begins (right after #pragma once) with a comment
+#    that names the chapter that taught it ("chapter 03", "Chapter 16's",
+#    "chapters 18-20"), so a reader can go from a helper to its lesson.
 
 if(CMAKE_SCRIPT_MODE_FILE)
   cmake_policy(VERSION 3.25)  # -P mode starts with old policies
@@ -60,4 +63,25 @@ if(vkt_house_broken)
   list(JOIN vkt_house_broken "\n" text)
   message(FATAL_ERROR "An include runs against the layers of common/:\n${text}\n"
           "A layer may include only the layers below it (see common/CMakeLists.txt).")
+endif()
+
+# A header's first comment: the // lines right after #pragma once, joined into
+# one line so that "chapter" and its number may stand on two lines.
+file(GLOB_RECURSE vkt_house_headers ${ROOT}/common/*/include/*.hpp)
+foreach(file IN LISTS vkt_house_headers)
+  file(READ ${file} text LIMIT 4096)
+  set(comment "")
+  if(text MATCHES "^#pragma once\n((//[^\n]*\n)+)")
+    string(REGEX REPLACE "\n//" " " comment "${CMAKE_MATCH_1}")
+  endif()
+  if(NOT comment MATCHES "[Cc]hapters? +[0-9][0-9]")
+    file(RELATIVE_PATH rel ${ROOT} ${file})
+    list(APPEND vkt_house_broken "  ${rel}")
+  endif()
+endforeach()
+if(vkt_house_broken)
+  list(JOIN vkt_house_broken "\n" text)
+  message(FATAL_ERROR "A header of common/ does not name the chapter that taught it:\n${text}\n"
+          "Begin it, right after #pragma once, with a comment such as "
+          "\"// ..., taught in chapter 07.\" (see CONTRIBUTING.md).")
 endif()

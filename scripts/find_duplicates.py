@@ -10,6 +10,10 @@ the exit status is 1. The book's CTest label `house` runs it.
 
   scripts/find_duplicates.py            check the tree (exit 1 on a new block)
   scripts/find_duplicates.py --all      list every block, allowed ones too
+  scripts/find_duplicates.py --root D   check the tree D instead (a test fixture)
+
+A block that stands in three places is three pairs, each checked on its own:
+listing two of its files does not allow a third copy.
 """
 import argparse
 import pathlib
@@ -30,7 +34,11 @@ def code_lines(path):
 
 
 def blocks(files, min_lines):
-    """Maximal runs of >= min_lines normalised lines that occur in two places."""
+    """Maximal runs of >= min_lines normalised lines that occur in two places.
+
+    Every pair of places is looked at, not only the first two: a block written
+    three times is three pairs, so a third copy of an allowed pair is reported
+    (unless its own pair is listed too)."""
     index = {}
     lines = {f: code_lines(f) for f in files}
     for f, ls in lines.items():
@@ -39,28 +47,41 @@ def blocks(files, min_lines):
             index.setdefault(key, []).append((f, i))
     found = {}
     for places in index.values():
-        if len(places) < 2:
-            continue
-        (fa, ia), (fb, ib) = places[0], places[1]
-        # Grow to the start of the run so that each run is reported once.
-        while ia > 0 and ib > 0 and lines[fa][ia - 1][1] == lines[fb][ib - 1][1] and (fa, ia - 1) != (fb, ib):
-            ia, ib = ia - 1, ib - 1
-        n = 0
-        while (ia + n < len(lines[fa]) and ib + n < len(lines[fb])
-               and lines[fa][ia + n][1] == lines[fb][ib + n][1] and (fa != fb or ia + n < ib)):
-            n += 1
-        if n < min_lines:
-            continue
-        key = (fa, lines[fa][ia][0], fb, lines[fb][ib][0])
-        found[key] = (fa, lines[fa][ia][0], lines[fa][ia + n - 1][0],
-                      fb, lines[fb][ib][0], lines[fb][ib + n - 1][0], n)
-    return sorted(found.values(), key=lambda b: (str(b[0]), b[1]))
+        for p, (fa, ia) in enumerate(places):
+            for fb, ib in places[p + 1:]:
+                run = grow(lines, fa, ia, fb, ib)
+                if run is None or run[4] < min_lines:
+                    continue
+                ia0, ib0, n = run[1], run[3], run[4]
+                key = (fa, lines[fa][ia0][0], fb, lines[fb][ib0][0])
+                found[key] = (fa, lines[fa][ia0][0], lines[fa][ia0 + n - 1][0],
+                              fb, lines[fb][ib0][0], lines[fb][ib0 + n - 1][0], n)
+    return sorted(found.values(), key=lambda b: (str(b[0]), b[1], str(b[3]), b[4]))
 
 
-def allowed_pairs():
+def grow(lines, fa, ia, fb, ib):
+    """The whole run through places (fa, ia) and (fb, ib): (fa, start, fb, start, length).
+
+    Grown back to the run's start, so that each run is reported once; within
+    one file the two copies may not overlap."""
+    if (fa, ia) == (fb, ib):
+        return None
+    while ia > 0 and ib > 0 and lines[fa][ia - 1][1] == lines[fb][ib - 1][1] and (fa, ia - 1) != (fb, ib):
+        ia, ib = ia - 1, ib - 1
+    n = 0
+    while (ia + n < len(lines[fa]) and ib + n < len(lines[fb])
+           and lines[fa][ia + n][1] == lines[fb][ib + n][1] and (fa != fb or ia + n < ib)):
+        n += 1
+    return fa, ia, fb, ib, n
+
+
+def allowed_pairs(root):
     """File pairs from CONTRIBUTING.md's table: | `a` | `b` | reason |."""
-    text = (ROOT / "CONTRIBUTING.md").read_text() if (ROOT / "CONTRIBUTING.md").exists() else ""
+    text = (root / "CONTRIBUTING.md").read_text() if (root / "CONTRIBUTING.md").exists() else ""
     section = text.split("### Repeated on purpose", 1)[-1] if "### Repeated on purpose" in text else ""
+    # Only that section's own table: a later heading (such as "Alike in shape",
+    # pairs this script does not see) allows nothing.
+    section = re.split(r"^#", section, maxsplit=1, flags=re.M)[0]
     pairs = set()
     for a, b in re.findall(r"^\|\s*`([^`]+)`\s*\|\s*`([^`]+)`\s*\|", section, re.M):
         pairs.add(frozenset((a, b)))
@@ -71,13 +92,17 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--min-lines", type=int, default=10)
     parser.add_argument("--all", action="store_true", help="list allowed blocks too")
+    parser.add_argument("--root", type=pathlib.Path, default=ROOT,
+                        help="the tree to scan: its chapters/, common/ and CONTRIBUTING.md "
+                             "(default: this repository; the tests give a fixture)")
     args = parser.parse_args()
-    files = sorted(p for d in ("chapters", "common") for p in (ROOT / d).rglob("*")
+    root = args.root.resolve()
+    files = sorted(p for d in ("chapters", "common") for p in (root / d).rglob("*")
                    if p.suffix in (".cpp", ".hpp"))
-    allowed = allowed_pairs()
+    allowed = allowed_pairs(root)
     new = 0
     for fa, a0, a1, fb, b0, b1, n in blocks(files, args.min_lines):
-        ra, rb = fa.relative_to(ROOT).as_posix(), fb.relative_to(ROOT).as_posix()
+        ra, rb = fa.relative_to(root).as_posix(), fb.relative_to(root).as_posix()
         ok = frozenset((ra, rb)) in allowed
         if ok and not args.all:
             continue

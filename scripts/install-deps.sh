@@ -21,8 +21,9 @@ set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 
 # --- What each system needs, by its own package names -----------------------
-# The same names on Debian 12 and Ubuntu 24.04. The last line is for other
-# tools of the project (charts, diagrams, linting, fuzzing).
+# The same names on Debian 12 and Ubuntu 24.04. The last two lines are for
+# other tools of the project (charts, diagrams, linting and formatting, the
+# fuzzers' nlohmann/json.hpp, gdb for a stuck window test's threads).
 apt_common=(
   build-essential cmake ninja-build pkg-config
   libvulkan-dev vulkan-validationlayers glslang-tools vulkan-tools
@@ -30,15 +31,18 @@ apt_common=(
   xvfb xauth xdotool openbox wmctrl stress-ng
   python3 python3-markdown python3-pygments
   python3-matplotlib python3-pil fonts-dejavu-core graphviz shellcheck clang clang-tidy
+  clang-format nlohmann-json3-dev gdb
 )
-# Debian 12: clang is clang 14, whose runtime (libFuzzer, LeakSanitizer) is its
-# own package; lavapipe 25.x and Catch2 3 come from bookworm-backports (Debian
-# 12's own are Mesa 22.3 and Catch2 2.x).
-debian12_main=(chromium libclang-rt-14-dev clang-16 libclang-rt-16-dev clang-tidy-16 clang-format
-  nlohmann-json3-dev gdb)
+# Debian 12: clang is clang 14, too old for the fuzzers and clang-tidy (it
+# cannot parse GCC 12's <source_location>), so the fuzz preset names clang++-16;
+# each clang's runtime (libFuzzer, LeakSanitizer) is its own package. lavapipe
+# 25.x and Catch2 3 come from bookworm-backports (Debian 12's own are Mesa 22.3
+# and Catch2 2.x).
+debian12_main=(chromium libclang-rt-14-dev clang-16 libclang-rt-16-dev clang-tidy-16)
 debian12_backports=(mesa-vulkan-drivers catch2)
-# Ubuntu 24.04: clang is clang 18. Its chromium deb only installs the snap, so
-# it is left out (see ubuntu_notes).
+# Ubuntu 24.04: clang, clang-tidy and clang-format are 18, new enough as they
+# are (the fuzz-clang preset uses that clang++). Its chromium deb only
+# installs the snap, so it is left out (see ubuntu_notes).
 ubuntu2404_extra=(libclang-rt-18-dev mesa-vulkan-drivers catch2)
 # Printed only: names as we believe them, not tried here.
 fedora_packages=(
@@ -48,7 +52,7 @@ fedora_packages=(
   stb-devel catch-devel libX11-devel
   xorg-x11-server-Xvfb xorg-x11-xauth xdotool openbox wmctrl stress-ng
   python3 python3-markdown python3-pygments python3-matplotlib graphviz chromium
-  ShellCheck clang clang-tools-extra compiler-rt
+  ShellCheck clang clang-tools-extra compiler-rt json-devel gdb
 )
 arch_packages=(
   base-devel cmake ninja pkgconf
@@ -56,7 +60,7 @@ arch_packages=(
   vulkan-swrast glfw glm tinygltf libpng libjpeg-turbo stb catch2 libx11
   xorg-server-xvfb xorg-xauth xdotool openbox wmctrl stress-ng
   python python-markdown python-pygments python-matplotlib graphviz chromium
-  shellcheck clang compiler-rt
+  shellcheck clang compiler-rt nlohmann-json gdb
 )
 
 say() { printf 'install-deps: %s\n' "$*"; }
@@ -155,7 +159,8 @@ ubuntu_notes() {
 install-deps: notes for Ubuntu 24.04 (reasoned, not tested on Ubuntu here):
   - chromium: skipped: Ubuntu 24.04 ships it only as a snap (the chromium-browser
     deb installs the snap), and this script installs debs only. The book's
-    browser test is skipped without it; `snap install chromium` if you want it.
+    browser test is skipped without it (CTest lists it as not run); to run it,
+    `snap install chromium` and configure again (it finds /snap/bin/chromium).
   - lavapipe is Mesa 24.0 (noble) or 24.2 (noble-updates), not 25.0 as on Debian
     12: Vulkan 1.3, not 1.4. Every chapter asks for 1.3 only: dynamicRendering and
     synchronization2 (02-20), separateDepthStencilLayouts (08, 10-12, 14-17),
@@ -176,6 +181,11 @@ install-deps: notes for Ubuntu 24.04 (reasoned, not tested on Ubuntu here):
   - Catch2 3.4 (Debian 12 gets 3.7): SKIP() and catch_discover_tests'
     DISCOVERY_MODE, the newest features the tests use, came in 3.3.
   - glslang 14, CMake 3.28, GLFW 3.3.10, GCC 13: newer than Debian 12's.
+  - clang, clang-tidy and clang-format are 18 (Debian 12: 14, and 16 for the
+    fuzzers and clang-tidy). The fuzz preset names clang++-16, which this script
+    does not install here: use `cmake --workflow --preset fuzz-clang` (the
+    system's clang++). clang-format 18 may lay out a line differently from
+    CI's 14: scripts/static-checks.sh can then disagree with CI.
 NOTES
 }
 

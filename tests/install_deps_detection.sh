@@ -87,7 +87,8 @@ check "debian-12: would write the backports source" \
 check "debian-12: apt-get update" has 'would run: apt-get update'
 for pkg in libvulkan-dev libglfw3-dev libtinygltf-dev libpng-dev libjpeg-dev libstb-dev \
   glslang-tools python3-markdown python3-matplotlib graphviz chromium shellcheck clang-tidy clang \
-  libclang-rt-14-dev clang-16 libclang-rt-16-dev fonts-dejavu-core; do
+  libclang-rt-14-dev clang-16 libclang-rt-16-dev clang-tidy-16 fonts-dejavu-core clang-format \
+  nlohmann-json3-dev gdb; do
   check "debian-12: installs $pkg" has "would run: apt-get install .* $pkg( |\$)"
 done
 check "debian-12: Mesa and Catch2 from backports" \
@@ -107,7 +108,7 @@ check "ubuntu-24.04: plan" has '^install-deps: plan: ubuntu-24.04'
 check "ubuntu-24.04: apt-get update" has 'would run: apt-get update'
 for pkg in libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers catch2 libglfw3-dev libglm-dev \
   libtinygltf-dev libpng-dev libjpeg-dev libstb-dev glslang-tools python3-matplotlib graphviz \
-  shellcheck clang-tidy libclang-rt-18-dev; do
+  shellcheck clang clang-tidy libclang-rt-18-dev clang-format nlohmann-json3-dev gdb; do
   check "ubuntu-24.04: installs $pkg" has "would run: apt-get install .* $pkg( |\$)"
 done
 check "ubuntu-24.04: no apt source written" lacks 'would write|already there|sources\.list'
@@ -119,12 +120,17 @@ check "ubuntu-24.04: the browser test is said to be skipped" has 'browser test i
 check "ubuntu-24.04: names the headless-surface tests" has 'chapter\.04_triangle\.no_display'
 check "ubuntu-24.04: names the chapters by feature" has 'maintenance4 \(13, 17, 20\)'
 check "ubuntu-24.04: would check lavapipe" has 'would check: .*VK_EXT_headless_surface'
+# Debian's versioned clang (the fuzz preset's clang++-16) is not Ubuntu's: the
+# notes send the reader to the preset that uses Ubuntu's own clang++ (18).
+check "ubuntu-24.04: no Debian-versioned clang" lacks 'would run: apt-get install .*(clang-16|clang-tidy-16|libclang-rt-16-dev)'
+check "ubuntu-24.04: names the fuzz-clang preset" has 'preset fuzz-clang'
 
 dry "$work/os/fedora"
 check "fedora: exit 3" test "$status" -eq 3
 check "fedora: changed nothing" has 'Changed nothing'
 check "fedora: dnf names" has 'sudo dnf install .*vulkan-loader-devel.* libpng-devel libjpeg-turbo-devel .*python3-matplotlib .*clang-tools-extra'
 check "fedora: runs nothing" lacks 'would run|would write'
+check "fedora: the fuzzers' json and gdb" has 'sudo dnf install .* json-devel gdb'
 
 dry "$work/os/mint"
 check "ubuntu derivative: exit 3" test "$status" -eq 3
@@ -137,6 +143,7 @@ check "unknown: exit 3" test "$status" -eq 3
 check "unknown: changed nothing" has 'Changed nothing'
 check "unknown: Fedora names" has 'sudo dnf install '
 check "unknown: Arch names" has 'sudo pacman -S --needed .*vulkan-swrast'
+check "unknown: Arch's json and gdb" has 'sudo pacman -S --needed .* nlohmann-json gdb'
 check "unknown: Debian/Ubuntu names" has 'sudo apt-get install '
 check "unknown: runs nothing" lacks 'would run|would write'
 check "unknown: os-release read as data, not run" test ! -e "$work/sourced"

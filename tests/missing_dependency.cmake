@@ -3,7 +3,9 @@
 # that names the package to install on every system (cmake/dependencies.cmake).
 #
 #   cmake -DROOT=<source> -DBUILD=<scratch dir> -DGENERATOR=<name> -DPACKAGE=<package>
-#         -DEXPECT=<regex;regex...> -P missing_dependency.cmake
+#         -DEXPECT=<regex;regex...> [-DOPTIONS=<-Dvar=value;...>] -P missing_dependency.cmake
+# The tests and the book are off unless OPTIONS turns one on (for a dependency
+# that only they have).
 foreach(var ROOT BUILD GENERATOR PACKAGE EXPECT)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "missing_dependency.cmake: -D${var}=... is required")
@@ -13,7 +15,7 @@ endforeach()
 file(REMOVE_RECURSE ${BUILD})
 execute_process(
   COMMAND ${CMAKE_COMMAND} -S ${ROOT} -B ${BUILD} -G ${GENERATOR} -DCMAKE_DISABLE_FIND_PACKAGE_${PACKAGE}=ON
-          -DVKT_BUILD_TESTS=OFF -DVKT_BUILD_BOOK=OFF
+          -DVKT_BUILD_TESTS=OFF -DVKT_BUILD_BOOK=OFF ${OPTIONS}
   RESULT_VARIABLE status
   OUTPUT_VARIABLE out
   ERROR_VARIABLE err)

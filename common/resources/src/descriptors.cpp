@@ -42,10 +42,12 @@ VkDescriptorSet allocate_descriptor_set(VkDevice device, VkDescriptorPool pool,
     return set;
 }
 
-void write_buffer_descriptor(VkDevice device, VkDescriptorSet set, uint32_t binding,
-                             VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset,
-                             VkDeviceSize range) {
-    VkDescriptorBufferInfo buffer_info{.buffer = buffer, .offset = offset, .range = range};
+namespace {
+
+// The three writes below differ only in what they point at: one descriptor of
+// one binding, element 0 (chapter 07 writes the same struct out in full).
+void write_one(VkDevice device, VkDescriptorSet set, uint32_t binding, VkDescriptorType type,
+               const VkDescriptorBufferInfo* buffer_info, const VkDescriptorImageInfo* image_info) {
     VkWriteDescriptorSet write{
         .sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
         .dstSet = set,
@@ -53,38 +55,32 @@ void write_buffer_descriptor(VkDevice device, VkDescriptorSet set, uint32_t bind
         .dstArrayElement = 0,
         .descriptorCount = 1,
         .descriptorType = type,
-        .pBufferInfo = &buffer_info,
+        .pImageInfo = image_info,
+        .pBufferInfo = buffer_info,
     };
     vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+}
+
+}  // namespace
+
+void write_buffer_descriptor(VkDevice device, VkDescriptorSet set, uint32_t binding,
+                             VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset,
+                             VkDeviceSize range) {
+    VkDescriptorBufferInfo buffer_info{.buffer = buffer, .offset = offset, .range = range};
+    write_one(device, set, binding, type, &buffer_info, nullptr);
 }
 
 void write_image_descriptor(VkDevice device, VkDescriptorSet set, uint32_t binding,
                             VkImageView view, VkSampler sampler, VkImageLayout layout) {
     VkDescriptorImageInfo image_info{.sampler = sampler, .imageView = view, .imageLayout = layout};
-    VkWriteDescriptorSet write{
-        .sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-        .dstSet = set,
-        .dstBinding = binding,
-        .dstArrayElement = 0,
-        .descriptorCount = 1,
-        .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-        .pImageInfo = &image_info,
-    };
-    vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+    write_one(device, set, binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr,
+              &image_info);
 }
 
 void write_storage_image_descriptor(VkDevice device, VkDescriptorSet set, uint32_t binding,
                                     VkImageView view) {
     VkDescriptorImageInfo image_info{.imageView = view, .imageLayout = VK_IMAGE_LAYOUT_GENERAL};
-    VkWriteDescriptorSet write{
-        .sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-        .dstSet = set,
-        .dstBinding = binding,
-        .descriptorCount = 1,
-        .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-        .pImageInfo = &image_info,
-    };
-    vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+    write_one(device, set, binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, nullptr, &image_info);
 }
 
 }  // namespace vkt

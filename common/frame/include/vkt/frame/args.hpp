@@ -1,5 +1,6 @@
 #pragma once
-// The command line every chapter shares (see the book's "Running the chapters").
+// The command line every chapter shares, from chapter 01 on (--validation); see
+// README.md's "Running a chapter" and the book's "Running headless and testing".
 // Parsing is pure, so the unit tests can feed it any argument list.
 
 #include <cstdint>

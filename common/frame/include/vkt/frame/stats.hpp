@@ -1,5 +1,6 @@
 #pragma once
-// Summaries of frame times for --benchmark.
+// Summaries of frame times for --benchmark, taught in chapter 03 (the runner's
+// frame and GPU times); chapter 15 also summarises its own CPU record times.
 
 #include <string>
 #include <string_view>

@@ -1,7 +1,8 @@
 #pragma once
-// Reading a frame back to the CPU, for --screenshot. The copy is recorded into
-// the frame's own command buffer, right after the image reaches its final
-// state, so the screenshot is exactly what that frame presented.
+// Reading a frame back to the CPU, for --screenshot, taught in chapter 03. The
+// copy is recorded into the frame's own command buffer, right after the image
+// reaches its final state, so the screenshot is exactly what that frame
+// presented.
 
 #include "vkt/core/memory.hpp"
 #include "vkt/resources/image_io.hpp"
