@@ -51,17 +51,22 @@ fail() {
 }
 
 # describe_x: what the X server and the window manager say, for a failure:
-# every window with a name, whether it is mapped and in which WM_STATE, and
-# whether the window manager still answers.
+# every window with a name, whether it is mapped, in which WM_STATE and under
+# which parent (a window manager's frame, or still the root window: never
+# managed), and whether the window manager still runs and answers.
 describe_x() {
-  echo "--- the X server's named windows (id, map state, WM_STATE) ---"
-  local w
+  echo "--- the X server's named windows (id, name, map state, WM_STATE, parent) ---"
+  local w parent
   for w in $(xdotool search --name . 2>/dev/null | head -n 20); do
+    parent=$(xwininfo -children -id "$w" 2>/dev/null | grep -o 'Parent window id: .*' | cut -d' ' -f4- | sed 's/ (has no name)//')
     echo "  $w '$(xdotool getwindowname "$w" 2>/dev/null)'" \
       "$(xwininfo -id "$w" 2>/dev/null | grep -o 'Map State: .*')" \
-      "$(xprop -id "$w" WM_STATE 2>/dev/null | grep -o 'window state: .*')"
+      "$(xprop -id "$w" WM_STATE 2>/dev/null | grep -o 'window state: .*' || echo 'no WM_STATE')" \
+      "parent: ${parent:-?}"
   done
-  if wmctrl -m >/dev/null 2>&1; then
+  if [ -n "$wm_pid" ] && ! kill -0 "$wm_pid" 2>/dev/null; then
+    echo "--- the window manager (pid $wm_pid) has exited ---"
+  elif wmctrl -m >/dev/null 2>&1; then
     echo "--- the window manager answers: $(wmctrl -m | head -n 1) ---"
   else
     echo "--- no window manager answers (wmctrl -m) ---"
@@ -69,20 +74,33 @@ describe_x() {
 }
 
 # start_wm: a real window manager (openbox) on the Xvfb display, so that
-# minimising and the close button work as on a desktop. Waits until it has
-# taken over the screen (wmctrl answers).
+# minimising and the close button work as on a desktop. Waits until openbox
+# has finished starting, which is later than the moment wmctrl first gets an
+# answer: openbox 3.6 takes the screen (and answers wmctrl) first, then sets
+# itself up, and on the way (window_manage_all) reads every X event already
+# sent to it into a queue of its own, which its main loop does not look at
+# until the next event arrives. A chapter that mapped its window in between
+# had its map request read there and left: the window stayed unmapped for
+# as long as nothing else happened on the display, and the test failed with
+# "no window titled ... appeared" (1 in a few hundred runs under load; with
+# openbox held in that stretch, every run). Openbox runs its --startup
+# command once that is over, just before its main loop; that command's file
+# is the event we wait for.
+wm_pid=""   # the window manager's process id
 start_wm() {
   command -v openbox >/dev/null || fail "openbox is not installed (scripts/install-deps.sh)"
   local log; log=$(mktemp -t openbox.XXXXXX)
-  openbox --sm-disable >/dev/null 2>"$log" &
-  local wm=$!
+  local ready="$log.started"
+  openbox --sm-disable --startup "touch '$ready'" >/dev/null 2>"$log" &
+  wm_pid=$!
   local deadline=$((SECONDS + VKT_EVENT_SECONDS))
   while in_time "$deadline"; do
-    wmctrl -m >/dev/null 2>&1 && { rm -f "$log"; return 0; }
-    kill -0 "$wm" 2>/dev/null || fail "the window manager exited: $(cat "$log")"
+    [ -e "$ready" ] && wmctrl -m >/dev/null 2>&1 && { rm -f "$log" "$ready"; return 0; }
+    kill -0 "$wm_pid" 2>/dev/null || fail "the window manager exited: $(cat "$log")"
     sleep 0.1
   done
-  fail "the window manager did not start"
+  fail "the window manager did not start (waited ${VKT_EVENT_SECONDS} s;" \
+    "$([ -e "$ready" ] && echo "it ran its start-up command" || echo "it never ran its start-up command"))"
 }
 
 # start_chapter STDERR_FILE EXE ARGS...: runs the chapter in the background.
@@ -94,16 +112,29 @@ start_chapter() {
 }
 
 # find_window TITLE: prints the X window id of the chapter's window, waiting
-# for it to be mapped.
+# for it to be viewable (mapped, and by the window manager into its frame).
+# Gives up at once if the chapter exits or says it runs without a window;
+# when it gives up, says on stderr what became of the window.
 find_window() {
   local window
   local deadline=$((SECONDS + VKT_EVENT_SECONDS))
   while in_time "$deadline"; do
     window=$(xdotool search --onlyvisible --name "$1" 2>/dev/null | head -n 1)
     [ -n "$window" ] && { echo "$window"; return 0; }
-    kill -0 "$pid" 2>/dev/null || return 1
+    kill -0 "$pid" 2>/dev/null || { echo "find_window: the chapter exited" >&2; return 1; }
+    grep -q "running headless" "$err" 2>/dev/null &&
+      { echo "find_window: the chapter opened no window (it runs headless)" >&2; return 1; }
     sleep 0.1
   done
+  window=$(xdotool search --name "$1" 2>/dev/null | head -n 1)
+  if [ -z "$window" ]; then
+    echo "find_window: no window titled '$1' exists after ${VKT_EVENT_SECONDS} s: the chapter never created it" >&2
+  elif ! xprop -id "$window" WM_STATE 2>/dev/null | grep -q 'window state'; then
+    echo "find_window: window $window titled '$1' exists but the window manager never managed it" \
+      "(no WM_STATE): it was never mapped, or its map request was never handled" >&2
+  else
+    echo "find_window: window $window titled '$1' was managed by the window manager but is not viewable" >&2
+  fi
   return 1
 }
 

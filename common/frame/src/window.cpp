@@ -18,11 +18,13 @@ namespace {
 
 // Shows the window. On X11, GLFW 3.3 maps the window and then waits for the
 // X server to say it is visible; that wait is meant to give up after 0.1 s,
-// but under a window manager on a loaded machine it was seen to spin for
-// minutes (tests/window_repeat_record.txt). Nothing here needs the window to
-// be visible before drawing (a swapchain can be made for a window not yet
-// shown), so on X11 we map it ourselves and carry on; the X server shows it
-// when it can, and GLFW learns of it from the events it polls.
+// but it counts the time only while no other event is queued, so it lasts as
+// long as the window manager takes to show the window: minutes, under one
+// that had lost the map request (tests/window_repeat_record.txt). Nothing
+// here needs the window to be visible before drawing (a swapchain can be
+// made for a window not yet shown), so on X11 we map it ourselves and carry
+// on; the X server shows it when it can, and GLFW learns of it from the
+// events it polls.
 void show(GLFWwindow* window) {
 #if VKT_WINDOW_X11
     if (Display* display = glfwGetX11Display()) {
