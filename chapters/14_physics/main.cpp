@@ -208,9 +208,19 @@ public:
 
     void record(const vkt::Frame& frame) override {
         // P: the pyramid and the tower, once (in a window; --scene stacks headless).
-        if (frame.input.went_down('P') && !stacks_added_) {
-            physics::add_stacks(world_, scene_);
-            stacks_added_ = true;
+        if (frame.input.went_down('P')) {
+            if (!stacks_added_) {
+                const std::size_t before = world_.bodies().size();
+                physics::add_stacks(world_, scene_);
+                stacks_added_ = true;
+                std::fprintf(stderr,
+                             "14_physics: P: added a 10-level pyramid and a 20-box tower (%zu "
+                             "boxes, %zu bodies now)\n",
+                             world_.bodies().size() - before, world_.bodies().size());
+            } else {
+                std::fprintf(stderr,
+                             "14_physics: P: the pyramid and the tower are already there\n");
+            }
         }
         // [fixed-step]
         // The accumulator, counted in whole steps: the steps due by now are

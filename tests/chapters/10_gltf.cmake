@@ -101,6 +101,12 @@ vkt_10_uri_file(huge_buffer.gltf "huge.bin" "")
 # tinygltf's issue 416: "%!Q" %-decodes to a NUL byte, and tinygltf alone then
 # reads the folder as a file of 2^63 bytes (std::bad_alloc, or an ASan abort).
 vkt_10_bad_file(issue416.gltf ${vkt_10_good_indices} 3 [=[, "images": [{"uri": "%!QAAAQAAA5"}]]=])
+# A URI of "." names the model's folder itself; data: URIs whose base64 does
+# not decode (tinygltf's own words for these name no buffer or image).
+vkt_10_uri_file(uri_dot.gltf "." "")
+vkt_10_bad_file(short_data_uri.gltf "AAA" 3 "")
+vkt_10_bad_file(bad_image_data_uri.gltf ${vkt_10_good_indices} 3
+  [=[, "images": [{"uri": "data:image/png;base64,!!"}]]=])
 
 vkt_chapter_test(bad_input.10_gltf.model_directory 10_gltf EXIT 1
   ARGS ${vkt_10_run} --model ${vkt_10_dir}
@@ -108,6 +114,15 @@ vkt_chapter_test(bad_input.10_gltf.model_directory 10_gltf EXIT 1
 vkt_chapter_test(bad_input.10_gltf.issue416_uri 10_gltf EXIT 1
   ARGS ${vkt_10_run} --model ${vkt_10_dir}/issue416.gltf
   EXPECT "10_gltf: error: .*issue416.gltf: URI \"%00AAAQAAA5\" is not a file name: it holds a control character")
+vkt_chapter_test(bad_input.10_gltf.uri_dot 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${vkt_10_dir}/uri_dot.gltf
+  EXPECT "10_gltf: error: .*uri_dot.gltf: URI \"\\.\": .*gltf_bad_input: is a directory, not a file")
+vkt_chapter_test(bad_input.10_gltf.short_data_uri 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${vkt_10_dir}/short_data_uri.gltf
+  EXPECT "10_gltf: error: .*short_data_uri.gltf: buffer 0: data URI \"data:application/octet-stream;base64,AAA\" is invalid: its base64 does not decode to the buffer's byteLength")
+vkt_chapter_test(bad_input.10_gltf.bad_image_data_uri 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${vkt_10_dir}/bad_image_data_uri.gltf
+  EXPECT "10_gltf: error: .*bad_image_data_uri.gltf: image 0: its data URI is invalid: its base64 decodes to no bytes")
 vkt_chapter_test(bad_input.10_gltf.uri_outside 10_gltf EXIT 1
   ARGS ${vkt_10_run} --model ${vkt_10_dir}/uri_outside.gltf
   EXPECT "10_gltf: error: .*uri_outside.gltf: URI \"\\.\\./\\.\\./\\.\\./\\.\\./\\.\\./\\.\\./etc/passwd\" leads out of the model's folder")

@@ -11,6 +11,17 @@ vkt_chapter_test(chapter.14_physics 14_physics GOLDEN BLESS ARGS ${headless} ${V
   EXPECT "14_physics: 1000 boxes and the stacks, sort-and-sweep, 120 steps/s, 1200 warm-up steps, [0-9]+ contact points, 0 awake")
 vkt_chapter_test(chapter.14_physics.offscreen 14_physics GOLDEN ARGS ${offscreen} ${VKT_14_ARGS})
 vkt_chapter_window_test(14_physics ARGS ${VKT_14_ARGS})
+# P, in a real window driven by events (window_physics_keys.sh): the chapter
+# says it added the pyramid and the tower (75 boxes), a second P adds nothing,
+# Escape quits with a clean validation report.
+if(XVFB_RUN AND XDOTOOL AND OPENBOX)
+  add_test(NAME chapter.14_physics.window_keys
+    COMMAND ${XVFB_RUN} -a -s "-screen 0 800x600x24"
+            ${CMAKE_CURRENT_SOURCE_DIR}/window_physics_keys.sh $<TARGET_FILE:14_physics>
+            ${VKT_TEST_OUTPUT} "14 - physics")
+  set_tests_properties(chapter.14_physics.window_keys PROPERTIES
+    ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS "chapter;window")
+endif()
 # Brute force finds the same pairs in the same order, so the world, and the
 # picture, are the same bit for bit.
 vkt_chapter_test(chapter.14_physics.brute 14_physics GOLDEN ARGS ${headless} ${VKT_14_ARGS}

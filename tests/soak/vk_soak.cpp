@@ -13,20 +13,20 @@
 // part (RssFile) is reported only: it is program and library code read in on
 // first use (07 and 08 read in 48-64 KiB more of libm around frame 3,700,
 // when their angles grow past where sin and cos change method), bounded by
-// the size of the files. A sample is a snapshot of a moving process: a
-// frame's temporaries, lavapipe's per-frame binning memory (which follows
-// what the scene shows: 12's heap goes between 37.5 and 40.5 MB, in 64 KiB
-// steps, with no trend), the heap's top page trimmed or not. So memory is
-// compared as the least sample of the
-// first half of those frames against the least of the second half: a leak
-// raises every sample of the second half, noise only some. Live Vulkan
-// objects and device allocations are exact counts, compared at frame
-// VKT_SOAK_FROM and at the last frame. At exit it prints
-//   vkt_soak: frames 500..10000: resident +0 KiB (limit 64), heap +272 bytes
-//   (limit 16 KiB), Vulkan objects 18 -> 18, device allocations 1 -> 1
-//   (16384 -> 16384 bytes): pass
+// the size of the files. Each block of 50 frames keeps its least sample;
+// growth is the rise from the second quarter's least to the last quarter's,
+// per frame, times the frames measured (soak_growth.hpp says why: a steady
+// leak reads at its full size). Live Vulkan objects and device allocations are exact counts,
+// compared at frame VKT_SOAK_FROM and at the last frame. At exit it prints
+//   vkt_soak: frames 500..10000: resident +0 KiB (limit 64; file-backed +0
+//   KiB), heap +272 bytes (limit 16 KiB), Vulkan objects 18 -> 18, device
+//   allocations 1 -> 1 (16384 -> 16384 bytes): pass
 // or the same ending in "FAIL: <what grew>"; the test expects "pass".
 // VKT_SOAK_TRACE=N also prints resident memory and the heap every N frames.
+// VKT_SOAK_LEAK=N makes this library itself keep N bytes a frame (written,
+// so resident): the soak's own test, that a steady leak fails it.
+#include "soak_growth.hpp"
+
 #include <vulkan/vulkan.h>
 
 #include <dlfcn.h>
@@ -69,6 +69,8 @@ std::map<uint64_t, uint64_t> child_pools;   // command buffer or set -> its pool
 uint64_t presents = 0;
 uint64_t from = 500;
 uint64_t trace = 0;
+size_t leak_bytes = 0;
+void* leaked = nullptr;  // VKT_SOAK_LEAK's blocks, each pointing to the one before
 Counts counts_first, counts_last;
 std::vector<Memory> block_minima;  // from frame `from` on, one per block (the last may be partial)
 
@@ -163,23 +165,24 @@ __attribute__((destructor)) void report() {
                      (unsigned long long)presents, (unsigned long long)(from + 3 * block));
         return;
     }
-    // The least of each half.
-    Memory first_min = block_minima.front(), last_min = block_minima.back();
-    const size_t half = block_minima.size() / 2;
-    for (size_t i = 0; i < block_minima.size(); ++i) {
-        Memory& min = i < half ? first_min : last_min;
-        min.resident_kib = std::min(min.resident_kib, block_minima[i].resident_kib);
-        min.anonymous_kib = std::min(min.anonymous_kib, block_minima[i].anonymous_kib);
-        min.heap_bytes = std::min(min.heap_bytes, block_minima[i].heap_bytes);
+    // The growth over the frames measured, per kind of memory.
+    const uint64_t frames = presents - from;
+    std::vector<int64_t> anonymous, file_backed, heap;
+    for (const Memory& min : block_minima) {
+        anonymous.push_back(min.anonymous_kib);
+        file_backed.push_back(min.resident_kib - min.anonymous_kib);
+        heap.push_back(min.heap_bytes);
     }
+    auto growth = [&](const std::vector<int64_t>& minima) {
+        return int64_t(vkt::soak::quarter_growth(minima, block, frames));
+    };
     const char* rss_text = std::getenv("VKT_SOAK_RSS_KIB");
     const int64_t rss_limit = rss_text ? std::atoll(rss_text) : 64;
     const char* heap_text = std::getenv("VKT_SOAK_HEAP_KIB");
     const int64_t heap_limit = heap_text ? std::atoll(heap_text) : 16;
-    const int64_t anonymous_growth = last_min.anonymous_kib - first_min.anonymous_kib;
-    const int64_t file_growth = (last_min.resident_kib - last_min.anonymous_kib) -
-                                (first_min.resident_kib - first_min.anonymous_kib);
-    const int64_t heap_growth = last_min.heap_bytes - first_min.heap_bytes;
+    const int64_t anonymous_growth = growth(anonymous);
+    const int64_t file_growth = growth(file_backed);
+    const int64_t heap_growth = growth(heap);
     std::string failures;
     if (anonymous_growth > rss_limit) failures += " resident memory grew;";
     if (heap_growth > heap_limit * 1024) failures += " the heap grew;";
@@ -205,6 +208,8 @@ __attribute__((constructor)) void start() {
     if (from == 0) from = 1;
     if (const char* every = std::getenv("VKT_SOAK_TRACE"))
         trace = std::strtoull(every, nullptr, 10);
+    if (const char* leak = std::getenv("VKT_SOAK_LEAK"))
+        leak_bytes = std::max<size_t>(std::strtoull(leak, nullptr, 10), sizeof(void*));
     block_minima.reserve(4096);  // 200,000 frames: the list must not grow the heap it measures
 }
 
@@ -397,6 +402,14 @@ extern "C" VKAPI_ATTR VkResult VKAPI_CALL vkQueuePresentKHR(VkQueue queue,
     // mallinfo2's own first use): a throwaway one at frame 1 keeps the
     // measuring from counting itself.
     if (presents == 1) memory();
+    if (leak_bytes != 0) {
+        void* block_kept = std::malloc(leak_bytes);
+        if (block_kept) {
+            std::memset(block_kept, 1, leak_bytes);
+            *static_cast<void**>(block_kept) = leaked;
+            leaked = block_kept;
+        }
+    }
     const bool tracing = trace != 0 && presents % trace == 0;
     if (presents < from && !tracing) return result;
     const Memory now = memory();

@@ -572,6 +572,34 @@ TEST_CASE("gltf: bad input gives one line naming the file and the fault", "[gltf
         CHECK_THAT(error_of(temp_dir() / "bad_image.gltf"),
                    ContainsSubstring("cannot open") && ContainsSubstring("not_an_image.png"));
     }
+    SECTION("a data: URI that does not decode names the buffer or image, not the JSON") {
+        Triangle t(5125);
+        const std::string good = triangle_file(t, 5125);
+        // The second buffer's base64 is 1 byte, not its byteLength of 4.
+        const std::string second =
+            fill(good,
+                 {{R"("}])",
+                   R"("}, {"byteLength": 4, "uri": "data:application/octet-stream;base64,AA"}])"}});
+        CHECK_THAT(error_of(write_file("short_data_uri.gltf", second)),
+                   ContainsSubstring("short_data_uri.gltf: buffer 1: data URI "
+                                     "\"data:application/octet-stream;base64,AA\" is invalid: "
+                                     "its base64 does not decode to the buffer's byteLength") &&
+                       !ContainsSubstring("not a glTF file"));
+        std::string image = good;
+        image.pop_back();
+        image +=
+            R"(, "images": [{"uri": "data:image/png;base64,iVBO"}, {"uri": "data:image/png;base64,!!"}]})";
+        CHECK_THAT(error_of(write_file("bad_image_data_uri.gltf", image)),
+                   ContainsSubstring("bad_image_data_uri.gltf: image 1: its data URI is invalid: "
+                                     "its base64 decodes to no bytes"));
+    }
+    SECTION("a URI naming the model's own folder names the URI") {
+        Triangle t(5125);
+        const std::string dot = fill(triangle_file(t, 5125), {{data_uri(t.bin.bytes), "."}});
+        CHECK_THAT(error_of(write_file("uri_dot.gltf", dot)),
+                   ContainsSubstring("uri_dot.gltf: URI \".\": ") &&
+                       ContainsSubstring(": is a directory, not a file"));
+    }
     SECTION("a required extension") {
         Triangle t(5125);
         const std::string extra =

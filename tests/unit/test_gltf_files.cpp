@@ -250,13 +250,16 @@ TEST_CASE("gltf files: data URIs are checked against their byteLength", "[gltf][
     // message quotes the URI only in part, so it stays one short line.
     for (uintmax_t length : {4000, 40}) {
         const std::string error = model_error(f, "data_length.gltf", triangle_json(good, length));
-        CHECK_THAT(error, ContainsSubstring("data_length.gltf: not a glTF file: "));
+        CHECK_THAT(error, ContainsSubstring("data_length.gltf: buffer 0: data URI "
+                                            "\"data:application/octet-stream;base64,") &&
+                              ContainsSubstring("...\" is invalid: its base64 does not decode "
+                                                "to the buffer's byteLength"));
         CHECK(error.find('\n') == std::string::npos);
     }
     const std::string long_uri =
         "data:application/octet-stream;base64," + base64(std::vector<uint8_t>(30000, 7));
     const std::string error = model_error(f, "data_long.gltf", triangle_json(long_uri, 44));
-    CHECK_THAT(error, ContainsSubstring("data_long.gltf: not a glTF file: "));
+    CHECK_THAT(error, ContainsSubstring("data_long.gltf: buffer 0: data URI "));
     CHECK(error.size() < 400);
     // A data: URI tinygltf does not know would be a file name: refused as such.
     CHECK_THAT(model_error(f, "data_webp.gltf", triangle_json("data:image/webp;base64,AAAA")),

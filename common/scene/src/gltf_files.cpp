@@ -36,6 +36,7 @@ struct FileAccess {
     std::filesystem::path folder;
     std::string prefix;   // folder as tinygltf joins it to a URI: ".../folder/"
     std::string refusal;  // the first refusal, "URI "../x" leads out of ..."
+    std::string uri;      // the URI last asked for, as tinygltf %-decoded it
 
     void refuse(const std::string& why) {
         if (refusal.empty()) refusal = why;
@@ -46,7 +47,7 @@ struct FileAccess {
     // which we never look in.
     std::optional<std::filesystem::path> inside(const std::string& joined) {
         if (joined.compare(0, prefix.size(), prefix) != 0) return std::nullopt;
-        const std::string uri = joined.substr(prefix.size());
+        uri = joined.substr(prefix.size());
         if (uri.rfind("data:", 0) == 0) {
             refuse("URI \"" + printable(uri, 40) +
                    "\" is a data: URI of a kind tinygltf does not decode (base64 "
@@ -83,7 +84,9 @@ bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const st
         out->assign(bytes.begin(), bytes.end());
         return true;
     } catch (const Error& e) {
-        access->refuse(e.what());
+        // read_file names the path it tried ("/models/car: is a directory");
+        // the URI that led there is what the reader must fix (".").
+        access->refuse(file ? "URI \"" + printable(access->uri) + "\": " + e.what() : e.what());
         if (err) *err += std::string(e.what()) + "\n";
         return false;
     }
@@ -110,6 +113,33 @@ std::string first_line(const std::string& text) {
     std::string line = text.substr(0, text.find('\n'));
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
     return printable(line, 200);
+}
+
+// tinygltf fails the whole file on a data: URI whose base64 it cannot
+// decode, in words that name neither what was wrong nor where ("Failed to
+// decode 'uri' : data:...;base64,AAA in Buffer", "Failed to decode 'uri' for
+// image[2] name = []"): printed as they are, behind "not a glTF file", they
+// blame JSON that is fine. tinygltf's decoder gives up when the
+// base64 decodes to nothing or, for a buffer, to other than its byteLength.
+// Say so, naming the buffer (tinygltf has kept the buffers before the one it
+// failed on, so their count is its index) or the image. nullopt: another fault.
+std::optional<std::string> invalid_data_uri(const std::string& err, const tinygltf::Model& model) {
+    const std::string buffer_text = "Failed to decode 'uri' : ";
+    const std::string image_text = "Failed to decode 'uri' for image[";
+    const std::string line = err.substr(0, err.find('\n'));
+    if (line.rfind(buffer_text, 0) == 0 && line.ends_with(" in Buffer")) {
+        const std::string uri = line.substr(
+            buffer_text.size(), line.size() - buffer_text.size() - std::strlen(" in Buffer"));
+        return "buffer " + std::to_string(model.buffers.size()) + ": data URI \"" +
+               printable(uri, 60) +
+               "\" is invalid: its base64 does not decode to the buffer's byteLength";
+    }
+    if (line.rfind(image_text, 0) == 0) {
+        const std::string index =
+            line.substr(image_text.size(), line.find(']') - image_text.size());
+        return "image " + index + ": its data URI is invalid: its base64 decodes to no bytes";
+    }
+    return std::nullopt;
 }
 
 }  // namespace
@@ -146,9 +176,12 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path) {
         ok = false;
     }
     if (!access.refusal.empty()) fail(access.refusal);  // even if tinygltf only warned
-    if (!ok)
+    if (!ok) {
+        if (const std::optional<std::string> data_uri = invalid_data_uri(err, model))
+            fail(*data_uri);
         fail(std::string("not a glTF file") + (glb ? " (.glb)" : "") + ": " +
              (err.empty() ? "tinygltf cannot parse it" : first_line(err)));
+    }
     return model;
 }
 

@@ -25,7 +25,8 @@ namespace vkt::gltf_detail {
 // Parses `path` (.gltf or .glb, told apart by its first four bytes). Images
 // are kept as their file's bytes (Image::image), not decoded. Throws Error
 // "PATH: what is wrong", one line, for a file that is missing, too large, not
-// glTF, or names a file outside its folder.
+// glTF, names a file outside its folder (or the folder itself), or holds a
+// data: URI that does not decode.
 tinygltf::Model parse_gltf_file(const std::filesystem::path& path);
 
 // What an accessor may hold for each use, as the glTF 2.0 specification lists it.
