@@ -3,8 +3,8 @@
 # A chapter's main.cpp reads beside its book page: under 450 lines. A
 # chapter's local header holds one pass or one part: under 250. A source of
 # common/ is one helper, small enough to read in one sitting: under 450.
-# A file at its limit is over it (tests/house_fixtures/long_file holds files
-# of 449, 450 and 461 lines, and 249 and 250, to show where the line falls).
+# A file at its limit is over it (house.file_limits_can_fail writes files of
+# 449, 450 and 461 lines, and 249 and 250, to show where the line falls).
 if(CMAKE_SCRIPT_MODE_FILE)
   cmake_policy(VERSION 3.25)  # -P mode starts with old policies
 endif()
