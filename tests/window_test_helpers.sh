@@ -103,6 +103,20 @@ start_wm() {
     "$([ -e "$ready" ] && echo "it ran its start-up command" || echo "it never ran its start-up command"))"
 }
 
+# open_in_window STDERR_FILE TITLE EXE ARGS...: the window manager, then the
+# chapter in the background, then its window (in $window) once viewable, its
+# first frame presented and the focus given to it: where every key test
+# starts.
+open_in_window() {
+  local log=$1 title=$2
+  shift 2
+  start_wm
+  start_chapter "$log" "$@"
+  window=$(find_window "$title") || fail "no window titled '$title' appeared"
+  wait_line 0 "presented a frame at"
+  activate "$window"
+}
+
 # start_chapter STDERR_FILE EXE ARGS...: runs the chapter in the background.
 start_chapter() {
   err=$1; shift
@@ -200,11 +214,24 @@ close_with_escape() {
   xdotool keyup Escape 2>/dev/null
 }
 
-# expect_clean_exit SCREENSHOT W H: exit status 0, a clean validation report,
-# and a screenshot of the last frame presented, at W x H.
-expect_clean_exit() {
+# expect_clean_status: the chapter exited 0 with a clean validation report.
+expect_clean_status() {
   [ "$status" -eq 0 ] || fail "exit status $status"
   grep -q "validation: 0 warnings, 0 errors" "$err" || fail "validation was not clean"
+}
+
+# quit_with_escape WINDOW: Escape, then the chapter's lines for the log (its
+# validation messages left out) and expect_clean_status.
+quit_with_escape() {
+  close_with_escape "$1"
+  grep -v '^\[validation' "$err"
+  expect_clean_status
+}
+
+# expect_clean_exit SCREENSHOT W H: expect_clean_status, and a screenshot of
+# the last frame presented, at W x H.
+expect_clean_exit() {
+  expect_clean_status
   grep -q "wrote .* ($2x$3)" "$err" || fail "the screenshot is not of the last size, $2x$3"
   [ -f "$1" ] || fail "no screenshot was written"
 }
