@@ -104,6 +104,7 @@ public:
         for (VkDescriptorSet set : sets)
             vkt::write_buffer_descriptor(device_, set, 5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                          pixels_.buffer, 0, VK_WHOLE_SIZE);
+        if (resolve_) resolve_->use_pixels(pixels_.buffer);
         vkt::one_time_submit(gpu_, [&](VkCommandBuffer cmd) {
             vkCmdFillBuffer(cmd, pixels_.buffer, 0, VK_WHOLE_SIZE, background_);
             vkt::buffer_barrier(

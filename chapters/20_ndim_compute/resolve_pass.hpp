@@ -35,11 +35,12 @@ public:
                 VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT) != 0;
     }
 
-    // Its own set per frame in flight: 0 the pixel buffer, 1 the target's
-    // storage view, both pointed at each frame (the runner may have made a
-    // new target since this slot's last frame, and a new view may even reuse
-    // the old one's handle, so comparing handles cannot tell). BGRA, a specialization
-    // constant, says which way round the view's components lie.
+    // Its own set per frame in flight: 0 the pixel buffer (pointed at when
+    // the buffer is made, use_pixels), 1 the target's storage view, pointed
+    // at each frame (the runner may have made a new target since this
+    // slot's last frame, and a new view may even reuse the old one's handle,
+    // so comparing handles cannot tell). BGRA, a specialization constant,
+    // says which way round the view's components lie.
     explicit ResolvePass(const vkt::Context& context) : device_(context.device) {
         const VkDescriptorSetLayoutBinding bindings[] = {
             {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
@@ -61,6 +62,14 @@ public:
         pipeline_ = vkt::create_compute_pipeline(device_, shader, layout_, &specialization);
     }
 
+    // The pixel buffer, in every frame's set: when ComputeRaster makes it
+    // (at start-up and with the window's size, when no frame is in flight).
+    void use_pixels(VkBuffer pixels) const {
+        for (VkDescriptorSet set : sets_)
+            vkt::write_buffer_descriptor(device_, set, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pixels,
+                                         0, VK_WHOLE_SIZE);
+    }
+
     // [resolve-record]
     // After the rasteriser's writes to the pixel buffer: the target to
     // GENERAL (its old contents do not matter), one invocation per pixel,
@@ -69,8 +78,6 @@ public:
     // frame's rasteriser, which waits for this pass (ComputeRaster::clear).
     void record(const vkt::Frame& frame, VkBuffer pixels, uint32_t background) const {
         const VkDescriptorSet set = sets_[frame.slot];  // its last frame is finished
-        vkt::write_buffer_descriptor(device_, set, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pixels, 0,
-                                     VK_WHOLE_SIZE);
         vkt::write_storage_image_descriptor(device_, set, 1, frame.target_storage);
 
         const VkCommandBuffer cmd = frame.cmd;
