@@ -19,9 +19,7 @@ uint32_t find_memory_type(VkPhysicalDevice physical, uint32_t type_bits,
     throw Error(std::string("no memory type has the properties ") + flags);
 }
 
-// One allocation for one buffer or image: fine for the handful the runner and
-// early chapters make (a real allocator suballocates; see chapter 05).
-static DeviceMemory allocate(VkPhysicalDevice physical, VkDevice device,
+DeviceMemory allocate_memory(VkPhysicalDevice physical, VkDevice device,
                              const VkMemoryRequirements& requirements,
                              VkMemoryPropertyFlags properties) {
     VkMemoryAllocateInfo info{
@@ -50,7 +48,7 @@ Buffer create_buffer(VkPhysicalDevice physical, VkDevice device, VkDeviceSize si
 
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device, buffer, &requirements);
-    out.memory = allocate(physical, device, requirements, properties);
+    out.memory = allocate_memory(physical, device, requirements, properties);
     VKT_CHECK(vkBindBufferMemory(device, buffer, out.memory, 0));
     if (properties & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
         VKT_CHECK(vkMapMemory(device, out.memory, 0, VK_WHOLE_SIZE, 0, &out.mapped));
@@ -89,7 +87,8 @@ Image create_image_2d_mips(VkPhysicalDevice physical, VkDevice device, VkFormat 
 
     VkMemoryRequirements requirements;
     vkGetImageMemoryRequirements(device, image, &requirements);
-    out.memory = allocate(physical, device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    out.memory =
+        allocate_memory(physical, device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     VKT_CHECK(vkBindImageMemory(device, image, out.memory, 0));
 
     VkImageViewCreateInfo view_info{

@@ -200,16 +200,9 @@ Image create_storage_target(VkPhysicalDevice physical, VkDevice device, VkFormat
     out.image = ImageHandle(device, image);
     VkMemoryRequirements requirements;
     vkGetImageMemoryRequirements(device, image, &requirements);
-    const VkMemoryAllocateInfo allocate{
-        .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
-        .allocationSize = requirements.size,
-        .memoryTypeIndex = find_memory_type(physical, requirements.memoryTypeBits,
-                                            VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT),
-    };
-    VkDeviceMemory memory;
-    VKT_CHECK(vkAllocateMemory(device, &allocate, nullptr, &memory));
-    out.memory = DeviceMemory(device, memory);
-    VKT_CHECK(vkBindImageMemory(device, image, memory, 0));
+    out.memory =
+        allocate_memory(physical, device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    VKT_CHECK(vkBindImageMemory(device, image, out.memory, 0));
     out.view = ImageView(device, create_view(device, image, format, usage));
     storage_view =
         ImageView(device, create_view(device, image, storage_format, VK_IMAGE_USAGE_STORAGE_BIT));

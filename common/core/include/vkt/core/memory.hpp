@@ -11,6 +11,13 @@ namespace vkt {
 uint32_t find_memory_type(VkPhysicalDevice physical, uint32_t type_bits,
                           VkMemoryPropertyFlags wanted);
 
+// One allocation for one buffer or image, of the first memory type that
+// suits `requirements` and has `properties`: fine for the handful the runner
+// and early chapters make (a real allocator suballocates; see chapter 05).
+DeviceMemory allocate_memory(VkPhysicalDevice physical, VkDevice device,
+                             const VkMemoryRequirements& requirements,
+                             VkMemoryPropertyFlags properties);
+
 struct Buffer {
     BufferHandle buffer;
     DeviceMemory memory;
