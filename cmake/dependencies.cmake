@@ -36,7 +36,11 @@ endfunction()
 macro(vkt_find_package vkt_package)
   cmake_parse_arguments(_vkt_find "" "VERSION;WHAT;APT;DEBIAN;UBUNTU;FEDORA;ARCH;ELSEWHERE" ""
                         ${ARGN})
-  find_package(${vkt_package} ${_vkt_find_VERSION} QUIET)
+  # A package the build provides itself (VKT_PROVIDED_PACKAGES: the Windows
+  # build's, cmake/windows.cmake) is not looked for.
+  if(NOT "${vkt_package}" IN_LIST VKT_PROVIDED_PACKAGES)
+    find_package(${vkt_package} ${_vkt_find_VERSION} QUIET)
+  endif()
   if(NOT ${vkt_package}_FOUND)
     string(STRIP "${vkt_package} ${_vkt_find_VERSION}" _vkt_find_call)
     vkt_missing_dependency("${_vkt_find_WHAT} (find_package(${_vkt_find_call}))"

@@ -23,9 +23,15 @@
 
 #include "vkt/resources/image_io.hpp"
 
+#ifdef _WIN32  // the Windows build, run under Wine (scripts/windows-build.sh)
+#define WIN32_LEAN_AND_MEAN
+#define NOMINMAX
+#include <windows.h>
+#else
 #include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#endif
 
 #include <algorithm>
 #include <cstdio>
@@ -53,6 +59,66 @@ int fail(const std::string& message) {
     return 1;
 }
 
+#ifdef _WIN32
+// One argument of a Windows command line, quoted as the C runtime parses it:
+// backslashes are literal except before a quote, where they are doubled.
+std::string quoted(const std::string& arg) {
+    if (!arg.empty() && arg.find_first_of(" \t\"") == std::string::npos) return arg;
+    std::string out = "\"";
+    size_t backslashes = 0;
+    for (const char c : arg) {
+        if (c == '\\') {
+            ++backslashes;
+            continue;
+        }
+        out.append(c == '"' ? 2 * backslashes + 1 : backslashes, '\\');
+        backslashes = 0;
+        out += c;
+    }
+    out.append(2 * backslashes, '\\');
+    return out + "\"";
+}
+
+// The Windows form of run() below: CreateProcess with the two files as its
+// standard handles. An unhandled exception (0xC0000005, an access violation,
+// and the like) counts as a crash.
+int run(const std::vector<std::string>& args, const fs::path& out, const fs::path& err) {
+    SECURITY_ATTRIBUTES inherit{sizeof(SECURITY_ATTRIBUTES), nullptr, TRUE};
+    auto create = [&](const fs::path& path) {
+        return CreateFileW(path.c_str(), GENERIC_WRITE, FILE_SHARE_READ, &inherit, CREATE_ALWAYS,
+                           FILE_ATTRIBUTE_NORMAL, nullptr);
+    };
+    HANDLE o = create(out), e = create(err);
+    std::string command;
+    for (const auto& a : args) command += (command.empty() ? "" : " ") + quoted(a);
+    STARTUPINFOA startup{};
+    startup.cb = sizeof(startup);
+    startup.dwFlags = STARTF_USESTDHANDLES;
+    startup.hStdInput = GetStdHandle(STD_INPUT_HANDLE);
+    startup.hStdOutput = o;
+    startup.hStdError = e;
+    PROCESS_INFORMATION process{};
+    const BOOL started = CreateProcessA(nullptr, command.data(), nullptr, nullptr, TRUE, 0, nullptr,
+                                        nullptr, &startup, &process);
+    CloseHandle(o);
+    CloseHandle(e);
+    if (!started) {
+        std::fprintf(stderr, "CreateProcessA failed (error %lu): %s\n", GetLastError(),
+                     command.c_str());
+        return 127;
+    }
+    WaitForSingleObject(process.hProcess, INFINITE);
+    DWORD status = 0;
+    GetExitCodeProcess(process.hProcess, &status);
+    CloseHandle(process.hThread);
+    CloseHandle(process.hProcess);
+    if (status >= 0xC0000000u) {
+        std::fprintf(stderr, "the chapter ended with exception 0x%08lX\n", status);
+        return 128;
+    }
+    return static_cast<int>(status);
+}
+#else
 // Runs argv with stdout and stderr sent to files; returns the exit status, or
 // 128 + signal for a crash (which never counts as a clean failure).
 int run(const std::vector<std::string>& args, const fs::path& out, const fs::path& err) {
@@ -74,6 +140,7 @@ int run(const std::vector<std::string>& args, const fs::path& out, const fs::pat
     if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
     return WEXITSTATUS(status);
 }
+#endif
 
 // Each spec is "x,y,r,g,b" or "x,y,r,g,b,tolerance" (default 1 per channel).
 int check_pixels(const vkt::RgbaImage& actual, const std::vector<std::string>& pixels) {

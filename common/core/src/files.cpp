@@ -5,12 +5,26 @@
 #include <fstream>
 #include <string>
 
+#ifdef _WIN32  // the Windows build (cmake/windows.cmake): no /proc there
+#define WIN32_LEAN_AND_MEAN
+#define NOMINMAX
+#include <windows.h>
+#endif
+
 namespace vkt {
 
 std::filesystem::path executable_dir() {
+#ifdef _WIN32
+    std::wstring self(32768, L'\0');  // the longest path Windows has
+    const DWORD length = GetModuleFileNameW(nullptr, self.data(), static_cast<DWORD>(self.size()));
+    if (length > 0 && length < self.size())
+        return std::filesystem::path(self.substr(0, length)).parent_path();
+    return std::filesystem::current_path();
+#else
     std::error_code error;
     auto self = std::filesystem::read_symlink("/proc/self/exe", error);
     return error ? std::filesystem::current_path() : self.parent_path();
+#endif
 }
 
 std::filesystem::path shader_path(std::string_view chapter, std::string_view glsl_file) {
