@@ -290,8 +290,9 @@ public:
                 ? "anisotropic filtering off"
                 : "anisotropic filtering off (the device has no samplerAnisotropy)";
         std::fprintf(stderr, "09_textures: %s, %ux%u, %u mip level%s (%s), %s\n",
-                     file.filename().c_str(), pixels.width, pixels.height, texture_.mip_levels,
-                     texture_.mip_levels == 1 ? "" : "s", mips.c_str(), filtering.c_str());
+                     file.filename().string().c_str(), pixels.width, pixels.height,
+                     texture_.mip_levels, texture_.mip_levels == 1 ? "" : "s", mips.c_str(),
+                     filtering.c_str());
 
         // [descriptors]
         // One binding, a COMBINED_IMAGE_SAMPLER: image view and sampler

@@ -37,7 +37,7 @@ TEST_CASE("reading a missing or corrupt PNG is an error", "[image]") {
     CHECK_THROWS_AS(vkt::read_png(dir / "vkt_no_such_file.png"), vkt::Error);
     auto bad = dir / "vkt_corrupt.png";
     {
-        std::FILE* f = std::fopen(bad.c_str(), "wb");
+        std::FILE* f = std::fopen(bad.string().c_str(), "wb");
         std::fputs("not a png", f);
         std::fclose(f);
     }

@@ -8,15 +8,20 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 
 namespace vkt {
 
 // Owns a handle created from a parent (usually the VkDevice) and destroyed with
-// Destroy(parent, handle, nullptr).
-template <typename Handle, typename Parent,
-          void (*Destroy)(Parent, Handle, const VkAllocationCallbacks*)>
+// Destroy(parent, handle, nullptr). Destroy is a vkDestroy function, taken by
+// reference: in the Windows build it is volk's function pointer of that name
+// (cmake/windows.cmake), read when the handle is destroyed.
+template <typename Handle, typename Parent, auto& Destroy>
 class Owned {
+    static_assert(std::is_invocable_r_v<void, decltype(Destroy), Parent, Handle,
+                                        const VkAllocationCallbacks*>);
+
 public:
     Owned() = default;
     Owned(Parent parent, Handle handle) : parent_(parent), handle_(handle) {}
