@@ -46,6 +46,11 @@ done
 export VKT_MINGW_DEPS=$deps
 
 # --- The test phase (run by this script under tests/with_xvfb.sh) ------------
+# Pictures that differ under Windows for a reason found and understood: still
+# run and reported, but not counted as failures.
+declare -A known=(
+  [14_physics]="MinGW-w64's sinf/cosf/tanf differ from glibc's in the last bit (so do atan2f, acosf, sin, cos, exp, pow; sqrt agrees); the 1000 boxes' random orientations (common/domains/src/physics_scene.cpp) start a bit apart and 1200 steps of a chaotic pile settle them elsewhere; the two stacks match"
+)
 run_tests() {
   local bin=$build/bin
   mkdir -p "$results"
@@ -58,58 +63,74 @@ run_tests() {
   local start=$SECONDS
   wineboot --init >"$results/wineboot.txt" 2>&1
   echo "wine prefix ready ($((SECONDS - start)) s): $WINEPREFIX"
-  local passed=0 total=0 failures=()
+  local passed=0 total=0 failures=() differences=()
   note() {  # note NAME STATUS REASON
     total=$((total + 1))
-    if [ "$2" -eq 0 ]; then passed=$((passed + 1)); echo "PASS $1"; else
-      failures+=("$1: $3"); echo "FAIL $1: $3"; fi
+    if [ "$2" -eq 0 ]; then passed=$((passed + 1)); echo "PASS $1"
+    elif [ -n "${known[${1%.*}]:-}" ]; then
+      differences+=("$1: $3 -- known: ${known[${1%.*}]}"); echo "KNOWN $1: $3"
+    else failures+=("$1: $3"); echo "FAIL $1: $3"; fi
   }
+  reason() { grep -h -E '^FAIL' "$results/$1.check.txt" | head -n 1; }
 
   # Unit tests: one Catch2 run; each failing test case is named.
   start=$SECONDS
   wine "$bin/vkt_unit_tests.exe" --reporter compact >"$results/unit.txt" 2>&1
   local rc=$?
   local summary
-  summary=$(grep -E '^(All tests passed|test cases:|Failed )' "$results/unit.txt" | tail -n 1)
+  summary=$(grep -E '^(All tests passed|test cases:)' "$results/unit.txt" | tail -n 1 | tr -s ' ')
   echo "unit tests ($((SECONDS - start)) s): $summary"
   if [ $rc -eq 0 ]; then note unit_tests 0 ""; else
-    local failed_cases
-    failed_cases=$(grep -E ': FAILED:' "$results/unit.txt" | sed -E 's/^([^:]*:[0-9]+): FAILED:.*/\1/' |
-                   sort -u | tr '\n' ' ')
-    note unit_tests 1 "exit $rc; $summary; failed at: $failed_cases"
+    local failed_at
+    failed_at=$(grep -E ': failed:' "$results/unit.txt" | sed -E 's/: failed:.*//' | sort -u | tr '\n' ' ')
+    note unit_tests 1 "exit $rc; $summary; failed at: $failed_at"
   fi
 
-  # The text chapters: exit 0 and what they print.
   check() {  # check NAME EXE CHECKER-ARGS... -- CHAPTER-ARGS...
     local name=$1 exe=$2; shift 2
     wine "$bin/vkt_chapter_check.exe" --exe "$bin/$exe.exe" --out "$results" --name "$name" "$@" \
       >"$results/$name.check.txt" 2>&1
   }
+  # The text chapters: exit 0 and what they print.
   check 01_instance 01_instance --expect "Vulkan instance version: 1\\.[3-9]" \
     --expect "[1-9][0-9]* physical devices:" -- --no-validation
-  note 01_instance $? "$(grep -h '^FAIL' "$results/01_instance.check.txt" | head -n 1)"
+  note 01_instance $? "$(reason 01_instance)"
   check 02_device 02_device --expect "logical device created" -- --no-validation
-  note 02_device $? "$(grep -h '^FAIL' "$results/02_device.check.txt" | head -n 1)"
+  note 02_device $? "$(reason 02_device)"
 
-  # Every drawing chapter's golden test, offscreen and without validation.
-  local chapter pixels args
-  while IFS='|' read -r chapter pixels args; do
-    [ -f "$bin/$chapter.exe" ] || { note "$chapter" 1 "no $chapter.exe"; continue; }
-    args=$(sed -e 's/--headless/--offscreen/g' -e 's/--validation/--no-validation/g' <<<"$args")
-    start=$SECONDS
-    # shellcheck disable=SC2086  # pixels and args are words
-    check "$chapter" "$chapter" --golden "$root/tests/golden/$chapter.png" $pixels -- $args
-    rc=$?
-    local line
-    line=$(grep -h -E '^picture|^FAIL' "$results/$chapter.check.txt" | tr '\n' ' ')
-    echo "  $chapter ($((SECONDS - start)) s): $line"
-    note "$chapter" $rc "$(grep -h '^FAIL' "$results/$chapter.check.txt" | head -n 1)"
-  done <"$bin/golden_tests.txt"
+  # Every drawing chapter's golden test, offscreen and without validation;
+  # then the same in a window (GLFW's Win32 window, which Wine shows on the X
+  # server), which must say it drew into the window's swapchain.
+  local chapter pixels args line mode
+  for mode in offscreen window; do
+    while IFS='|' read -r chapter pixels args; do
+      local name=$chapter
+      local extra=()
+      args=${args//--validation/--no-validation}
+      if [ $mode = offscreen ]; then args=${args//--headless/--offscreen}; else
+        args=${args//--headless/}
+        name=$chapter.window
+        extra=(--expect "$chapter: .*, window B8G8R8A8_SRGB [A-Z]+ x[0-9]+ drawn into,")
+      fi
+      [ -f "$bin/$chapter.exe" ] || { note "$name" 1 "no $chapter.exe"; continue; }
+      start=$SECONDS
+      # shellcheck disable=SC2086  # pixels and args are words
+      check "$name" "$chapter" --golden "$root/tests/golden/$chapter.png" $pixels "${extra[@]}" -- $args
+      rc=$?
+      line=$(grep -h -E '^picture' "$results/$name.check.txt")
+      echo "  $name ($((SECONDS - start)) s): ${line:-no picture}"
+      note "$name" $rc "$(reason "$name")"
+    done <"$bin/golden_tests.txt"
+  done
+  wineserver -k 2>/dev/null  # before the X server goes
 
-  echo "windows-build: $passed of $total passed under $(wine --version 2>/dev/null)"
-  local failure
-  for failure in "${failures[@]}"; do echo "  not passed: $failure"; done
-  [ "$passed" -eq "$total" ]
+  {
+    echo "windows-build: $passed of $total passed, ${#differences[@]} known differences, ${#failures[@]} failures ($(wine --version 2>/dev/null), $(x86_64-w64-mingw32-g++-posix -dumpversion) MinGW-w64 g++, validation off)"
+    local item
+    for item in "${differences[@]}"; do echo "  known difference: $item"; done
+    for item in "${failures[@]}"; do echo "  FAILED: $item"; done
+  } | tee "$results/summary.txt"
+  [ ${#failures[@]} -eq 0 ]
 }
 if [ "$phase" = tests ]; then
   run_tests

@@ -26,9 +26,13 @@ const char* presentation_name(Presentation p) {
 namespace {
 
 bool has_display() {
+#ifdef _WIN32
+    return true;  // a desktop is always there (where GLFW cannot open a window, it says so)
+#else
     for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY"})
         if (const char* value = std::getenv(name); value && *value) return true;
     return false;
+#endif
 }
 
 }  // namespace
