@@ -58,13 +58,23 @@ add_library(glm::glm ALIAS vkt_glm_headers)
 
 # tinygltf's stb_image and stb_image_write are left out: the loader decodes
 # images itself (SetImageLoader, vkt::decode_image) and writes no files.
+# TinyGLTF::TinyGLTF is an imported target, as on Linux, so that the
+# configure-time checks of its header (cmake/tinygltf_api.cmake) can use it:
+# inside such a check the compiled library does not exist, and only the
+# header comes along.
 add_library(vkt_tinygltf STATIC ${PROJECT_SOURCE_DIR}/common/scene/src/windows/tinygltf.cpp)
-target_include_directories(vkt_tinygltf SYSTEM PUBLIC ${VKT_HOST_HEADERS})
-target_compile_definitions(vkt_tinygltf PUBLIC TINYGLTF_NO_STB_IMAGE TINYGLTF_NO_STB_IMAGE_WRITE)
-add_library(TinyGLTF::TinyGLTF ALIAS vkt_tinygltf)
+add_library(TinyGLTF::TinyGLTF INTERFACE IMPORTED)
+target_include_directories(TinyGLTF::TinyGLTF SYSTEM INTERFACE ${VKT_HOST_HEADERS})
+target_compile_definitions(TinyGLTF::TinyGLTF INTERFACE
+  TINYGLTF_NO_STB_IMAGE TINYGLTF_NO_STB_IMAGE_WRITE)
+target_link_libraries(TinyGLTF::TinyGLTF INTERFACE
+  $<$<TARGET_EXISTS:vkt_tinygltf>:vkt_tinygltf>)
+target_include_directories(vkt_tinygltf SYSTEM PRIVATE ${VKT_HOST_HEADERS})
+target_compile_definitions(vkt_tinygltf PRIVATE TINYGLTF_NO_STB_IMAGE TINYGLTF_NO_STB_IMAGE_WRITE)
 
 # vkt_find_package looks for none of these three (cmake/dependencies.cmake).
 set(VKT_PROVIDED_PACKAGES Vulkan glm TinyGLTF)
 set(Vulkan_FOUND TRUE)
 set(glm_FOUND TRUE)
 set(TinyGLTF_FOUND TRUE)
+set(TinyGLTF_VERSION "${VKT_HOST_INCLUDE}/tiny_gltf.h")  # named in tinygltf_api.cmake's message
