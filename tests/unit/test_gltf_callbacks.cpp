@@ -21,8 +21,9 @@ TEST_CASE("a refused SetFsCallbacks is an error that names it", "[gltf]") {
                         ContainsSubstring("tinygltf::SetFsCallbacks refused") &&
                             ContainsSubstring("no file of the model is read without them"));
 #else
-    SKIP("this tinygltf's SetFsCallbacks returns nothing and cannot refuse (tinygltf 2.7, Debian "
-         "12); the check runs against tinygltf 2.9 (Debian 13: scripts/test-in-root.sh trixie)");
+    SKIP(
+        "this tinygltf's SetFsCallbacks returns nothing and cannot refuse (tinygltf 2.7, Debian "
+        "12); the check runs against tinygltf 2.9 (Debian 13: scripts/test-in-root.sh trixie)");
 #endif
 }
 
