@@ -132,6 +132,7 @@ if [ "$quick_status" -eq 0 ]; then
   # Its own network namespace: loopback only, its own X sockets.
   export -f inside
   export root
+  # shellcheck disable=SC2016 # $1 is expanded by the inner bash
   unshare --net -- bash -c 'ip link set lo up && inside "$1" "cmake --workflow --preset release"' \
     _ "$logs/workflow.log" || workflow_status=$?
   workflow_time=$((SECONDS - t))
@@ -151,15 +152,13 @@ fi
 summary="$dist at $short: quickstart.sh exit $quick_status ($(minutes $quick_time) min), cmake --workflow --preset release exit $workflow_status ($(minutes $workflow_time) min), $tests; $(minutes $((SECONDS - start))) min in all"
 failures=$(sed -n '/The following tests FAILED/,$p' "$logs/workflow.log" 2>/dev/null | grep -E '^\s+[0-9]+ - ' || true)
 
+version() { chroot "$root" dpkg-query -W -f="\${Package} \${Version}" "$1" 2>/dev/null || echo "$1 unknown"; }
 if $record; then
   mkdir -p "$repo/tests/roots"
   {
     echo "# scripts/test-in-root.sh $dist, $(date -u '+%Y-%m-%d %H:%M UTC'), on $(nproc) cores"
     echo "$summary"
-    echo "lavapipe: $(chroot "$root" dpkg-query -W -f='mesa-vulkan-drivers ${Version}' mesa-vulkan-drivers 2>/dev/null || echo unknown)," \
-      "$(chroot "$root" dpkg-query -W -f='libtinygltf-dev ${Version}' libtinygltf-dev 2>/dev/null || echo unknown)," \
-      "$(chroot "$root" dpkg-query -W -f='catch2 ${Version}' catch2 2>/dev/null || echo unknown)," \
-      "$(chroot "$root" dpkg-query -W -f='g++ ${Version}' g++ 2>/dev/null || echo unknown)"
+    echo "$(version mesa-vulkan-drivers), $(version libtinygltf-dev), $(version catch2), $(version g++)"
     [ -z "$failures" ] || printf 'failed:\n%s\n' "$failures"
   } >"$repo/tests/roots/$dist.txt"
   say "recorded in tests/roots/$dist.txt"
