@@ -409,6 +409,7 @@ int main(int argc, char** argv) {
     // where they can (resolve_pass.hpp): a storage view of it, written
     // without a format qualifier.
     spec.storage_target = true;
+    spec.transfers_into_target = true;  // where they cannot, they copy their pixels in
     spec.requirements.optional_features = {VKT_FEATURE_10(shaderStorageImageWriteWithoutFormat)};
     // --scene, --dim, --projection and --motion: vkt/scene/ndim_options.hpp.
     spec.options = vkt::ndim::scene_options();
