@@ -1,16 +1,11 @@
 // Chapter 03: the swapchain and the frame loop.
 //
-// The first picture on a screen. The harness (vkt/frame/harness.hpp) opens a
-// window, or a headless surface, or neither (--offscreen), and the instance
-// and device for it, as chapters 01 and 02 taught; it also keeps the command
-// line's promises (--frames, --screenshot, --benchmark). Everything between
-// the surface and the picture is this file: the swapchain, the frame slots,
-// acquiring, recording, submitting and presenting, and recreating the
-// swapchain when the window changes. From chapter 04 on, the runner does the
-// same, and a chapter only says what to draw.
-//
-// What each frame shows is the simplest visible thing: the whole image
-// cleared to one colour, which changes with time.
+// The harness (vkt/frame/harness.hpp) opens a window, a headless surface or
+// neither (--offscreen), the instance and device for it (chapters 01, 02), and
+// keeps the command line's promises (--frames, --screenshot, --benchmark).
+// From the surface to the picture is this file: the swapchain, frame slots,
+// acquire, record, submit, present, recreation when the window changes. The
+// picture is the simplest there is: one colour, changing with time.
 
 #include "vkt/core/memory.hpp"
 #include "vkt/core/swapchain.hpp"
@@ -27,8 +22,7 @@ namespace {
 // [frame-slot]
 constexpr uint32_t frames_in_flight = 2;
 
-// What one frame in progress needs, so that the CPU can record the next frame
-// into one slot while the GPU still works on the other.
+// One frame in progress: the CPU records into one slot while the GPU works on the other.
 struct FrameSlot {
     vkt::CommandPool pool;
     VkCommandBuffer cmd = VK_NULL_HANDLE;
@@ -54,9 +48,8 @@ struct Swapchain {
 // [/swapchain-struct]
 
 // [barrier]
-// One image barrier: the work of src_stage before it finishes (and its
-// src_access writes become visible) before dst_stage's dst_access after it
-// begins, and in between the image changes layout.
+// One image barrier: src_stage's work before it ends, and its src_access writes
+// are made visible, before dst_stage's dst_access after it; between, the layout changes.
 void transition(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImageLayout to,
                 VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
                 VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
@@ -86,8 +79,6 @@ class FrameLoop {
 public:
     explicit FrameLoop(vkt::Harness& harness);
     ~FrameLoop() { vkDeviceWaitIdle(device_); }  // nothing may be destroyed while in use
-    FrameLoop(const FrameLoop&) = delete;
-    FrameLoop& operator=(const FrameLoop&) = delete;
     void run();
 
 private:
@@ -99,10 +90,8 @@ private:
     vkt::Destination destination() const;
 
     vkt::Harness& harness_;
-    const vkt::Options& options_;
-    VkPhysicalDevice physical_;
-    VkDevice device_;
-    VkQueue queue_;
+    const bool screenshot_;  // --screenshot: read back what each frame shows
+    const vkt::Device& device_;
     std::optional<Swapchain> swapchain_;  // none offscreen
     vkt::Image own_;  // our own _SRGB image, where frames do not go straight into the swapchain's
     std::vector<FrameSlot> slots_;
@@ -111,10 +100,8 @@ private:
 
 FrameLoop::FrameLoop(vkt::Harness& harness)
     : harness_(harness),
-      options_(harness.options()),
-      physical_(harness.device().physical()),
-      device_(harness.device()),
-      queue_(harness.device().queue()) {
+      screenshot_(!harness.options().screenshot.empty()),
+      device_(harness.device()) {
     if (harness.surface()) create_swapchain(VK_NULL_HANDLE);
     create_own_image();
 
@@ -122,7 +109,7 @@ FrameLoop::FrameLoop(vkt::Harness& harness)
     for (uint32_t i = 0; i < frames_in_flight; ++i) {
         FrameSlot slot;
         // TRANSIENT: the pool's buffer is recorded afresh every frame.
-        slot.pool = vkt::create_command_pool(device_, harness.device().queue_family(),
+        slot.pool = vkt::create_command_pool(device_, device_.queue_family(),
                                              VK_COMMAND_POOL_CREATE_TRANSIENT_BIT);
         const VkCommandBufferAllocateInfo allocate{
             .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
@@ -143,17 +130,18 @@ void FrameLoop::create_swapchain(VkSwapchainKHR old) {
     // [surface-queries]
     // What the surface allows: sizes, image counts, usages, transforms...
     const VkSurfaceKHR surface = harness_.surface();
+    const VkPhysicalDevice physical = device_.physical();
     VkSurfaceCapabilitiesKHR allows;
-    VKT_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(physical_, surface, &allows));
+    VKT_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(physical, surface, &allows));
     // ...the formats it can show, each with a colour space...
     uint32_t n = 0;
-    VKT_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(physical_, surface, &n, nullptr));
+    VKT_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(physical, surface, &n, nullptr));
     std::vector<VkSurfaceFormatKHR> formats(n);
-    VKT_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(physical_, surface, &n, formats.data()));
+    VKT_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(physical, surface, &n, formats.data()));
     // ...and how it can take our images to the screen.
-    VKT_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(physical_, surface, &n, nullptr));
+    VKT_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(physical, surface, &n, nullptr));
     std::vector<VkPresentModeKHR> modes(n);
-    VKT_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(physical_, surface, &n, modes.data()));
+    VKT_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(physical, surface, &n, modes.data()));
     // [/surface-queries]
 
     // [swapchain-choices]
@@ -165,14 +153,13 @@ void FrameLoop::create_swapchain(VkSwapchainKHR old) {
     const VkSurfaceFormatKHR format = vkt::choose_surface_format(formats);
     next.format = format.format;
     next.extent = vkt::choose_extent(allows, harness_.wanted_extent());
-    next.mode = vkt::choose_present_mode(modes, options_.benchmark);
-    const bool screenshot = !options_.screenshot.empty();
-    next.readable = screenshot && (allows.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    next.mode = vkt::choose_present_mode(modes, harness_.options().benchmark);
+    next.readable = screenshot_ && (allows.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
     VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT;  // what we will do with the images
     if (next.readable) usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     // Straight in only where the image encodes our linear colour (an _SRGB
     // format) and, for --screenshot, can be read back.
-    next.direct = !options_.copy_to_swapchain && next.readable == screenshot &&
+    next.direct = !harness_.options().copy_to_swapchain && next.readable == screenshot_ &&
                   next.format == vkt::render_format_for(next.format);
     // OPAQUE: the window shows our colour, not what lies behind it. A surface
     // without it offers something else; take the first it has.
@@ -220,10 +207,9 @@ void FrameLoop::create_own_image() {
     const VkFormat format =
         swapchain_ ? vkt::render_format_for(swapchain_->format) : VK_FORMAT_R8G8B8A8_SRGB;
     const VkExtent2D extent = swapchain_ ? swapchain_->extent : harness_.wanted_extent();
-    // Cleared (TRANSFER_DST), then copied from (TRANSFER_SRC). The helper gives
-    // the image a view, which needs a use it can serve: COLOR_ATTACHMENT, which
-    // the runner draws into from chapter 04 on.
-    own_ = vkt::create_image_2d(physical_, device_, format, extent,
+    // Cleared, then copied from; and COLOR_ATTACHMENT, for the view the helper
+    // makes (a view needs a use it can serve; chapter 04 draws through it).
+    own_ = vkt::create_image_2d(device_.physical(), device_, format, extent,
                                 VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                     VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
                                 VK_IMAGE_ASPECT_COLOR_BIT);
@@ -238,8 +224,7 @@ void FrameLoop::run() {
         if (next == vkt::Harness::Next::restored) recreate();  // back from being minimised
         if (draw_frame(index)) ++index;  // false: the swapchain was recreated instead
     }
-    // The GPU may still be working on the last frames: let it finish before
-    // the screenshot is read and anything is destroyed.
+    // Let the GPU finish the last frames before the screenshot is read.
     VKT_CHECK(vkDeviceWaitIdle(device_));
     harness_.finish(destination(), last_slot_ ? &slots_[*last_slot_].readback : nullptr);
 }
@@ -280,14 +265,13 @@ bool FrameLoop::draw_frame(uint64_t index) {
 
     // [submit]
     // Wait for the acquired image at the stage of the first command that
-    // writes it (the clear straight in, or the copy); when every command is
-    // done, signal the image's ready_to_present for the present, and the
-    // slot's fence for the CPU.
-    const bool direct = swapchain_ && swapchain_->direct;
+    // writes it (the clear straight in, or the copy); when all is done, signal
+    // the image's ready_to_present for the present, the slot's fence for us.
     const VkSemaphoreSubmitInfo wait{
         .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
         .semaphore = slot.image_acquired,
-        .stageMask = direct ? VK_PIPELINE_STAGE_2_CLEAR_BIT : VK_PIPELINE_STAGE_2_COPY_BIT,
+        .stageMask = swapchain_ && swapchain_->direct ? VK_PIPELINE_STAGE_2_CLEAR_BIT
+                                                      : VK_PIPELINE_STAGE_2_COPY_BIT,
     };
     const VkSemaphoreSubmitInfo signal{
         .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
@@ -307,7 +291,7 @@ bool FrameLoop::draw_frame(uint64_t index) {
         .signalSemaphoreInfoCount = swapchain_ ? 1u : 0u,
         .pSignalSemaphoreInfos = &signal,
     };
-    VKT_CHECK(vkQueueSubmit2(queue_, 1, &submit, slot.done));
+    VKT_CHECK(vkQueueSubmit2(device_.queue(), 1, &submit, slot.done));
     // [/submit]
     last_slot_ = slot_index;
     if (!swapchain_) {  // offscreen: the frame stays in our own image
@@ -316,8 +300,7 @@ bool FrameLoop::draw_frame(uint64_t index) {
     }
 
     // [present]
-    // Hand the image to the presentation engine, once ready_to_present says
-    // its frame is finished.
+    // To the presentation engine, once ready_to_present says the frame is done.
     const VkSwapchainKHR handle = swapchain_->handle;
     const VkSemaphore ready = swapchain_->ready_to_present[image_index];
     const VkPresentInfoKHR present{
@@ -328,7 +311,7 @@ bool FrameLoop::draw_frame(uint64_t index) {
         .pSwapchains = &handle,
         .pImageIndices = &image_index,
     };
-    const VkResult presented = vkQueuePresentKHR(queue_, &present);
+    const VkResult presented = vkQueuePresentKHR(device_.queue(), &present);
     if (presented != VK_ERROR_OUT_OF_DATE_KHR) vkt::check(presented, "vkQueuePresentKHR");
     harness_.note_presented(swapchain_->extent);
     // The frame was drawn either way; the next one needs a new swapchain if the
@@ -363,28 +346,24 @@ void FrameLoop::record(uint32_t slot_index, uint32_t image_index, double time) {
     // [clear]
     // The image we clear: the swapchain's, or our own. Its old contents do not
     // matter (from UNDEFINED, the driver may drop them), but it must not be
-    // written too early. The swapchain image: not before the acquire
-    // semaphore, which the submit waits for at the CLEAR stage, so the barrier
-    // starts there. Our own: not before the last frame's clear and copy of it.
+    // written too early: the swapchain image not before the acquire semaphore,
+    // which the submit waits for at the CLEAR stage, so the barrier starts
+    // there; our own not before the last frame's copy (or read) of it.
     const VkImage cleared = direct ? image : own_.image.get();
     transition(cmd, cleared, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-               direct ? VK_PIPELINE_STAGE_2_CLEAR_BIT
-                      : VK_PIPELINE_STAGE_2_CLEAR_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-               direct ? VK_ACCESS_2_NONE : VK_ACCESS_2_TRANSFER_WRITE_BIT,
-               VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+               direct ? VK_PIPELINE_STAGE_2_CLEAR_BIT : VK_PIPELINE_STAGE_2_COPY_BIT,
+               VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
     const VkImageSubresourceRange whole{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     vkCmdClearColorImage(cmd, cleared, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &colour, 1, &whole);
     // [/clear]
     harness_.gpu_timer().end(cmd, slot_index);  // what follows is presentation, not the frame
 
     // [copy-in]
-    // Where the image that goes on screen stands now: its layout, and the
-    // stage and access of its last write.
+    // Where the image that goes on screen stands: layout, and its last write.
     VkImageLayout layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
     VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_CLEAR_BIT;
     VkAccessFlags2 access = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-    const bool screenshot = !options_.screenshot.empty();
-    if (!direct && (swapchain_ || screenshot))  // our image is copied from: clear first
+    if (!direct)  // our image, ready to be copied (or read back) once the clear is done
         transition(cmd, own_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
                    VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
@@ -406,19 +385,19 @@ void FrameLoop::record(uint32_t slot_index, uint32_t image_index, double time) {
     // [/copy-in]
 
     // [read-back]
-    // --screenshot: copy what this frame shows into the slot's host-visible
-    // buffer (the helper ends with a barrier to the HOST stage). The
-    // swapchain image where we may read it, else our own.
-    if (screenshot && swapchain_ && swapchain_->readable) {
+    // --screenshot: what this frame shows, into the slot's host-visible buffer
+    // (the helper ends with a barrier to the HOST stage). The swapchain image
+    // where we may read it, else our own.
+    if (screenshot_ && swapchain_ && swapchain_->readable) {
         transition(cmd, image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, stage, access,
                    VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-        vkt::record_readback(physical_, device_, cmd, image, swapchain_->format, swapchain_->extent,
-                             slot.readback);
+        vkt::record_readback(device_.physical(), device_, cmd, image, swapchain_->format,
+                             swapchain_->extent, slot.readback);
         layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
         stage = VK_PIPELINE_STAGE_2_COPY_BIT;
         access = VK_ACCESS_2_NONE;  // after a read, the order is all that matters
-    } else if (screenshot) {
-        vkt::record_readback(physical_, device_, cmd, own_.image, own_.format, own_.extent,
+    } else if (screenshot_) {
+        vkt::record_readback(device_.physical(), device_, cmd, own_.image, own_.format, own_.extent,
                              slot.readback);
     }
     // [/read-back]
