@@ -83,7 +83,6 @@ uint32_t choose_image_count(const VkSurfaceCapabilitiesKHR& capabilities) {
 
 Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR surface,
                      const SwapchainRequest& request, VkSwapchainKHR old_swapchain) {
-    // [create-swapchain]
     VkSurfaceCapabilitiesKHR capabilities;
     VKT_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(physical, surface, &capabilities));
 
@@ -146,7 +145,6 @@ Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR su
     images_.resize(count);
     VKT_CHECK(vkGetSwapchainImagesKHR(device, swapchain, &count, images_.data()));
     for (uint32_t i = 0; i < count; ++i) ready_to_present_.push_back(create_semaphore(device));
-    // [/create-swapchain]
 
     // [swapchain-views]
     // To render into an image, a pipeline sees it through a view: which
