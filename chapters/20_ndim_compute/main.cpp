@@ -18,6 +18,7 @@
 #include "compute_raster.hpp"
 #include "scene_state.hpp"
 #include "vkt/core/barrier.hpp"
+#include "vkt/core/check.hpp"
 #include "vkt/domains/ndim.hpp"
 #include "vkt/frame/runner.hpp"
 #include "vkt/frame/stats.hpp"
@@ -36,7 +37,6 @@
 #include <cstdio>
 #include <cstring>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -367,7 +367,7 @@ private:
                      "tolerance %g, %zu visibility mismatches\n",
                      c.vertices, c.hidden, c.position, c.depth, tolerance, c.mismatched);
         if (!(c.position <= tolerance && c.depth <= tolerance) || c.mismatched != 0)
-            throw std::runtime_error("verify: the GPU's projected vertices differ from the CPU's");
+            throw vkt::Error("verify: the GPU's projected vertices differ from the CPU's");
     }
     // [/verify]
 
