@@ -14,12 +14,18 @@ if(NOT TinyGLTF_FOUND AND NOT TARGET vkt_tinygltf)
   find_path(VKT_NLOHMANN_JSON_INCLUDE_DIR nlohmann/json.hpp)
   if(VKT_TINYGLTF_INCLUDE_DIR AND VKT_NLOHMANN_JSON_INCLUDE_DIR)
     add_library(vkt_tinygltf STATIC ${CMAKE_CURRENT_LIST_DIR}/tinygltf_implementation.cpp)
-    target_include_directories(vkt_tinygltf SYSTEM PUBLIC ${VKT_TINYGLTF_INCLUDE_DIR}
-                                                   PRIVATE ${VKT_NLOHMANN_JSON_INCLUDE_DIR})
-    target_compile_definitions(vkt_tinygltf
-      PUBLIC TINYGLTF_NO_STB_IMAGE TINYGLTF_NO_STB_IMAGE_WRITE
-      PRIVATE $<$<CXX_COMPILER_ID:MSVC>:_CRT_SECURE_NO_WARNINGS>)
-    add_library(TinyGLTF::TinyGLTF ALIAS vkt_tinygltf)
+    target_include_directories(vkt_tinygltf SYSTEM PRIVATE ${VKT_TINYGLTF_INCLUDE_DIR}
+                                                           ${VKT_NLOHMANN_JSON_INCLUDE_DIR})
+    target_compile_definitions(vkt_tinygltf PRIVATE TINYGLTF_NO_STB_IMAGE TINYGLTF_NO_STB_IMAGE_WRITE
+                                                    $<$<CXX_COMPILER_ID:MSVC>:_CRT_SECURE_NO_WARNINGS>)
+    # What the chapters link: an imported target, as Debian's is, so that a
+    # configure-time check of the header (cmake/tinygltf_api.cmake) can use it
+    # too; there the compiled part does not exist and is left out.
+    add_library(TinyGLTF::TinyGLTF INTERFACE IMPORTED)
+    set_target_properties(TinyGLTF::TinyGLTF PROPERTIES
+      INTERFACE_INCLUDE_DIRECTORIES "${VKT_TINYGLTF_INCLUDE_DIR}"
+      INTERFACE_COMPILE_DEFINITIONS "TINYGLTF_NO_STB_IMAGE;TINYGLTF_NO_STB_IMAGE_WRITE"
+      INTERFACE_LINK_LIBRARIES "$<TARGET_NAME_IF_EXISTS:vkt_tinygltf>")
     set(TinyGLTF_FOUND TRUE)
     message(STATUS "tinygltf: header-only (${VKT_TINYGLTF_INCLUDE_DIR}), compiled here")
   endif()

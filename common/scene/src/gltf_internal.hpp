@@ -29,6 +29,11 @@ namespace vkt::gltf_detail {
 // data: URI that does not decode.
 tinygltf::Model parse_gltf_file(const std::filesystem::path& path);
 
+// gltf.SetFsCallbacks(callbacks), and where tinygltf says it refused them
+// (2.9 and later answer; 2.7 cannot refuse), an Error naming SetFsCallbacks:
+// without our callbacks tinygltf would read any file a URI names.
+void use_fs_callbacks(tinygltf::TinyGLTF& gltf, const tinygltf::FsCallbacks& callbacks);
+
 // What an accessor may hold for each use, as the glTF 2.0 specification lists it.
 struct AllowedFormat {
     int type;
