@@ -8,12 +8,12 @@
 // 6) and keeps its own buffers in bindings 7 to 9.
 
 #include "compute_raster.hpp"
+#include "vkt/core/check.hpp"
 #include "vkt/core/device.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <stdexcept>
 #include <string>
 
 namespace ch20 {
@@ -53,10 +53,10 @@ public:
         if (!(subgroups.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) ||
             !(subgroups.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT) ||
             vkt::hidden_by_tests(flag))
-            throw std::runtime_error(std::string("--raster binned needs subgroup arithmetic in "
-                                                 "compute shaders (") +
-                                     flag + "), which " + properties.properties.deviceName +
-                                     " lacks: use --raster compute");
+            throw vkt::Error(std::string("--raster binned needs subgroup arithmetic in "
+                                         "compute shaders (") +
+                             flag + "), which " + properties.properties.deviceName +
+                             " lacks: use --raster compute");
     }
     // [/subgroups]
 
@@ -212,7 +212,7 @@ public:
                      "lines), %zu differ\n",
                      extent.width, extent.height, lit, differ);
         if (differ != 0)
-            throw std::runtime_error(
+            throw vkt::Error(
                 "verify: the binned rasteriser's pixel (" + std::to_string(first % extent.width) +
                 ", " + std::to_string(first / extent.width) + ") differs from the compute one's");
     }

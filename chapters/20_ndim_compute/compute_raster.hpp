@@ -13,6 +13,7 @@
 #include "scene_state.hpp"
 
 #include "vkt/core/barrier.hpp"
+#include "vkt/core/check.hpp"
 #include "vkt/frame/runner.hpp"
 #include "vkt/resources/compute.hpp"
 #include "vkt/resources/descriptors.hpp"
@@ -21,7 +22,6 @@
 
 #include <optional>
 #include <span>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -38,7 +38,7 @@ public:
         : gpu_(context.gpu()), device_(context.device), line_total_(line_total) {
         if (context.color_format != VK_FORMAT_B8G8R8A8_SRGB &&
             context.color_format != VK_FORMAT_R8G8B8A8_SRGB)
-            throw std::runtime_error(
+            throw vkt::Error(
                 "--raster compute: the colour target is neither "
                 "B8G8R8A8_SRGB nor R8G8B8A8_SRGB");
         const bool bgra = context.color_format == VK_FORMAT_B8G8R8A8_SRGB;
@@ -91,11 +91,11 @@ public:
         // storage-buffer range (at least 128 MiB: 5,792x5,792 pixels).
         const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
         if (bytes > max_storage_range_)
-            throw std::runtime_error("--raster compute: " + std::to_string(extent.width) + "x" +
-                                     std::to_string(extent.height) + " needs a pixel buffer of " +
-                                     std::to_string(bytes) +
-                                     " bytes, more than this device's maxStorageBufferRange (" +
-                                     std::to_string(max_storage_range_) + ")");
+            throw vkt::Error("--raster compute: " + std::to_string(extent.width) + "x" +
+                             std::to_string(extent.height) + " needs a pixel buffer of " +
+                             std::to_string(bytes) +
+                             " bytes, more than this device's maxStorageBufferRange (" +
+                             std::to_string(max_storage_range_) + ")");
         pixels_ = vkt::create_buffer(gpu_.physical, device_, bytes,
                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                          VK_BUFFER_USAGE_TRANSFER_DST_BIT |

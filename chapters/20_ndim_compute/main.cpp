@@ -18,6 +18,7 @@
 #include "compute_raster.hpp"
 #include "scene_state.hpp"
 #include "vkt/core/barrier.hpp"
+#include "vkt/core/check.hpp"
 #include "vkt/domains/ndim.hpp"
 #include "vkt/frame/runner.hpp"
 #include "vkt/frame/stats.hpp"
@@ -36,7 +37,6 @@
 #include <cstdio>
 #include <cstring>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -367,7 +367,7 @@ private:
                      "tolerance %g, %zu visibility mismatches\n",
                      c.vertices, c.hidden, c.position, c.depth, tolerance, c.mismatched);
         if (!(c.position <= tolerance && c.depth <= tolerance) || c.mismatched != 0)
-            throw std::runtime_error("verify: the GPU's projected vertices differ from the CPU's");
+            throw vkt::Error("verify: the GPU's projected vertices differ from the CPU's");
     }
     // [/verify]
 
@@ -409,6 +409,7 @@ int main(int argc, char** argv) {
     // where they can (resolve_pass.hpp): a storage view of it, written
     // without a format qualifier.
     spec.storage_target = true;
+    spec.transfers_into_target = true;  // where they cannot, they copy their pixels in
     spec.requirements.optional_features = {VKT_FEATURE_10(shaderStorageImageWriteWithoutFormat)};
     // --scene, --dim, --projection and --motion: vkt/scene/ndim_options.hpp.
     spec.options = vkt::ndim::scene_options();
