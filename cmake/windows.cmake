@@ -1,8 +1,8 @@
 # Windows executables cross-built on Debian with MinGW-w64 (the toolchain is
 # cmake/mingw-w64-x86_64.cmake; scripts/windows-build.sh builds everything and
 # runs it under Wine). Included from the top-level CMakeLists.txt when the
-# target is Windows, in place of the Linux finds of the three dependencies
-# whose Debian packages are only headers for this purpose:
+# target is Windows, for the three dependencies whose Debian packages serve
+# here only as headers:
 #
 #   Vulkan   Debian has the headers but no vulkan-1.lib import library for
 #            MinGW, so volk (libvulkan-volk-dev) opens vulkan-1.dll at run
@@ -11,8 +11,8 @@
 #            common/core/src/windows/vulkan_loader.cpp loads them.
 #   GLM      header-only.
 #   tinygltf Debian ships it compiled for Linux; here its header's own
-#            implementation is compiled into a small static library
-#            (common/scene/src/windows/tinygltf.cpp).
+#            implementation is compiled into a small static library, as
+#            cmake/tinygltf.cmake does for any header-only tinygltf.
 #
 # The other libraries (GLFW, libpng with zlib, libjpeg-turbo, Catch2) are
 # built for the target from Debian's source packages into the prefix that
@@ -56,25 +56,12 @@ add_library(vkt_glm_headers INTERFACE)
 target_include_directories(vkt_glm_headers SYSTEM INTERFACE ${VKT_HOST_HEADERS})
 add_library(glm::glm ALIAS vkt_glm_headers)
 
-# tinygltf's stb_image and stb_image_write are left out: the loader decodes
-# images itself (SetImageLoader, vkt::decode_image) and writes no files.
-# TinyGLTF::TinyGLTF is an imported target, as on Linux, so that the
-# configure-time checks of its header (cmake/tinygltf_api.cmake) can use it:
-# inside such a check the compiled library does not exist, and only the
-# header comes along.
-add_library(vkt_tinygltf STATIC ${PROJECT_SOURCE_DIR}/common/scene/src/windows/tinygltf.cpp)
-add_library(TinyGLTF::TinyGLTF INTERFACE IMPORTED)
-target_include_directories(TinyGLTF::TinyGLTF SYSTEM INTERFACE ${VKT_HOST_HEADERS})
-target_compile_definitions(TinyGLTF::TinyGLTF INTERFACE
-  TINYGLTF_NO_STB_IMAGE TINYGLTF_NO_STB_IMAGE_WRITE)
-target_link_libraries(TinyGLTF::TinyGLTF INTERFACE
-  $<$<TARGET_EXISTS:vkt_tinygltf>:vkt_tinygltf>)
-target_include_directories(vkt_tinygltf SYSTEM PRIVATE ${VKT_HOST_HEADERS})
-target_compile_definitions(vkt_tinygltf PRIVATE TINYGLTF_NO_STB_IMAGE TINYGLTF_NO_STB_IMAGE_WRITE)
+# tinygltf: cmake/tinygltf.cmake compiles the header's implementation, as for
+# any header-only tinygltf; here it finds the header among the host's.
+set(VKT_TINYGLTF_INCLUDE_DIR ${VKT_HOST_HEADERS} CACHE PATH "tiny_gltf.h for the Windows build")
+set(VKT_NLOHMANN_JSON_INCLUDE_DIR ${VKT_HOST_HEADERS} CACHE PATH "nlohmann/json.hpp for the Windows build")
 
-# vkt_find_package looks for none of these three (cmake/dependencies.cmake).
-set(VKT_PROVIDED_PACKAGES Vulkan glm TinyGLTF)
+# vkt_find_package looks for neither of these two (cmake/dependencies.cmake).
+set(VKT_PROVIDED_PACKAGES Vulkan glm)
 set(Vulkan_FOUND TRUE)
 set(glm_FOUND TRUE)
-set(TinyGLTF_FOUND TRUE)
-set(TinyGLTF_VERSION "${VKT_HOST_INCLUDE}/tiny_gltf.h")  # named in tinygltf_api.cmake's message
