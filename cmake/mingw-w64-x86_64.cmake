@@ -6,8 +6,8 @@
 #         -DVKT_MINGW_DEPS=$PWD/build/mingw-deps
 #
 # VKT_MINGW_DEPS is the prefix holding the libraries built for the target
-# (GLFW, zlib, libpng, libjpeg-turbo, Catch2) and links to the header-only
-# ones (cmake/windows.cmake says which and how they are used).
+# (GLFW, zlib, libpng, libjpeg-turbo, Catch2); the header-only ones come from
+# the host (cmake/windows.cmake says which and how they are used).
 set(CMAKE_SYSTEM_NAME Windows)
 set(CMAKE_SYSTEM_PROCESSOR x86_64)
 
