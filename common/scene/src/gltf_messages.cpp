@@ -175,8 +175,9 @@ std::string explain_load_failure(const LoadFailure& failure, const tinygltf::Mod
                " bytes are too few for any glTF";
     if (contains(err, "\"asset\" object not found"))
         return "not a glTF file: it has no \"asset\" object with a \"version\"";
-    if (std::optional<std::string> data_uri =
-            invalid_data_uri(line, failed.empty() ? "a buffer or an image" : failed))
+    // The whole line: printable() would cut a long data: URI before its " in Buffer".
+    if (std::optional<std::string> data_uri = invalid_data_uri(
+            err.substr(0, err.find('\n')), failed.empty() ? "a buffer or an image" : failed))
         return *data_uri;
     const std::string what = failed.empty() ? (glb ? ".glb" : "the model") : failed;
     if (const std::string fault = property_fault(line); !fault.empty()) return what + ": " + fault;
