@@ -161,3 +161,10 @@ foreach(extra 4 8)
 endforeach()
 set_tests_properties(bad_input.10_gltf.deep_extras bad_input.10_gltf.long_bin_chunk_4
   bad_input.10_gltf.long_bin_chunk_8 PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+# A PNG whose header claims 16384 x 16384 (3.7 GiB decoded, staged and
+# mipmapped) in 69 bytes: refused from its header, before anything is
+# allocated (unit.image budget* measure the peak memory).
+vkt_chapter_test(bad_input.10_gltf.huge_image_claim 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/huge_claim.gltf
+  EXPECT "10_gltf: error: .*huge_claim.gltf: image 0 \\(huge_claim.png\\): cannot decode image: it is 16384x16384: decoded, staged and mipmapped it would take 3755 MiB, past the 1024 MiB one image may use")
+set_tests_properties(bad_input.10_gltf.huge_image_claim PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
