@@ -267,9 +267,9 @@ RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what) 
                                     std::to_string(max_image_side) + "x" +
                                     std::to_string(max_image_side));
         if (image_memory_cost(width, height) > image_memory_budget) {
-            const double mib = double(image_memory_cost(width, height)) / (1 << 20);
+            const uint64_t mib = (image_memory_cost(width, height) + (1 << 19)) >> 20;  // rounded
             cannot_decode(what, "it is " + size + ": decoded, staged and mipmapped it would take " +
-                                    std::to_string(int(mib + 0.5)) + " MiB, past the " +
+                                    std::to_string(mib) + " MiB, past the " +
                                     std::to_string(image_memory_budget >> 20) +
                                     " MiB one image may use");
         }

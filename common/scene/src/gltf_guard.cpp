@@ -90,9 +90,8 @@ struct Reader {
     }
     // Finds member `name` of the object starting here; `at` on its value.
     bool find_member(std::string_view name) {
-        if (!take('{')) return false;
-        if (take('}')) return false;
-        do {
+        if (!take('{') || take('}')) return false;
+        for (bool more = true; more; more = take(',')) {
             const std::optional<std::string_view> key = raw_string();
             if (!key || !take(':')) return false;
             if (*key == name) {
@@ -100,7 +99,7 @@ struct Reader {
                 return true;
             }
             if (!skip_value()) return false;
-        } while (take(','));
+        }
         return false;
     }
     // Moves to element `index` of the array starting here.
@@ -116,10 +115,10 @@ struct Reader {
         if (!take('[')) return std::nullopt;
         if (take(']')) return 0;
         size_t count = 0;
-        do {
+        for (bool more = true; more; more = take(',')) {
             if (!skip_value()) return std::nullopt;
             ++count;
-        } while (take(','));
+        }
         return take(']') ? std::optional<size_t>(count) : std::nullopt;
     }
 };

@@ -174,7 +174,7 @@ std::string explain_load_failure(const LoadFailure& failure, const tinygltf::Mod
         return "not a glTF file: its " + std::to_string(json.size()) +
                " bytes are too few for any glTF";
     if (contains(err, "\"asset\" object not found"))
-        return "not a glTF file: it has no \"asset\" object with a \"version\"";
+        return R"(not a glTF file: it has no "asset" object with a "version")";
     // The whole line: printable() would cut a long data: URI before its " in Buffer".
     if (std::optional<std::string> data_uri = invalid_data_uri(
             err.substr(0, err.find('\n')), failed.empty() ? "a buffer or an image" : failed))
