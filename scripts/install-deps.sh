@@ -6,6 +6,8 @@
 #
 #   Debian 12     Debian's packages, plus bookworm-backports for lavapipe 25.x
 #                 and Catch2 3 (writes that one apt source if it is missing).
+#   Debian 13     Debian's own packages only: trixie has lavapipe 25.x and
+#                 Catch2 3 itself, so no apt source is written.
 #   Ubuntu 24.04  Ubuntu's own packages only: no apt source is written and no
 #                 Debian archive is ever used (mixing archives can break a
 #                 desktop). Says which chapters and tests Ubuntu's versions touch.
@@ -21,7 +23,7 @@ set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 
 # --- What each system needs, by its own package names -----------------------
-# The same names on Debian 12 and Ubuntu 24.04. The last two lines are for
+# The same names on Debian 12 and 13 and Ubuntu 24.04. The last two lines are for
 # other tools of the project (charts, diagrams, linting and formatting, the
 # fuzzers' nlohmann/json.hpp, gdb for a stuck window test's threads).
 apt_common=(
@@ -40,6 +42,10 @@ apt_common=(
 # and Catch2 2.x).
 debian12_main=(chromium libclang-rt-14-dev clang-16 libclang-rt-16-dev clang-tidy-16)
 debian12_backports=(mesa-vulkan-drivers catch2)
+# Debian 13: everything from its own archive. Its clang is 19, new enough for
+# the fuzzers as it is (the fuzz-clang preset uses the system's clang++; the
+# fuzz preset names clang++-16, which trixie does not have).
+debian13_extra=(chromium libclang-rt-19-dev mesa-vulkan-drivers catch2)
 # Ubuntu 24.04: clang, clang-tidy and clang-format are 18, new enough as they
 # are (the fuzz-clang preset uses that clang++). Its chromium deb only
 # installs the snap, so it is left out (see ubuntu_notes).
@@ -131,10 +137,19 @@ done <"$os_release"
 
 case "$os_id:$os_version_id" in
   debian:12) plan=debian-12 ;;
+  debian:13) plan=debian-13 ;;
   ubuntu:24.04) plan=ubuntu-24.04 ;;
   *) plan=unsupported ;;
 esac
-say "system: ${os_pretty:-unknown} (ID=${os_id:-none}, VERSION_ID=${os_version_id:-none}; from $os_release)"
+# The line names the system as this script recognised it, then what
+# os-release said, so a misreading shows at once.
+case $plan in
+  debian-12) recognised='Debian 12 (bookworm)' ;;
+  debian-13) recognised='Debian 13 (trixie)' ;;
+  ubuntu-24.04) recognised='Ubuntu 24.04 (noble)' ;;
+  *) recognised='not one this script installs on' ;;
+esac
+say "system: $recognised (os-release: ID=${os_id:-none}, VERSION_ID=${os_version_id:-none}, PRETTY_NAME=\"${os_pretty:-none}\"; from $os_release)"
 say "plan: $plan$($dry_run && echo ' (dry run: nothing is run or written)')"
 
 # --- Debian 12: as it always was ----------------------------------------------
@@ -149,6 +164,16 @@ SRC
   run apt-get update -q
   run apt-get install -y -q --no-install-recommends "${apt_common[@]}" "${debian12_main[@]}"
   run apt-get install -y -q --no-install-recommends -t bookworm-backports "${debian12_backports[@]}"
+}
+
+# --- Debian 13: its own archive only --------------------------------------------
+install_debian13() {
+  say "Debian 13's own archive only (main); no apt source is written"
+  run apt-get update -q
+  run apt-get install -y -q --no-install-recommends "${apt_common[@]}" "${debian13_extra[@]}"
+  say "note: the fuzz preset names clang++-16, which Debian 13 lacks: use" \
+    "'cmake --workflow --preset fuzz-clang' (clang 19). clang-format 19 may lay out a" \
+    "line differently from CI's 14 (Debian 12), so scripts/static-checks.sh can disagree."
 }
 
 # --- Ubuntu 24.04: Ubuntu's archive only ------------------------------------
@@ -234,8 +259,9 @@ print_lists() {
     say "  Arch:    sudo pacman -S --needed ${arch_packages[*]}"
   fi
   if [ "$family" = apt ] || [ "$family" = all ]; then
-    say "  Debian 12 / Ubuntu 24.04 (this script installs these there): sudo apt-get install ${apt_common[*]}"
+    say "  Debian 12 and 13 / Ubuntu 24.04 (this script installs these there): sudo apt-get install ${apt_common[*]}"
     say "    plus on Debian 12: ${debian12_main[*]}, and from bookworm-backports: ${debian12_backports[*]}"
+    say "    plus on Debian 13: ${debian13_extra[*]}"
     say "    plus on Ubuntu 24.04: ${ubuntu2404_extra[*]}"
   fi
 }
@@ -247,7 +273,7 @@ unsupported() {
     *" arch "*) family=arch ;;
     *" debian "* | *" ubuntu "*) family=apt ;;
   esac
-  say "this script installs only on Debian 12 and Ubuntu 24.04; this is ${os_pretty:-an unknown system}. Changed nothing."
+  say "this script installs only on Debian 12 and 13 and Ubuntu 24.04; this is ${os_pretty:-an unknown system}. Changed nothing."
   say "install these with your package manager (names as we believe them; not tested here):"
   print_lists "$family"
   if [ "$family" = apt ] && [ "$os_ubuntu_codename" = noble ]; then
@@ -260,6 +286,7 @@ unsupported() {
 
 case $plan in
   debian-12) install_debian12 ;;
+  debian-13) install_debian13 ;;
   ubuntu-24.04) install_ubuntu2404 ;;
   *) unsupported ;;
 esac

@@ -3,8 +3,8 @@
 # user with sudo):
 #   scripts/quickstart.sh [NN_name]
 # Installs the packages (scripts/install-deps.sh: Debian 12 with
-# bookworm-backports, or Ubuntu 24.04 with Ubuntu's own; on any other system it
-# changes nothing, says what to install, and this stops), configures and builds
+# bookworm-backports, Debian 13 or Ubuntu 24.04 with their own archive; on any
+# other system it changes nothing, says what to install, and this stops), configures and builds
 # the release preset, and runs a chapter (the newest by default): in a window
 # when there is a display, else headless, writing its picture to NN_name.png.
 set -euo pipefail

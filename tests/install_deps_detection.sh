@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # scripts/install-deps.sh reads os-release first and acts by what it finds. This
-# runs its --dry-run against fake os-release files (Debian 12, Ubuntu 24.04,
+# runs its --dry-run against fake os-release files (Debian 12 and 13, Ubuntu 24.04,
 # Fedora, an Ubuntu derivative, an unknown system, none at all) and checks the
 # actions it names, that an unsupported system exits non-zero, and that nothing
 # was written or run: every command that could change the machine is replaced
@@ -25,6 +25,14 @@ NAME="Debian GNU/Linux"
 VERSION_ID="12"
 VERSION="12 (bookworm)"
 VERSION_CODENAME=bookworm
+ID=debian
+EOF
+cat >"$work/os/debian-13" <<'EOF'
+PRETTY_NAME="Debian GNU/Linux 13 (trixie)"
+NAME="Debian GNU/Linux"
+VERSION_ID="13"
+VERSION="13 (trixie)"
+VERSION_CODENAME=trixie
 ID=debian
 EOF
 cat >"$work/os/ubuntu-24.04" <<'EOF'
@@ -102,8 +110,27 @@ check "debian-12, source already there: exit 0" test "$status" -eq 0
 check "debian-12, source already there: not written again" has 'already there: .*bookworm-backports.sources'
 check "debian-12, source already there: no write" lacks 'would write'
 
+check "debian-12: the system named as recognised" has '^install-deps: system: Debian 12 \(bookworm\) \(os-release: ID=debian, VERSION_ID=12'
+
+dry "$work/os/debian-13"
+check "debian-13: exit 0" test "$status" -eq 0
+check "debian-13: plan" has '^install-deps: plan: debian-13'
+check "debian-13: the system named as recognised" has '^install-deps: system: Debian 13 \(trixie\) \(os-release: ID=debian, VERSION_ID=13'
+check "debian-13: apt-get update" has 'would run: apt-get update'
+for pkg in libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers catch2 libglfw3-dev libglm-dev \
+  libtinygltf-dev libpng-dev libjpeg-dev libstb-dev glslang-tools python3-matplotlib graphviz \
+  chromium shellcheck clang clang-tidy libclang-rt-19-dev clang-format nlohmann-json3-dev gdb; do
+  check "debian-13: installs $pkg" has "would run: apt-get install .* $pkg( |\$)"
+done
+check "debian-13: no apt source written" lacks 'would write|already there|sources\.list'
+check "debian-13: no backports" lacks 'backports'
+check "debian-13: no clang-16 (trixie has none)" lacks 'would run: apt-get install .*(clang-16|clang-tidy-16|libclang-rt-16-dev)'
+check "debian-13: names the fuzz-clang preset" has 'preset fuzz-clang'
+
 dry "$work/os/ubuntu-24.04"
 check "ubuntu-24.04: exit 0" test "$status" -eq 0
+check "ubuntu-24.04: the system named as recognised" has '^install-deps: system: Ubuntu 24.04 \(noble\)'
+
 check "ubuntu-24.04: plan" has '^install-deps: plan: ubuntu-24.04'
 check "ubuntu-24.04: apt-get update" has 'would run: apt-get update'
 for pkg in libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers catch2 libglfw3-dev libglm-dev \
@@ -134,6 +161,8 @@ check "fedora: the fuzzers' json and gdb" has 'sudo dnf install .* json-devel gd
 
 dry "$work/os/mint"
 check "ubuntu derivative: exit 3" test "$status" -eq 3
+check "ubuntu derivative: not named as a system it installs on" has '^install-deps: system: not one this script installs on \(os-release: ID=linuxmint'
+
 check "ubuntu derivative: apt names" has 'sudo apt-get install .*libvulkan-dev'
 check "ubuntu derivative: points at the Ubuntu 24.04 names" has 'built on Ubuntu 24.04'
 check "ubuntu derivative: runs nothing" lacks 'would run|would write'

@@ -21,7 +21,7 @@ std::filesystem::path asset_path(std::string_view name) {
     return executable_dir().parent_path() / "assets" / name;
 }
 
-std::vector<char> read_file(const std::filesystem::path& path) {
+uintmax_t readable_file_size(const std::filesystem::path& path) {
     // A directory opens as a stream whose end is at 2^63 - 1 (std::bad_alloc,
     // or an abort under AddressSanitizer, and no file named); a FIFO would
     // block and /dev/zero never ends. So: what is it, and how large?
@@ -37,7 +37,11 @@ std::vector<char> read_file(const std::filesystem::path& path) {
     if (size > max_file_bytes)
         throw Error(path.string() + ": is " + std::to_string(size) +
                     " bytes, past the 1 GiB limit for one file");
+    return size;
+}
 
+std::vector<char> read_file(const std::filesystem::path& path) {
+    const uintmax_t size = readable_file_size(path);
     std::ifstream file(path, std::ios::binary);
     if (!file) throw Error("cannot open " + path.string());
     std::vector<char> bytes(static_cast<size_t>(size));

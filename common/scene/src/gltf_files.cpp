@@ -74,14 +74,14 @@ bool file_exists(const std::string& path, void* user) {
     return file && std::filesystem::exists(*file, error);  // a directory, too: read_file says so
 }
 
-bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
-                     void* user) {
-    auto* access = static_cast<FileAccess*>(user);
+// What read_whole_file and file_size share: the file tinygltf asks for, if it
+// may have it, handed to `use`; otherwise the refusal, kept and told.
+template <typename Use>
+bool with_file(FileAccess* access, std::string* err, const std::string& path, Use use) {
     const std::optional<std::filesystem::path> file = access->inside(path);
     try {
         if (!file) throw Error(access->refusal.empty() ? "cannot open " + path : access->refusal);
-        const std::vector<char> bytes = read_file(*file);  // regular, 1 GiB at most
-        out->assign(bytes.begin(), bytes.end());
+        use(*file);
         return true;
     } catch (const Error& e) {
         // read_file names the path it tried ("/models/car: is a directory");
@@ -91,6 +91,26 @@ bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const st
         return false;
     }
 }
+
+bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                     void* user) {
+    return with_file(static_cast<FileAccess*>(user), err, path,
+                     [&](const std::filesystem::path& file) {
+                         const std::vector<char> bytes = read_file(file);  // regular, 1 GiB at most
+                         out->assign(bytes.begin(), bytes.end());
+                     });
+}
+
+#if VKT_TINYGLTF_FILE_SIZE_CALLBACK
+// tinygltf 2.8 and later ask a file's size before they read it: the same
+// rules, the same refusals, nothing read.
+bool file_size(size_t* size, std::string* err, const std::string& path, void* user) {
+    return with_file(static_cast<FileAccess*>(user), err, path,
+                     [&](const std::filesystem::path& file) {
+                         *size = static_cast<size_t>(readable_file_size(file));
+                     });
+}
+#endif
 
 bool write_nothing(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
     if (err) *err += "the glTF loader writes no files\n";
@@ -110,6 +130,20 @@ bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::stri
 
 }  // namespace
 
+void use_fs_callbacks(tinygltf::TinyGLTF& gltf, const tinygltf::FsCallbacks& callbacks) {
+#if VKT_TINYGLTF_FS_CALLBACKS_CHECKED
+    // tinygltf 2.9 refuses callbacks with a null member, and then keeps
+    // reading files its own way, from anywhere: never carry on after that.
+    std::string why;
+    if (!gltf.SetFsCallbacks(callbacks, &why))
+        throw Error("tinygltf::SetFsCallbacks refused the loader's file callbacks (" +
+                    (why.empty() ? std::string("it gave no reason") : first_line(why)) +
+                    "); no file of the model is read without them");
+#else
+    gltf.SetFsCallbacks(callbacks);  // tinygltf 2.7 takes any, and cannot refuse
+#endif
+}
+
 tinygltf::Model parse_gltf_file(const std::filesystem::path& path) {
     auto fail = [&](const std::string& what) { throw Error(path.string() + ": " + what); };
     std::vector<char> file = read_file(path);  // "cannot open FILE", directories, 1 GiB
@@ -122,8 +156,17 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path) {
     const std::string base_dir = access.folder.string();
     access.prefix = base_dir.ends_with('/') ? base_dir : base_dir + "/";
     tinygltf::TinyGLTF gltf;
-    gltf.SetFsCallbacks(
-        {file_exists, no_expansion, read_whole_file, write_nothing, static_cast<void*>(&access)});
+    // Named, not in order: tinygltf 2.8 added a member in the middle.
+    tinygltf::FsCallbacks callbacks{};
+    callbacks.FileExists = file_exists;
+    callbacks.ExpandFilePath = no_expansion;
+    callbacks.ReadWholeFile = read_whole_file;
+    callbacks.WriteWholeFile = write_nothing;
+#if VKT_TINYGLTF_FILE_SIZE_CALLBACK
+    callbacks.GetFileSizeInBytes = file_size;
+#endif
+    callbacks.user_data = &access;
+    use_fs_callbacks(gltf, callbacks);
     gltf.SetImageLoader(keep_image_bytes, nullptr);
 
     tinygltf::Model model;

@@ -45,6 +45,14 @@ struct LoadFailure {
 // glTF file" only where the file is not one (gltf_messages.cpp).
 std::string explain_load_failure(const LoadFailure& failure, const tinygltf::Model& model,
                                  std::span<const char> file);
+// tinygltf's complaint, fit for one line: its first line, printable, at most
+// 200 characters (it may quote a whole data: URI).
+std::string first_line(const std::string& text);
+
+// gltf.SetFsCallbacks(callbacks), and where tinygltf says it refused them
+// (2.9 and later answer; 2.7 cannot refuse), an Error naming SetFsCallbacks:
+// without our callbacks tinygltf would read any file a URI names.
+void use_fs_callbacks(tinygltf::TinyGLTF& gltf, const tinygltf::FsCallbacks& callbacks);
 
 // What an accessor may hold for each use, as the glTF 2.0 specification lists it.
 struct AllowedFormat {

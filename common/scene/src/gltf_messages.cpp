@@ -26,14 +26,6 @@ bool contains(const std::string& text, const char* part) {
     return text.find(part) != std::string::npos;
 }
 
-// tinygltf's complaint, fit for one line (it may quote a whole data: URI).
-std::string first_line(const std::string& text) {
-    std::string line = text.substr(0, text.find('\n'));
-    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '.'))
-        line.pop_back();
-    return printable(line, 200);
-}
-
 // The text between the first `open` and the next `close` after it; empty if none.
 std::string between(const std::string& text, const std::string& open, const std::string& close) {
     const size_t start = text.find(open);
@@ -151,6 +143,13 @@ std::string property_fault(const std::string& line) {
 }
 
 }  // namespace
+
+std::string first_line(const std::string& text) {
+    std::string line = text.substr(0, text.find('\n'));
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '.'))
+        line.pop_back();
+    return printable(line, 200);
+}
 
 std::string explain_load_failure(const LoadFailure& failure, const tinygltf::Model& model,
                                  std::span<const char> file) {

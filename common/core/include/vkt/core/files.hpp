@@ -32,6 +32,10 @@ inline constexpr uintmax_t max_file_bytes = uintmax_t(1) << 30;
 // bytes, past the 1 GiB limit for one file".
 std::vector<char> read_file(const std::filesystem::path& path);
 
+// The size of the file read_file would read, after the same checks (and the
+// same messages); nothing is read.
+uintmax_t readable_file_size(const std::filesystem::path& path);
+
 // Where `uri`, a relative file name that a file in `folder` contains (a glTF
 // buffer or image), points: `folder / uri` with symbolic links and ".."
 // resolved, and only if that lies inside `folder`. A model downloaded from
