@@ -245,4 +245,20 @@ TEST_CASE("gltf messages: what tinygltf refuses is named, in words of the file's
                    ContainsSubstring("short_bin.gltf: buffer 0: its file \"") &&
                        ContainsSubstring("short.bin\" holds 20 bytes, not its byteLength 44"));
     }
+    SECTION("the loader's own checks name elements by name too") {
+        std::string text = triangle();
+        text.replace(text.find("\"count\": 3, \"type\": \"VEC3\""), 10,
+                     "\"name\": \"positions\", \"count\": 4");
+        CHECK_THAT(load_error(write_file("named.gltf", text)),
+                   ContainsSubstring("named.gltf: mesh 0 primitive 0 POSITION: accessor 0 "
+                                     "(\"positions\") (count 4, byteOffset 0, stride 12) runs "
+                                     "past the end of bufferView 0"));
+        std::string image = triangle(
+            good_buffer,
+            R"(, "images": [{"name": "bricks", "uri": "data:image/png;base64,AAAA"}], "textures": [{"source": 0}], "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}])");
+        image.replace(image.find("\"indices\": 1"), 12, "\"indices\": 1, \"material\": 0");
+        CHECK_THAT(load_error(write_file("named_image.gltf", image)),
+                   ContainsSubstring("named_image.gltf: image 0 (\"bricks\"): cannot decode "
+                                     "image: not a PNG or JPEG file"));
+    }
 }

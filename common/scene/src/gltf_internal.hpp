@@ -15,6 +15,7 @@
 //   gltf.cpp            the scene: materials and images, meshes and their
 //                       primitives, the node tree, flattened into GltfScene
 
+#include "vkt/core/files.hpp"
 #include "vkt/scene/gltf_guard.hpp"
 
 #include <tiny_gltf.h>
@@ -45,6 +46,12 @@ struct LoadFailure {
 // glTF file" only where the file is not one (gltf_messages.cpp).
 std::string explain_load_failure(const LoadFailure& failure, const tinygltf::Model& model,
                                  std::span<const char> file);
+// An element's name for a message, " (\"wheels\")", or nothing where it has none:
+// messages name an element by index, and by name where it has one.
+inline std::string quoted_name(const std::string& name) {
+    return name.empty() ? std::string() : " (\"" + printable(name, 60) + "\")";
+}
+
 // tinygltf's complaint, fit for one line: its first line, printable, at most
 // 200 characters (it may quote a whole data: URI).
 std::string first_line(const std::string& text);
