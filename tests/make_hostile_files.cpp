@@ -4,10 +4,11 @@
 //   deep_extras.gltf         an `extras` of arrays nested 100,000 deep: tinygltf
 //                            2.7 recursed once per level and overflowed its stack
 //                            (exit 139 from 30,000 levels on in a release build)
-//   long_bin_chunk_4.glb,    assets/gltf/scene.glb with its BIN chunk's length 4
-//   long_bin_chunk_8.glb     or 8 bytes more than the file holds: tinygltf 2.7
-//                            forgets the chunk header in its check, accepts the
-//                            file and reads past the end of it
+//   long_bin_chunk_4.glb,    assets/gltf/scene.glb with its BIN chunk's length
+//   long_bin_chunk_8.glb     (and its buffer's byteLength) 4 or 8 bytes more
+//                            than the file holds: tinygltf 2.7 forgets the chunk
+//                            header in its check, accepts the file and reads
+//                            past the end of it
 //   huge_claim.png           a PNG whose header says 16384 x 16384 (1 GiB of
 //                            pixels) and whose one IDAT holds 12 bytes
 //   huge_claim.gltf          a triangle whose material's texture is huge_claim.png
@@ -15,6 +16,8 @@
 //   vkt_make_hostile_files OUT_DIR [gltf]   (gltf: only the two kinds of glTF
 //                                            finding, for the fuzzer's regressions)
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -58,11 +61,24 @@ void put_u32_big(Bytes& b, uint32_t v) {
     for (int i = 3; i >= 0; --i) b.push_back(uint8_t(v >> (8 * i)));
 }
 
-// scene.glb with its second chunk's (BIN's) length raised by `extra` bytes.
+// scene.glb with its second chunk's (BIN's) length raised by `extra` bytes,
+// and its buffer's byteLength with it (the number keeps its width, so the
+// JSON chunk keeps its length): tinygltf 2.7 then copies `extra` bytes from
+// past the end of the file's bytes (AddressSanitizer: heap-buffer-overflow).
 Bytes long_bin_chunk(Bytes glb, uint32_t extra) {
-    const size_t bin_header = 20 + get_u32(glb, 12);  // after the header and the JSON chunk
+    const size_t json_length = get_u32(glb, 12);
+    const size_t bin_header = 20 + json_length;  // after the header and the JSON chunk
     if (get_u32(glb, bin_header + 4) != 0x004E4942) throw std::runtime_error("scene.glb: no BIN");
-    put_u32(glb, bin_header, get_u32(glb, bin_header) + extra);
+    const uint32_t bin_length = get_u32(glb, bin_header);
+    put_u32(glb, bin_header, bin_length + extra);
+    const std::string json(glb.begin() + 20, glb.begin() + 20 + std::ptrdiff_t(json_length));
+    const std::string old_length = "\"byteLength\":" + std::to_string(bin_length) + "}";
+    const std::string new_length = "\"byteLength\":" + std::to_string(bin_length + extra) + "}";
+    const size_t at = json.find(old_length);
+    if (at == std::string::npos || old_length.size() != new_length.size())
+        throw std::runtime_error("scene.glb: no buffer of byteLength " +
+                                 std::to_string(bin_length));
+    std::copy(new_length.begin(), new_length.end(), glb.begin() + 20 + std::ptrdiff_t(at));
     return glb;
 }
 
