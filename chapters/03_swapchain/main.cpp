@@ -82,7 +82,10 @@ public:
 
 // [main]
 int main(int argc, char** argv) {
-    return vkt::run_chapter(argc, argv, {.name = "03_swapchain", .title = "03 - swapchain"},
-                            [](const vkt::Context&) { return std::make_unique<ClearScreen>(); });
+    // The clear is a transfer command, into whichever image the frame is.
+    return vkt::run_chapter(
+        argc, argv,
+        {.name = "03_swapchain", .title = "03 - swapchain", .transfers_into_target = true},
+        [](const vkt::Context&) { return std::make_unique<ClearScreen>(); });
 }
 // [/main]

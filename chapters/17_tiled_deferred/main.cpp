@@ -361,6 +361,8 @@ int main(int argc, char** argv) {
     // size for Vulkan 1.3 as LocalSizeId, which needs it.
     spec.requirements.features = {VKT_FEATURE_12(separateDepthStencilLayouts),
                                   VKT_FEATURE_13(maintenance4)};
+    // --shade compute copies its shaded image into the frame.
+    spec.transfers_into_target = true;
     spec.options = {
         {.name = "--shade",
          .type = vkt::OptionType::choice,

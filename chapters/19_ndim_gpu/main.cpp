@@ -13,6 +13,7 @@
 
 #include "invocation_counter.hpp"
 #include "verify.hpp"
+#include "vkt/core/check.hpp"
 #include "vkt/domains/ndim.hpp"
 #include "vkt/frame/runner.hpp"
 #include "vkt/frame/stats.hpp"
@@ -29,7 +30,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -72,7 +72,7 @@ public:
         verify_ = options.has("--verify");
         verify_frame_ = options.frames.value_or(1) - 1;
         if (verify_ && !context.features.has(VKT_FEATURE_10(vertexPipelineStoresAndAtomics)))
-            throw std::runtime_error(
+            throw vkt::Error(
                 "--verify writes from the vertex shader, which needs the "
                 "vertexPipelineStoresAndAtomics feature; this device does not have it");
         benchmark_ = options.benchmark;
@@ -335,7 +335,7 @@ private:
                      verify_tolerance, c.clipped, c.mismatched, c.missing);
         if (c.missing > 0 || c.mismatched > 0 || !(c.plane_error <= verify_tolerance) ||
             !(c.matrix_error <= verify_tolerance))
-            throw std::runtime_error("verify cpu: the GPU's vertices differ from the CPU's");
+            throw vkt::Error("verify cpu: the GPU's vertices differ from the CPU's");
     }
     // [/verify]
 

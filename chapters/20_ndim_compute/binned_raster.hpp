@@ -8,12 +8,13 @@
 // 6) and keeps its own buffers in bindings 7 to 9.
 
 #include "compute_raster.hpp"
+#include "vkt/core/check.hpp"
 #include "vkt/core/device.hpp"
 
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <functional>
-#include <stdexcept>
 #include <string>
 
 namespace ch20 {
@@ -53,10 +54,10 @@ public:
         if (!(subgroups.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) ||
             !(subgroups.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT) ||
             vkt::hidden_by_tests(flag))
-            throw std::runtime_error(std::string("--raster binned needs subgroup arithmetic in "
-                                                 "compute shaders (") +
-                                     flag + "), which " + properties.properties.deviceName +
-                                     " lacks: use --raster compute");
+            throw vkt::Error(std::string("--raster binned needs subgroup arithmetic in "
+                                         "compute shaders (") +
+                             flag + "), which " + properties.properties.deviceName +
+                             " lacks: use --raster compute");
     }
     // [/subgroups]
 
@@ -64,13 +65,10 @@ public:
     // Built once: each object's first line and line count (line_counts:
     // each object's, in the order of the index buffer), and its box, which
     // the boxes pass writes each frame. The tiles are as large as shared
-    // memory allows (88x88 pixels in lavapipe's 32 KiB, 104x104 in 48 KiB),
-    // so that one holds a small object whole. On a GPU, 1,024 invocations
-    // share out an object's lines (512 took 1.5x as long on the H100); on a
-    // CPU device, 8, one vector of lavapipe's SIMD lanes, which then never
-    // switches between groups of lanes at a barrier (64 took up to 1.5x as
-    // long).
-    BinnedRaster(const vkt::Context& context, VkPipelineLayout layout,
+    // memory allows (88x88 pixels in 32 KiB, 104x104 in 48 KiB), so that
+    // one holds a small object whole; the tuning says how many invocations
+    // share out an object's lines (tuning.hpp).
+    BinnedRaster(const vkt::Context& context, const Tuning& tuning, VkPipelineLayout layout,
                  std::span<const VkDescriptorSet> sets, std::span<const uint32_t> line_counts)
         : gpu_(context.gpu()),
           device_(context.device),
@@ -94,14 +92,17 @@ public:
                                          boxes_.buffer, 0, VK_WHOLE_SIZE);
         }
         const VkPhysicalDeviceLimits& limits = context.properties.limits;
-        const bool cpu = context.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
         piece_ = uint32_t(std::sqrt(double(limits.maxComputeSharedMemorySize) / 4)) / 8 * 8;
-        const uint32_t tile_group =
-            cpu ? 8 : std::min(1024u, limits.maxComputeWorkGroupInvocations);
-        const VkSpecializationMapEntry entries[] = {{0, 0, 4}, {1, 4, 4}};
-        const uint32_t constants[] = {piece_, tile_group};
-        const VkSpecializationInfo piece{1, entries, 4, constants};
-        const VkSpecializationInfo piece_and_group{2, entries, 8, constants};
+        struct Constants {
+            uint32_t piece, group;
+        };
+        const Constants constants{piece_, tuning.tile_group};
+        const VkSpecializationMapEntry entries[] = {
+            {0, offsetof(Constants, piece), sizeof(Constants::piece)},
+            {1, offsetof(Constants, group), sizeof(Constants::group)}};
+        // bin.comp takes only the piece; tiles.comp the piece and the group.
+        const VkSpecializationInfo piece{1, entries, sizeof(Constants::piece), &constants};
+        const VkSpecializationInfo piece_and_group{2, entries, sizeof(Constants), &constants};
         const auto load = [&](const char* name, const VkSpecializationInfo* specialization) {
             vkt::ShaderModule shader = vkt::load_shader(device_, context.chapter, name);
             return vkt::create_compute_pipeline(device_, shader, layout, specialization);
@@ -212,7 +213,7 @@ public:
                      "lines), %zu differ\n",
                      extent.width, extent.height, lit, differ);
         if (differ != 0)
-            throw std::runtime_error(
+            throw vkt::Error(
                 "verify: the binned rasteriser's pixel (" + std::to_string(first % extent.width) +
                 ", " + std::to_string(first / extent.width) + ") differs from the compute one's");
     }

@@ -12,7 +12,9 @@
 #include "resolve_pass.hpp"
 #include "scene_state.hpp"
 
+#include "tuning.hpp"
 #include "vkt/core/barrier.hpp"
+#include "vkt/core/check.hpp"
 #include "vkt/frame/runner.hpp"
 #include "vkt/resources/compute.hpp"
 #include "vkt/resources/descriptors.hpp"
@@ -21,7 +23,6 @@
 
 #include <optional>
 #include <span>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,12 +34,12 @@ public:
     // The rasteriser writes the target's own pixel layout, so the palette
     // (raster.comp) is built in the target's byte order; binding 6 of each
     // set is the palette, binding 5 the pixels (resize).
-    ComputeRaster(const vkt::Context& context, VkPipelineLayout layout,
+    ComputeRaster(const vkt::Context& context, const Tuning& tuning, VkPipelineLayout layout,
                   std::span<const VkDescriptorSet> sets, uint32_t line_total)
         : gpu_(context.gpu()), device_(context.device), line_total_(line_total) {
         if (context.color_format != VK_FORMAT_B8G8R8A8_SRGB &&
             context.color_format != VK_FORMAT_R8G8B8A8_SRGB)
-            throw std::runtime_error(
+            throw vkt::Error(
                 "--raster compute: the colour target is neither "
                 "B8G8R8A8_SRGB nor R8G8B8A8_SRGB");
         const bool bgra = context.color_format == VK_FORMAT_B8G8R8A8_SRGB;
@@ -51,29 +52,28 @@ public:
         // The background, as the target stores it: (0.006, 0.006, 0.012)
         // sRGB-encoded is (18, 18, 29), level 0 below every line's.
         background_ = bgra ? 29u | 18u << 8 | 18u << 16 : 18u | 18u << 8 | 29u << 16;
-        // Invocations per line: enough for about 2^18 invocations in all
-        // on a GPU (a few per core), from 1 (250 n-cubes) to 32 (one
-        // 4-cube). A CPU device wants only enough workgroups to keep its
-        // cores busy, 2^12 invocations: more lanes per line there only
-        // add each invocation's set-up (250 4-cubes: 1.3x faster so).
-        const bool cpu = context.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-        const uint64_t wanted = cpu ? 1u << 12 : 1u << 18;
+        // Invocations per line, 1 (250 n-cubes) to 32 (one 4-cube): as many
+        // as keep the launch near the tuning's count (a few per core of a
+        // GPU; on a CPU device only enough to keep its cores busy, since more
+        // lanes per line there only add each invocation's set-up).
         lanes_ = 1;
-        while (lanes_ < 32 && uint64_t(line_total_) * lanes_ * 2 <= wanted) lanes_ *= 2;
-        const VkSpecializationMapEntry entry{.constantID = 0, .offset = 0, .size = sizeof(int)};
-        const VkSpecializationInfo lanes{
-            .mapEntryCount = 1, .pMapEntries = &entry, .dataSize = sizeof(int), .pData = &lanes_};
+        while (lanes_ < 32 && uint64_t(line_total_) * lanes_ * 2 <= tuning.raster_invocations)
+            lanes_ *= 2;
+        const VkSpecializationMapEntry entry{.constantID = 0, .offset = 0, .size = sizeof(lanes_)};
+        const VkSpecializationInfo lanes{.mapEntryCount = 1,
+                                         .pMapEntries = &entry,
+                                         .dataSize = sizeof(lanes_),
+                                         .pData = &lanes_};
         vkt::ShaderModule raster = vkt::load_shader(device_, context.chapter, "raster.comp");
         pipeline_ = vkt::create_compute_pipeline(device_, raster, layout, &lanes);
         max_groups_x_ = context.properties.limits.maxComputeWorkGroupCount[0];
         max_storage_range_ = context.properties.limits.maxStorageBufferRange;
         // The resolve pass where the runner gives the target a storage view
-        // and the device can store to it; by default only on a GPU. On a CPU
-        // device the copy is a memcpy, while a store pass converts and stores
-        // each pixel on its own: lavapipe took 20 ms for 1920x1080, the fill
-        // and copy 1 ms.
+        // and the device can store to it; by default where the tuning says
+        // (not on a CPU device, where the copy is a memcpy while a store pass
+        // converts and stores each pixel on its own).
         const std::string to_target = context.options.text("--to-target");
-        if ((to_target == "store" || (to_target == "auto" && !cpu)) &&
+        if ((to_target == "store" || (to_target == "auto" && tuning.store_to_target)) &&
             ResolvePass::available(context))
             resolve_.emplace(context);
         resize(context.extent, sets);
@@ -91,11 +91,11 @@ public:
         // storage-buffer range (at least 128 MiB: 5,792x5,792 pixels).
         const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
         if (bytes > max_storage_range_)
-            throw std::runtime_error("--raster compute: " + std::to_string(extent.width) + "x" +
-                                     std::to_string(extent.height) + " needs a pixel buffer of " +
-                                     std::to_string(bytes) +
-                                     " bytes, more than this device's maxStorageBufferRange (" +
-                                     std::to_string(max_storage_range_) + ")");
+            throw vkt::Error("--raster compute: " + std::to_string(extent.width) + "x" +
+                             std::to_string(extent.height) + " needs a pixel buffer of " +
+                             std::to_string(bytes) +
+                             " bytes, more than this device's maxStorageBufferRange (" +
+                             std::to_string(max_storage_range_) + ")");
         pixels_ = vkt::create_buffer(gpu_.physical, device_, bytes,
                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                          VK_BUFFER_USAGE_TRANSFER_DST_BIT |

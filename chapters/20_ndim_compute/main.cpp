@@ -17,7 +17,9 @@
 #include "binned_raster.hpp"
 #include "compute_raster.hpp"
 #include "scene_state.hpp"
+#include "tuning.hpp"
 #include "vkt/core/barrier.hpp"
+#include "vkt/core/check.hpp"
 #include "vkt/domains/ndim.hpp"
 #include "vkt/frame/runner.hpp"
 #include "vkt/frame/stats.hpp"
@@ -33,10 +35,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstring>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -50,6 +52,7 @@ class NdimCompute : public vkt::Renderer {
 public:
     explicit NdimCompute(const vkt::Context& context)
         : gpu_(context.gpu()), device_(context.device) {
+        tuning_ = ch20::Tuning::for_device(context.properties);
         const auto& options = context.options;
         const nd::SceneChoice choice = nd::scene_choice(options);
         const std::string& scene = choice.scene;
@@ -122,6 +125,7 @@ public:
                      "frame, raster %s, eye at %.3g\n",
                      scene.c_str(), n_, scene_.objects.size(), vertex_total_, line_total_,
                      options.text("--raster").c_str(), scene_.eye);
+        std::fprintf(stderr, "20_ndim_compute: %s\n", tuning_.describe().c_str());
 
         // [descriptors]
         // One set layout for all the passes: 0 coordinates, 1 object table,
@@ -155,25 +159,22 @@ public:
 
         // [transform-pipeline]
         // n as a specialization constant: the shader's point is float x[N].
-        // A GPU runs one invocation per vertex, 128 to a workgroup (64 and 256
-        // were slower on the H100); lavapipe, with 8 or 16 SIMD lanes a core,
-        // was 3x faster with fewer invocations that each keep their own copy
-        // of the matrix and transform 16 vertices (transform.glsl's OWN_COPY).
+        // The workgroup's shape is the tuning's (tuning.hpp): on a GPU one
+        // invocation per vertex; on a CPU device fewer invocations, each with
+        // its own copy of the matrix (OWN_COPY) and several vertices.
         // --raster binned adds each object's box (transform_boxes.comp).
-        const bool cpu = context.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
         const bool binned = options.text("--raster") == "binned";
         if (binned) ch20::BinnedRaster::check_device(context);
-        vertices_per_lane_ = cpu ? 16u : 1u;
-        transform_group_ = cpu ? 64u : 128u;
-        const struct {
-            int n;
+        struct Constants {
+            int32_t n;
             VkBool32 own_copy;
             uint32_t group;
-        } constants{n_, VkBool32(cpu), transform_group_};
+        };
+        const Constants constants{n_, tuning_.own_matrix_copy, tuning_.transform_group};
         const VkSpecializationMapEntry entries[] = {
-            {.constantID = 0, .offset = 0, .size = sizeof(int)},
-            {.constantID = 1, .offset = sizeof(int), .size = sizeof(VkBool32)},
-            {.constantID = 2, .offset = 2 * sizeof(int), .size = sizeof(uint32_t)}};
+            {0, offsetof(Constants, n), sizeof(Constants::n)},
+            {1, offsetof(Constants, own_copy), sizeof(Constants::own_copy)},
+            {2, offsetof(Constants, group), sizeof(Constants::group)}};
         const VkSpecializationInfo specialization{.mapEntryCount = 3,
                                                   .pMapEntries = entries,
                                                   .dataSize = sizeof(constants),
@@ -210,8 +211,8 @@ public:
         // (compute_raster.hpp), through the same sets and pipeline layout;
         // --raster binned: the same, tile by tile (binned_raster.hpp).
         if (options.text("--raster") != "graphics")
-            raster_.emplace(context, layout_, sets_, line_total_);
-        if (binned) binned_.emplace(context, layout_, sets_, line_counts);
+            raster_.emplace(context, tuning_, layout_, sets_, line_total_);
+        if (binned) binned_.emplace(context, tuning_, layout_, sets_, line_counts);
     }
 
     // The compute rasterisers' buffers follow the window's size.
@@ -316,13 +317,13 @@ private:
 
     // [dispatch]
     // x runs over the largest mesh's vertices in workgroups of 128 (64 on a
-    // CPU device, each invocation taking vertices_per_lane_), y the objects.
+    // CPU device, each invocation taking Tuning::vertices_per_lane), y the objects.
     void record_transform(VkCommandBuffer cmd, uint32_t slot, const Push& push) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, transform_);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &sets_[slot], 0,
                                 nullptr);
         vkCmdPushConstants(cmd, layout_, push_stages, 0, sizeof(Push), &push);
-        const uint32_t per_group = transform_group_ * vertices_per_lane_;
+        const uint32_t per_group = tuning_.transform_group * tuning_.vertices_per_lane;
         vkCmdDispatch(cmd, uint32_t(vkt::dispatch_count(max_vertices_, per_group)),
                       uint32_t(scene_.objects.size()), 1);
     }
@@ -367,7 +368,7 @@ private:
                      "tolerance %g, %zu visibility mismatches\n",
                      c.vertices, c.hidden, c.position, c.depth, tolerance, c.mismatched);
         if (!(c.position <= tolerance && c.depth <= tolerance) || c.mismatched != 0)
-            throw std::runtime_error("verify: the GPU's projected vertices differ from the CPU's");
+            throw vkt::Error("verify: the GPU's projected vertices differ from the CPU's");
     }
     // [/verify]
 
@@ -382,8 +383,7 @@ private:
     double last_time_ = 0.0;
     float spin_time_ = 0.0f;
     uint32_t vertex_total_ = 0, line_total_ = 0, max_vertices_ = 0;
-    uint32_t vertices_per_lane_ = 1;  // transform.glsl: vertices per invocation
-    uint32_t transform_group_ = 64;   // transform.glsl's workgroup size
+    ch20::Tuning tuning_;  // the passes' shapes for this device (tuning.hpp)
     size_t pose_floats_ = 0;
     vkt::Buffer coords_, objects_, ends_;
     std::vector<vkt::Buffer> poses_, projected_;  // [slot]
@@ -409,6 +409,7 @@ int main(int argc, char** argv) {
     // where they can (resolve_pass.hpp): a storage view of it, written
     // without a format qualifier.
     spec.storage_target = true;
+    spec.transfers_into_target = true;  // where they cannot, they copy their pixels in
     spec.requirements.optional_features = {VKT_FEATURE_10(shaderStorageImageWriteWithoutFormat)};
     // --scene, --dim, --projection and --motion: vkt/scene/ndim_options.hpp.
     spec.options = vkt::ndim::scene_options();

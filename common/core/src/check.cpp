@@ -56,6 +56,6 @@ static std::string describe(const char* call, VkResult result, std::source_locat
 }
 
 VulkanError::VulkanError(const char* call, VkResult result, std::source_location where)
-    : std::runtime_error(describe(call, result, where)), result_(result) {}
+    : Error(describe(call, result, where)), result_(result) {}
 
 }  // namespace vkt

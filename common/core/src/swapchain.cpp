@@ -81,59 +81,92 @@ uint32_t choose_image_count(const VkSurfaceCapabilitiesKHR& capabilities) {
     return count;
 }
 
+VkCompositeAlphaFlagBitsKHR choose_composite_alpha(VkCompositeAlphaFlagsKHR supported) {
+    if (supported & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR) return VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
+    // The lowest bit set: a surface must offer at least one mode.
+    return VkCompositeAlphaFlagBitsKHR(supported & (~supported + 1));
+}
+
+SurfaceOffer query_surface(VkPhysicalDevice physical, VkSurfaceKHR surface) {
+    SurfaceOffer offer;
+    VKT_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(physical, surface, &offer.capabilities));
+    uint32_t count = 0;
+    VKT_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(physical, surface, &count, nullptr));
+    offer.formats.resize(count);
+    VKT_CHECK(
+        vkGetPhysicalDeviceSurfaceFormatsKHR(physical, surface, &count, offer.formats.data()));
+    VKT_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(physical, surface, &count, nullptr));
+    offer.modes.resize(count);
+    VKT_CHECK(
+        vkGetPhysicalDeviceSurfacePresentModesKHR(physical, surface, &count, offer.modes.data()));
+    return offer;
+}
+
+// [plan-swapchain]
+SwapchainPlan plan_swapchain(const SurfaceOffer& offer, const SwapchainRequest& request) {
+    const VkSurfaceCapabilitiesKHR& capabilities = offer.capabilities;
+    const VkImageUsageFlags offered = capabilities.supportedUsageFlags;
+    SwapchainPlan plan;
+    plan.format = choose_surface_format(offer.formats, request.keep);
+    plan.extent = choose_extent(capabilities, request.extent);
+    plan.present_mode = choose_present_mode(offer.modes, request.uncapped);
+    plan.image_count = choose_image_count(capabilities);
+    plan.transform = capabilities.currentTransform;
+    plan.composite_alpha = choose_composite_alpha(capabilities.supportedCompositeAlpha);
+
+    // --screenshot reads back the image we present, where the surface allows it.
+    plan.readable = request.readable && (offered & VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    const bool copy_in = offered & VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    // Drawing straight into the images saves a full-screen copy per frame. It
+    // needs the _SRGB format the chapters' pipelines are made for (a _UNORM
+    // image would take our linear colours as already encoded), images we can
+    // read back where --screenshot wants them, and TRANSFER_DST for a chapter
+    // that clears or copies into its frame.
+    const bool srgb = plan.format.format == render_format_for(plan.format.format);
+    plan.drawable = request.drawable && srgb && (offered & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) &&
+                    plan.readable == request.readable && (!request.transfer_into || copy_in);
+    if (!plan.drawable && !copy_in) {
+        const char* why =
+            !request.drawable ? "--copy-to-swapchain asks to copy"
+            : !srgb           ? "its format is not an _SRGB one"
+            : request.transfer_into
+                ? "this chapter writes its frames with transfer commands"
+                : "--screenshot needs them readable (TRANSFER_SRC), which they are not";
+        throw Error(std::string("the surface's images cannot be copied into (no TRANSFER_DST "
+                                "usage) and frames cannot be drawn into them: ") +
+                    why + " (" + format_name(plan.format.format) + ")");
+    }
+    plan.usage = plan.drawable ? VkImageUsageFlags{VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT}
+                               : VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_DST_BIT};
+    if (plan.drawable && request.transfer_into) plan.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    if (plan.readable) plan.usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    return plan;
+}
+// [/plan-swapchain]
+
 Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR surface,
                      const SwapchainRequest& request, VkSwapchainKHR old_swapchain) {
     // [create-swapchain]
-    VkSurfaceCapabilitiesKHR capabilities;
-    VKT_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(physical, surface, &capabilities));
-
-    uint32_t count = 0;
-    VKT_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(physical, surface, &count, nullptr));
-    std::vector<VkSurfaceFormatKHR> formats(count);
-    VKT_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(physical, surface, &count, formats.data()));
-    VKT_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(physical, surface, &count, nullptr));
-    std::vector<VkPresentModeKHR> modes(count);
-    VKT_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(physical, surface, &count, modes.data()));
-
-    // Frames are copied or cleared into the images (TRANSFER_DST) in any case:
-    // when we cannot draw into them, and by chapters that copy their picture in.
-    if (!(capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
-        throw Error("the surface's images cannot be copied into (no TRANSFER_DST usage)");
-
-    format_ = choose_surface_format(formats, request.keep);
-    extent_ = choose_extent(capabilities, request.extent);
-    present_mode_ = choose_present_mode(modes, request.uncapped);
-    // --screenshot reads back the image we present, where the surface allows it.
-    readable_ =
-        request.readable && (capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
-    // Drawing straight into the images saves a full-screen copy per frame. It
-    // needs the _SRGB format the chapters' pipelines are made for (a _UNORM
-    // image would take our linear colours as already encoded), and, for
-    // --screenshot, images we can read back.
-    const bool drawable =
-        request.drawable && format_.format == render_format_for(format_.format) &&
-        (capabilities.supportedUsageFlags & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) &&
-        readable_ == request.readable;
+    // What the surface offers decides every setting (plan_swapchain, above).
+    const SwapchainPlan plan = plan_swapchain(query_surface(physical, surface), request);
+    format_ = plan.format;
+    extent_ = plan.extent;
+    present_mode_ = plan.present_mode;
+    readable_ = plan.readable;
+    const bool drawable = plan.drawable;
 
     VkSwapchainCreateInfoKHR info{
         .sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR,
         .surface = surface,
-        .minImageCount = choose_image_count(capabilities),
+        .minImageCount = plan.image_count,
         .imageFormat = format_.format,
         .imageColorSpace = format_.colorSpace,
         .imageExtent = extent_,
         .imageArrayLayers = 1,
-        .imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                      (readable_ ? VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_SRC_BIT}
-                                 : VkImageUsageFlags{0}) |
-                      (drawable ? VkImageUsageFlags{VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT}
-                                : VkImageUsageFlags{0}),
+        .imageUsage = plan.usage,
         .imageSharingMode = VK_SHARING_MODE_EXCLUSIVE,  // one queue draws and presents
-        .preTransform = capabilities.currentTransform,
-        .compositeAlpha = (capabilities.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)
-                              ? VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR
-                              : VkCompositeAlphaFlagBitsKHR(capabilities.supportedCompositeAlpha &
-                                                            -capabilities.supportedCompositeAlpha),
+        .preTransform = plan.transform,
+        .compositeAlpha = plan.composite_alpha,
         .presentMode = present_mode_,
         .clipped = VK_TRUE,
         .oldSwapchain = old_swapchain,  // lets the driver hand resources over on resize
@@ -142,6 +175,7 @@ Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR su
     VKT_CHECK(vkCreateSwapchainKHR(device, &info, nullptr, &swapchain));
     swapchain_ = SwapchainHandle(device, swapchain);
 
+    uint32_t count = 0;
     VKT_CHECK(vkGetSwapchainImagesKHR(device, swapchain, &count, nullptr));
     images_.resize(count);
     VKT_CHECK(vkGetSwapchainImagesKHR(device, swapchain, &count, images_.data()));

@@ -109,13 +109,14 @@ void ChapterRun::open_presentation(const Options& options, const ChapterSpec& sp
     VkExtent2D extent{options.width, options.height};
     if (surface_) {
         if (window_) extent = window_->framebuffer_size();
-        swapchain_ =
-            std::make_unique<Swapchain>(device_->physical(), *device_, surface_,
-                                        SwapchainRequest{.extent = extent,
-                                                         .uncapped = options.benchmark,
-                                                         .readable = !options.screenshot.empty(),
-                                                         .drawable = !options.copy_to_swapchain},
-                                        VK_NULL_HANDLE);
+        swapchain_ = std::make_unique<Swapchain>(
+            device_->physical(), *device_, surface_,
+            SwapchainRequest{.extent = extent,
+                             .uncapped = options.benchmark,
+                             .readable = !options.screenshot.empty(),
+                             .drawable = !options.copy_to_swapchain,
+                             .transfer_into = spec.transfers_into_target},
+            VK_NULL_HANDLE);
         extent = swapchain_->extent();
     }
     create_target(extent);
@@ -253,7 +254,8 @@ void ChapterRun::recreate_swapchain() {
                          .uncapped = options_.benchmark,
                          .readable = !options_.screenshot.empty(),
                          .keep = swapchain_->format(),
-                         .drawable = !options_.copy_to_swapchain},
+                         .drawable = !options_.copy_to_swapchain,
+                         .transfer_into = spec_.transfers_into_target},
         swapchain_->get());
     swapchain_ = std::move(next);  // the old swapchain is destroyed after the new one exists
     // The chapter's pipelines were made for our target's format; it must not change.

@@ -112,6 +112,25 @@ bool file_size(size_t* size, std::string* err, const std::string& path, void* us
 }
 #endif
 
+#if VKT_TINYGLTF_URI_CALLBACKS
+// tinygltf 2.9 %-decodes each URI through this callback. Decoded as tinygltf
+// would, then held to the same rules as a file name before anything else
+// sees it: tinygltf 2.9 on its own cuts a URI at a NUL byte (the "%!Q" of its
+// issue 416 decodes to one) and skips the image with only a warning; 2.7
+// handed the decoded name to FileExists, where the same check refused it.
+bool decode_uri(const std::string& uri, std::string* out, void* user) {
+    auto* access = static_cast<FileAccess*>(user);
+    if (!tinygltf::URIDecode(uri, out, nullptr)) return false;
+    try {
+        (void)resolve_inside(access->folder, *out);
+        return true;
+    } catch (const Error& e) {
+        access->refuse(e.what());
+        return false;
+    }
+}
+#endif
+
 bool write_nothing(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
     if (err) *err += "the glTF loader writes no files\n";
     return false;
@@ -167,6 +186,13 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path) {
 #endif
     callbacks.user_data = &access;
     use_fs_callbacks(gltf, callbacks);
+#if VKT_TINYGLTF_URI_CALLBACKS
+    const tinygltf::URICallbacks uri_callbacks{nullptr, decode_uri, &access};
+    std::string why;
+    if (!gltf.SetURICallbacks(uri_callbacks, &why))
+        throw Error("tinygltf::SetURICallbacks refused the loader's URI decoder (" +
+                    (why.empty() ? std::string("it gave no reason") : first_line(why)) + ")");
+#endif
     gltf.SetImageLoader(keep_image_bytes, nullptr);
 
     tinygltf::Model model;

@@ -14,22 +14,24 @@ namespace vkt {
 const char* result_name(VkResult result);
 
 // [vulkan-error]
+// Anything that stops a chapter: a missing file, no suitable device, a
+// Vulkan call that failed... `catch (const vkt::Error&)` catches them all.
+class Error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 // A Vulkan call returned an error. what() names the call (without its
 // arguments), the result by name and number, and the source file and line:
 // "vkCreateDevice failed with VK_ERROR_FEATURE_NOT_PRESENT (-8) at device.cpp:<line>".
-class VulkanError : public std::runtime_error {
+// result() lets a caller act on one result (out of memory, say).
+class VulkanError : public Error {
 public:
     VulkanError(const char* call, VkResult result, std::source_location where);
     VkResult result() const { return result_; }
 
 private:
     VkResult result_;
-};
-
-// Anything else that stops a chapter: a missing file, no suitable device...
-class Error : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
 };
 
 // Throws VulkanError for an error code (all are negative). Success codes,

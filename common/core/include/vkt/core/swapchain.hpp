@@ -31,6 +31,10 @@ VkExtent2D choose_extent(const VkSurfaceCapabilitiesKHR& capabilities, VkExtent2
 // engine to release one, within the surface's maximum (0 means no maximum).
 uint32_t choose_image_count(const VkSurfaceCapabilitiesKHR& capabilities);
 
+// OPAQUE where the surface offers it (our alpha is not meant for the
+// desktop behind the window), else the first mode it offers.
+VkCompositeAlphaFlagBitsKHR choose_composite_alpha(VkCompositeAlphaFlagsKHR supported);
+
 // What the runner asks of a swapchain.
 struct SwapchainRequest {
     VkExtent2D extent;                    // used where the surface lets us choose
@@ -38,7 +42,40 @@ struct SwapchainRequest {
     bool readable = false;                // --screenshot: images may be copied from
     VkFormat keep = VK_FORMAT_UNDEFINED;  // on recreation: the format we had
     bool drawable = false;                // draw straight into the images where we can
+    // The chapter writes its frame with transfer commands (a clear, a copy),
+    // so an image it draws straight into needs TRANSFER_DST too.
+    bool transfer_into = false;
 };
+
+// What a surface offers, as vkGetPhysicalDeviceSurface*KHR report it.
+struct SurfaceOffer {
+    VkSurfaceCapabilitiesKHR capabilities{};
+    std::vector<VkSurfaceFormatKHR> formats;
+    std::vector<VkPresentModeKHR> modes;
+};
+SurfaceOffer query_surface(VkPhysicalDevice physical, VkSurfaceKHR surface);
+
+// Everything vkCreateSwapchainKHR is told that depends on the surface.
+struct SwapchainPlan {
+    VkSurfaceFormatKHR format{};
+    VkExtent2D extent{};
+    VkPresentModeKHR present_mode = VK_PRESENT_MODE_FIFO_KHR;
+    uint32_t image_count = 0;
+    // Only what is needed and offered: COLOR_ATTACHMENT where frames are drawn
+    // into the images, else TRANSFER_DST to copy them in; TRANSFER_SRC for
+    // --screenshot. The specification promises only COLOR_ATTACHMENT.
+    VkImageUsageFlags usage = 0;
+    VkSurfaceTransformFlagBitsKHR transform = VK_SURFACE_TRANSFORM_IDENTITY_BIT_KHR;
+    VkCompositeAlphaFlagBitsKHR composite_alpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
+    bool drawable = false;  // frames are drawn straight into the images
+    bool readable = false;  // the images may be copied from
+};
+
+// The swapchain for `request` on a surface that offers `offer`: a pure
+// function, so every case of what a surface may lack is unit-tested. Throws
+// Error, saying why, when the picture could reach the images neither by
+// drawing nor by copying.
+SwapchainPlan plan_swapchain(const SurfaceOffer& offer, const SwapchainRequest& request);
 
 class Swapchain {
 public:

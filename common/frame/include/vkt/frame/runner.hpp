@@ -93,6 +93,11 @@ struct ChapterSpec {
     // asked for, since a storage usage can cost a colour target its
     // compression on some GPUs.
     bool storage_target = false;
+    // The chapter writes its frame with transfer commands (a clear, a copy
+    // into Frame::target): a swapchain image it draws straight into then needs
+    // TRANSFER_DST usage, which the specification does not promise. Where the
+    // surface lacks it, the frame goes into our own target instead.
+    bool transfers_into_target = false;
     // Checks between the chapter's own flags (two that contradict each other),
     // run right after parsing, before any Vulkan object exists: throw
     // UsageError, and the chapter exits with status 2 like any bad argument.
