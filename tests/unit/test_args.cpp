@@ -206,7 +206,7 @@ TEST_CASE("--help and the usage line list a chapter's flags", "[args][chapter-op
     CHECK(help.find("--screenshot FILE.png") != std::string::npos);
 }
 
-TEST_CASE("--headless and --offscreen are alternatives: both given is a usage error", "[args]") {
+TEST_CASE("the alternatives --headless and --offscreen: both given is a usage error", "[args]") {
     for (const auto& args :
          {std::vector<const char*>{"--headless", "--offscreen"},
           std::vector<const char*>{"--offscreen", "--frames", "2", "--headless"}}) {
