@@ -6,11 +6,11 @@
 # at that size, then closes the window with the window manager's close. The
 # chapter must exit 0 with a clean validation report and a screenshot of its
 # last frame, at the last size, showing the triangle.
-#   window_resize.sh CHAPTER_EXE OUT_DIR TITLE CHECKER
+#   window_resize.sh CHAPTER_EXE OUT_DIR TITLE CHECKER [PICTURE: triangle (default) or any]
 set -u
 # shellcheck source=window_test_helpers.sh
 . "$(dirname "$0")/window_test_helpers.sh"
-exe=$1 out=$2 title=$3 checker=$4
+exe=$1 out=$2 title=$3 checker=$4 picture=${5:-triangle}
 mkdir -p "$out"
 shot="$out/$(basename "$exe").resized.png"
 rm -f "$shot"
@@ -24,5 +24,5 @@ resize "$window" 333 201   # odd width: rows are not a multiple of 4 or 8 pixels
 close_with_wm "$window"
 grep -v '^\[validation' "$err"
 expect_clean_exit "$shot" 333 201
-check_triangle "$checker" "$shot" 333 201 || fail "the last frame is not the triangle"
+check_last_frame "$picture" "$checker" "$shot" 333 201 || fail "the last frame is not the chapter's picture"
 echo PASS

@@ -6,11 +6,11 @@
 # presented a frame at it. Whatever happened in between, the end is known:
 # close, exit 0, clean validation, and a screenshot of the triangle at the last
 # size. One storm size is larger than the start (the read-back buffers grow).
-#   window_resize_storm.sh CHAPTER_EXE OUT_DIR TITLE RESIZES CHECKER
+#   window_resize_storm.sh CHAPTER_EXE OUT_DIR TITLE RESIZES CHECKER [PICTURE: triangle (default) or any]
 set -u
 # shellcheck source=window_test_helpers.sh
 . "$(dirname "$0")/window_test_helpers.sh"
-exe=$1 out=$2 title=$3 resizes=$4 checker=$5
+exe=$1 out=$2 title=$3 resizes=$4 checker=$5 picture=${6:-triangle}
 mkdir -p "$out"
 shot="$out/$(basename "$exe").storm.png"
 rm -f "$shot"
@@ -28,5 +28,5 @@ echo "$(grep -c 'swapchain recreated' "$err") recreations for $resizes + 1 resiz
 close_with_wm "$window"
 grep -v '^\[validation' "$err" | grep -v -E 'swapchain recreated|presented a frame'
 expect_clean_exit "$shot" 301 199
-check_triangle "$checker" "$shot" 301 199 || fail "the last frame is not the triangle"
+check_last_frame "$picture" "$checker" "$shot" 301 199 || fail "the last frame is not the chapter's picture"
 echo PASS

@@ -236,6 +236,18 @@ expect_clean_exit() {
   [ -f "$1" ] || fail "no screenshot was written"
 }
 
+# check_last_frame PICTURE CHECKER PNG W H: the last frame is the chapter's
+# picture. PICTURE "triangle": chapter 04's (check_triangle); "any": only its
+# size is checked (expect_clean_exit), for chapter 03, whose colour follows the
+# wall clock in an open-ended window run.
+check_last_frame() {
+  case $1 in
+    triangle) check_triangle "$2" "$3" "$4" "$5" ;;
+    any) return 0 ;;
+    *) fail "unknown picture '$1'" ;;
+  esac
+}
+
 # check_triangle CHECKER PNG W H: chapter 04's picture at any size has the
 # clear colour in its corners and, at its centre (clip space 0,0, where the
 # vertex colours mix 1/2 red, 1/4 green, 1/4 blue), linear (0.55, 0.35, 0.325),

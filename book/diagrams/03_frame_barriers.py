@@ -1,16 +1,21 @@
-"""Chapters 03 and 04: the barriers of one frame, in recording order, both ways.
+"""Chapter 03's barriers of one frame, in recording order, both ways; and, with
+runner=True (04_runner_barriers.py), the runner's, for chapter 04's page.
 
-The runner's barriers are common/frame/src/runner.cpp [frame-barriers]
-(numbered as the book's list numbers them); a and b are chapter 03's own
-(chapters/03_swapchain/main.cpp [to-transfer] and [to-attachment]); chapter 04
-clears with loadOp CLEAR instead and needs none.
+Chapter 03's are chapters/03_swapchain/main.cpp's record() ([clear], [copy-in],
+[to-present]), numbered as the book's list numbers them: its image is cleared
+in TRANSFER_DST_OPTIMAL. The runner's (common/frame/src/runner.cpp, record)
+hand the chapter its image in COLOR_ATTACHMENT_OPTIMAL; chapter 04 clears with
+loadOp CLEAR and draws, with no barrier of its own.
 
-Above, a frame drawn straight into the swapchain image (an _SRGB surface):
+Above, a frame that goes straight into the swapchain image (an _SRGB surface):
 barriers 1 and 6 only, both on the swapchain image, the first with the stage
-the submission waits at for image_acquired (COLOR_ATTACHMENT_OUTPUT). Below, a
-frame drawn into the runner's own target and copied (a _UNORM surface, or
---copy-to-swapchain): the list's six steps.
+the submission waits at for image_acquired (CLEAR for 03's clear,
+COLOR_ATTACHMENT_OUTPUT for the runner's drawing). Below, a frame that goes
+into our own image and is copied (a _UNORM surface, or --copy-to-swapchain):
+the list's six steps.
 """
+
+import sys
 
 from svg import (BLUE, BLUE_FILL, GREEN, GREEN_FILL, GREY, GREY_FILL, GRID, INK, MUTED, ORANGE,
                  ORANGE_FILL, PURPLE, PURPLE_FILL, Svg, text_width)
@@ -29,10 +34,10 @@ LAYOUT_STYLE = {
 
 START, END = 40, 984
 # Through our target: the barriers' places on the two tracks.
-X1, XA, XB, X3, X4, X5A, X5B, X6 = 150, 236, 396, 500, 596, 618, 720, 760
+X1, X3, X4, X5A, X5B, X6 = 150, 500, 596, 618, 720, 760
 # Straight in: the chapter's part is as wide as below, after a longer wait.
 D1 = 330
-DA, DB, D6 = D1 + XA - X1, D1 + XB - X1, D1 + X3 - X1
+D6 = D1 + X3 - X1
 
 TOP_A = 54                   # the upper panel: straight into the swapchain image
 TRACK_A = TOP_A + 102
@@ -44,14 +49,25 @@ CALLOUTS_B = SWAP_Y + TRACK_H + 52
 W, H = 1000, CALLOUTS_B + BOX_H + 34
 
 
-def main() -> None:
-    s = Svg(W, H, "Chapters 03 and 04: the barriers of a frame, both ways to the swapchain image",
-            "One frame's command buffer from left to right, twice. Drawn straight into the swapchain "
-            "image: two barriers on that image, around the chapter's commands. Through the runner's "
-            "own target: the layouts of the target and of the acquired swapchain image, four barriers "
-            "and the copy. For each barrier, its stages and accesses before and after.")
+def main(runner: bool = False) -> None:
+    # What fills the image between barrier 1 and the next: 03's clear, in
+    # TRANSFER_DST at the CLEAR stage, or the runner's chapter drawing, in
+    # COLOR_ATTACHMENT_OPTIMAL at the colour-output stage.
+    if runner:
+        work, stage, access = "COLOR_ATTACHMENT_OPTIMAL", "COLOR_ATTACHMENT_OUTPUT", "COLOR_ATTACHMENT_WRITE"
+        into, own = "drawn", "the runner's own target"
+    else:
+        work, stage, access = "TRANSFER_DST_OPTIMAL", "CLEAR", "TRANSFER_WRITE"
+        into, own = "cleared", "our own image"
+    whose = "The runner's" if runner else "Chapter 03's"
+    s = Svg(W, H, f"{whose} barriers of a frame, both ways to the swapchain image",
+            f"One frame's command buffer from left to right, twice. {into.capitalize()} straight into the "
+            f"swapchain image: two barriers on that image, around the {'chapter' if runner else 'clear'}. "
+            f"Through {own}: the layouts of that image and of the acquired swapchain image, four "
+            "barriers and the copy. For each barrier, its stages and accesses before and after.")
 
-    s.text(START, 28, "One frame's command buffer, in recording order: the two ways to the swapchain image",
+    s.text(START, 28, f"One frame's command buffer in {'the runner' if runner else 'chapter 03'}, in recording "
+           "order: the two ways to the swapchain image",
            size=15, bold=True)
     s.line(START, 44, END, 44, stroke=MUTED, arrow="end")
 
@@ -88,13 +104,8 @@ def main() -> None:
         s.text(x, y - 16, name, size=11.5, anchor="middle", fill="#ffffff" if not minor else MUTED, bold=True)
 
     def chapter_segments(x1, y):
-        """Between barrier 1 and the next: what the chapter records (03's clear shown)."""
-        xa, xb, x3 = x1 + XA - X1, x1 + XB - X1, x1 + X3 - X1
-        segment(x1, xa, y, "COLOR_ATTACHMENT_OPTIMAL", "COLOR_ATT.")
-        segment(xa, xb, y, "TRANSFER_DST_OPTIMAL", "TRANSFER_DST (03)")
-        segment(xb, x3, y, "COLOR_ATTACHMENT_OPTIMAL", "COLOR_ATT.")
-        barrier(xa, y, "a", minor=True)
-        barrier(xb, y, "b", minor=True)
+        """Between barrier 1 and the next: the clear (03), or what the chapter records (runner)."""
+        segment(x1, x1 + X3 - X1, y, work)
 
     def callout(column, top, name, image, old, new, src, dst, why):
         """A barrier's box: its layouts, and its stage and access before (src) and after (dst)."""
@@ -114,7 +125,7 @@ def main() -> None:
         s.text(bx + 10, top + 136, why, size=11, fill=INK, italic=True)
 
     # ---- Straight into the swapchain image --------------------------------------
-    heading(TOP_A, "Drawn straight into the swapchain image (an _SRGB surface, usually a window)",
+    heading(TOP_A, f"{into.capitalize()} straight into the swapchain image (an _SRGB surface, usually a window)",
             "Two barriers, both on the swapchain image: no image of our own, no copy.")
     s.text(START, TRACK_A - 38, "the acquired swapchain image", size=12.5, bold=True)
     not_yet_ours(START, D1, TRACK_A)
@@ -122,41 +133,50 @@ def main() -> None:
     segment(D6, END - 70, TRACK_A, "PRESENT_SRC_KHR")
     barrier(D1, TRACK_A, "1")
     barrier(D6, TRACK_A, "6")
-    waits_here(D1, TRACK_A, "COLOR_ATTACHMENT_OUTPUT")
-    s.text((D1 + D6) / 2, TRACK_A + NOTE, "2  the chapter records (box below)", size=11.5,
-           anchor="middle", bold=True)
+    waits_here(D1, TRACK_A, stage)
+    s.text((D1 + D6) / 2, TRACK_A + NOTE, "2  the chapter records (box below)" if runner else
+           "2  vkCmdClearColorImage (box below)", size=11.5, anchor="middle", bold=True)
     presented(END - 70, TRACK_A)
 
-    callout(0, CALLOUTS_A, "1", "swapchain image", "UNDEFINED", "COLOR_ATTACHMENT_OPTIMAL",
-            ("COLOR_ATTACHMENT_OUTPUT", "NONE"), ("COLOR_ATTACHMENT_OUTPUT", "COLOR_ATTACHMENT_WRITE|READ"),
+    callout(0, CALLOUTS_A, "1", "swapchain image", "UNDEFINED", work,
+            (stage, "NONE"), (stage, "COLOR_ATTACHMENT_WRITE|READ" if runner else access),
             "after the semaphore wait (same stage)")
-    callout(3, CALLOUTS_A, "6", "swapchain image", "COLOR_ATTACHMENT_OPTIMAL", "PRESENT_SRC_KHR",
-            ("COLOR_ATTACHMENT_OUTPUT", "COLOR_ATTACHMENT_WRITE"), ("NONE", "NONE"),
+    callout(3, CALLOUTS_A, "6", "swapchain image", work, "PRESENT_SRC_KHR",
+            (stage, access), ("NONE", "NONE"),
             "the semaphore orders the present")
     # The chapter's part, the same either way, in the two columns between.
     bx0, bx1 = START + BOX_W + 6, START + 3 * BOX_W + 12
     s.rect(bx0, CALLOUTS_A, bx1 - bx0, BOX_H, fill="#ffffff", stroke=GREY, rx=6, dash="4 3")
-    s.text(bx0 + 12, CALLOUTS_A + 22, "2  the chapter records (the same either way)", size=12.5, bold=True)
-    s.lines(bx0 + 12, CALLOUTS_A + 44, ["03: barrier a, vkCmdClearColorImage, barrier b",
-                                        "    a, b: COLOR_ATTACHMENT_OUTPUT \u21c4 CLEAR stage",
-                                        "04: loadOp CLEAR, then draw: no barrier"],
-            size=10.5, leading=1.3, mono=True)
-    s.lines(bx0 + 12, CALLOUTS_A + 106, ["The wait holds back the colour output only: a chapter's vertex",
-                                         "shading or compute may run before the image is free."],
-            size=11, leading=1.3, italic=True)
+    if runner:
+        s.text(bx0 + 12, CALLOUTS_A + 22, "2  the chapter records (the same either way)", size=12.5, bold=True)
+        s.lines(bx0 + 12, CALLOUTS_A + 44, ["04: loadOp CLEAR, then draw: no barrier of its own",
+                                            "(03 writes its own loop: a clear, in TRANSFER_DST)"],
+                size=10.5, leading=1.3, mono=True)
+        s.lines(bx0 + 12, CALLOUTS_A + 106, ["The wait holds back the colour output only: a chapter's vertex",
+                                             "shading or compute may run before the image is free."],
+                size=11, leading=1.3, italic=True)
+    else:
+        s.text(bx0 + 12, CALLOUTS_A + 22, "2  vkCmdClearColorImage (the same either way)", size=12.5, bold=True)
+        s.lines(bx0 + 12, CALLOUTS_A + 44, ["a transfer command: the image in TRANSFER_DST,",
+                                            "written at the CLEAR stage (TRANSFER_WRITE)"],
+                size=10.5, leading=1.3, mono=True)
+        s.lines(bx0 + 12, CALLOUTS_A + 106, ["With --screenshot, before 6: the swapchain image to",
+                                             "TRANSFER_SRC, read back, and from there to PRESENT_SRC."],
+                size=11, leading=1.3, italic=True)
 
     s.line(START, TOP_B - 14, END, TOP_B - 14, stroke=GRID, width=1)
 
     # ---- Through the runner's own target -----------------------------------------
-    heading(TOP_B, "Through the runner's own target (a _UNORM surface, or --copy-to-swapchain)",
-            "Six steps: the chapter draws into our target, which the runner copies into the swapchain image.")
-    s.text(START, TARGET_Y - 38, "the runner's own target (one image, shared by both slots)", size=12.5,
-           bold=True)
+    heading(TOP_B, f"Through {own} (a _UNORM surface, or --copy-to-swapchain)",
+            "Six steps: the chapter draws into our target, which the runner copies into the swapchain image."
+            if runner else "Six steps: the clear goes into our own _SRGB image, which is copied into the "
+            "swapchain image.")
+    s.text(START, TARGET_Y - 38, f"{own} (one image, shared by both slots)", size=12.5, bold=True)
     segment(START, X1, TARGET_Y, "UNDEFINED", "UNDEFINED")
     chapter_segments(X1, TARGET_Y)
     segment(X3, X5B, TARGET_Y, "TRANSFER_SRC_OPTIMAL", "TRANSFER_SRC")
-    s.text((X1 + X3) / 2, TARGET_Y + NOTE, "2  the chapter records (box above)", size=11.5,
-           anchor="middle", bold=True)
+    s.text((X1 + X3) / 2, TARGET_Y + NOTE, "2  the chapter records (box above)" if runner else
+           "2  the clear (box above)", size=11.5, anchor="middle", bold=True)
 
     s.text(START, SWAP_Y - 38, "the acquired swapchain image", size=12.5, bold=True)
     not_yet_ours(START, X4, SWAP_Y)
@@ -175,12 +195,12 @@ def main() -> None:
     barrier(X6, SWAP_Y, "6")
 
     callouts = [
-        ("1", "target", "UNDEFINED", "COLOR_ATTACHMENT_OPTIMAL",
-         ("COPY", "NONE"), ("COLOR_ATTACHMENT_OUTPUT", "COLOR_ATTACHMENT_WRITE|READ"),
+        ("1", "target" if runner else "our image", "UNDEFINED", work,
+         ("COPY", "NONE"), (stage, "COLOR_ATTACHMENT_WRITE|READ" if runner else access),
          "after the last frame's copy read it"),
-        ("3", "target", "COLOR_ATTACHMENT_OPTIMAL", "TRANSFER_SRC_OPTIMAL",
-         ("COLOR_ATTACHMENT_OUTPUT", "COLOR_ATTACHMENT_WRITE"), ("COPY", "TRANSFER_READ"),
-         "the drawing is done and visible"),
+        ("3", "target" if runner else "our image", work, "TRANSFER_SRC_OPTIMAL",
+         (stage, access), ("COPY", "TRANSFER_READ"),
+         "the drawing is done and visible" if runner else "the clear is done and visible"),
         ("4", "swapchain image", "UNDEFINED", "TRANSFER_DST_OPTIMAL",
          ("COPY", "NONE"), ("COPY", "TRANSFER_WRITE"),
          "after the semaphore wait at COPY"),
@@ -198,4 +218,4 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    main(runner="--runner" in sys.argv)

@@ -1,13 +1,15 @@
-"""Chapter 03: four frames of the runner's loop over time, two in flight, both ways.
+"""Chapter 03: four frames of its loop over time, two in flight, both ways.
 
-What it shows is common/frame/src/runner.cpp (draw_frame): per frame slot a
+What it shows is chapters/03_swapchain/main.cpp (draw_frame), which the runner
+(common/frame/src/runner.cpp) repeats for chapters 04 on: per frame slot a
 fence `done` and a semaphore `image_acquired`; per swapchain image a semaphore
 `ready_to_present`; the CPU waits for the slot's fence (the frame two back),
 acquires, records, submits (signalling ready_to_present[image] and done[slot])
 and presents. The submission waits for image_acquired at the stage of its first
-write to the swapchain image: COLOR_ATTACHMENT_OUTPUT where the chapter draws
-straight into it (an _SRGB surface), COPY where the runner copies its own
-target into it (a _UNORM surface, or --copy-to-swapchain). The two timelines
+write to the swapchain image: CLEAR where chapter 03 clears straight into it
+(an _SRGB surface; the runner's chapters draw there, at COLOR_ATTACHMENT_OUTPUT),
+COPY where our own image is copied into it (a _UNORM surface, or
+--copy-to-swapchain). The two timelines
 share the time axis: the CPU's work is the same, the GPU's differs by the copy.
 """
 
@@ -62,18 +64,18 @@ def timeline(s: Svg, top: float, direct: bool) -> None:
     frames = schedule(direct)
 
     if direct:
-        title = "Drawn straight into the swapchain image (an _SRGB surface, usually a window)"
-        sub = "The chapter's colour writes are the first writes to the image: they wait for " \
-              "`image_acquired`, at `COLOR_ATTACHMENT_OUTPUT`."
+        title = "Cleared straight into the swapchain image (an _SRGB surface, usually a window)"
+        sub = "The clear is the first write to the image: it waits for " \
+              "`image_acquired`, at `CLEAR`."
     else:
-        title = "Through the runner's own target (a _UNORM surface, or --copy-to-swapchain)"
-        sub = "The chapter draws into our target; only the copy writes to the swapchain image, so " \
-              "only the copy waits for `image_acquired`, at `COPY`."
+        title = "Through our own image (a _UNORM surface, or --copy-to-swapchain)"
+        sub = "The clear goes into our own image; only the copy writes to the swapchain image, so " \
+              "the wait is at `COPY`."
     s.text(10, top + 16, title, size=13.5, bold=True)
     s.text(10, top + 34, sub, size=12, fill=MUTED)
     assert 10 + max(text_width(title, 13.5, bold=True), text_width(sub, 12)) < W - 10, "a heading is too long"
 
-    for y, name, sub_name in ((cpu_y, "CPU", "the runner"), (gpu_y, "GPU queue", "submissions"),
+    for y, name, sub_name in ((cpu_y, "CPU", "the loop"), (gpu_y, "GPU queue", "submissions"),
                               (pe_y, "Presentation", "engine")):
         s.rect(LEFT - 6, y - 7, RIGHT - LEFT + 10, LANE_H + 14, fill="#fafbfc", stroke="#e4e8ec", rx=6)
         s.text(10, y + 14, name, size=14, bold=True)
@@ -117,11 +119,11 @@ def timeline(s: Svg, top: float, direct: bool) -> None:
             label = f"frame {fr['f']}"
         s.text(fr["acquire"][0] + 1, cpu_y - 12, label, size=11.5, fill=SLOT_STROKE[slot], bold=True)
 
-    # The GPU lane: the chapter's commands, into the swapchain image itself or
-    # into our target and then the copy.
+    # The GPU lane: the clear, into the swapchain image itself or into our own
+    # image and then the copy.
     for fr in frames:
-        where = f"image {fr['image']}" if direct else "our target"
-        block(fr["draw"], gpu_y, f"frame {fr['f']}: the chapter draws into {where}", fr["slot"])
+        where = f"image {fr['image']}" if direct else "our own image"
+        block(fr["draw"], gpu_y, f"frame {fr['f']}: the clear of {where}", fr["slot"])
         if not direct:
             block(fr["copy"], gpu_y, "copy", fr["slot"], size=11)
 
@@ -137,9 +139,9 @@ def timeline(s: Svg, top: float, direct: bool) -> None:
     # image waits for it.
     for fr in frames:
         t_sig = fr["acquire"][1] - 4
-        # Drawing straight in, only the colour writes wait: the chapter's work
-        # before them (vertex shading, say) may start, hence a little way in.
-        t_wait = fr["draw"][0] + 40 if direct else fr["copy"][0] + 12
+        # The first write to the swapchain image waits: the clear straight in,
+        # or the copy.
+        t_wait = fr["draw"][0] + 12 if direct else fr["copy"][0] + 12
         if t_wait >= RIGHT:
             continue
         level = pe_y - 16 - 12 * fr["slot"]
@@ -147,7 +149,7 @@ def timeline(s: Svg, top: float, direct: bool) -> None:
                    stroke=PURPLE, width=1.3, arrow="end")
         s.circle(t_sig, pe_y + 7, 3.5, fill=PURPLE, stroke=PURPLE)
         if fr["f"] == 0:
-            stage = "COLOR_ATTACHMENT_OUTPUT" if direct else "COPY"
+            stage = "CLEAR" if direct else "COPY"
             s.text(t_sig + 6, pe_y + 22, f"`image_acquired[0]`, waited for at `{stage}`", size=11,
                    fill=PURPLE)
 
@@ -169,12 +171,12 @@ def timeline(s: Svg, top: float, direct: bool) -> None:
 def main() -> None:
     s = Svg(W, H, "Chapter 03: the frame loop with two frames in flight, both ways to the swapchain image",
             "Two timelines of four frames on three lanes each: the CPU, the GPU queue and the "
-            "presentation engine. The CPU waits for a slot's fence before reusing it. Drawn straight "
-            "into the swapchain image, the chapter's colour writes wait for image_acquired; through "
-            "the runner's own target, only the copy into the swapchain image waits for it. Either way "
+            "presentation engine. The CPU waits for a slot's fence before reusing it. Cleared straight "
+            "into the swapchain image, the clear waits for image_acquired; through "
+            "our own image, the copy into the swapchain image waits for it. Either way "
             "the submission signals ready_to_present for presentation and done for the CPU.")
 
-    s.text(10, 24, "The runner's loop over time: two frames in flight (and here three swapchain images)",
+    s.text(10, 24, "Chapter 03's loop over time: two frames in flight (and here three swapchain images)",
            size=15, bold=True)
     timeline(s, TOP, direct=True)
     s.line(10, TOP + PANEL_H + SEP / 2, W - 10, TOP + PANEL_H + SEP / 2, stroke=GRID, width=1)

@@ -48,6 +48,12 @@ bool has_layer(const std::vector<VkLayerProperties>& layers, const char* name) {
     return false;
 }
 
+bool has_extension(const std::vector<VkExtensionProperties>& extensions, const char* name) {
+    for (const auto& extension : extensions)
+        if (std::strcmp(extension.extensionName, name) == 0) return true;
+    return false;
+}
+
 int run(const vkt::Options& options) {
     // [instance-version]
     // vkEnumerateInstanceVersion is a Vulkan 1.1 function: the loader's version,
@@ -86,6 +92,21 @@ int run(const vkt::Options& options) {
     const bool validation = options.validation.value_or(installed);
     // [/choose-validation]
 
+    // [portability]
+    // MoltenVK (Vulkan on Apple's Metal) lacks a few parts of Vulkan, so it is
+    // a "portability" driver, and the loader lists it only to a program that
+    // says it can cope. Where the loader offers VK_KHR_portability_enumeration
+    // we enable it together with the flag that asks for those drivers too.
+    std::vector<const char*> enabled_extensions;
+    VkInstanceCreateFlags instance_flags = 0;
+    if (has_extension(extensions, VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME)) {
+        enabled_extensions.push_back(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME);
+        instance_flags |= VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR;
+    }
+    std::printf("\nportability drivers (MoltenVK): %s\n",
+                instance_flags ? "listed too" : "the loader has no such extension");
+    // [/portability]
+
     // [create-instance]
     VkApplicationInfo app{
         .sType = VK_STRUCTURE_TYPE_APPLICATION_INFO,
@@ -118,7 +139,7 @@ int run(const vkt::Options& options) {
         .pEnabledValidationFeatures = enabled,
     };
 
-    std::vector<const char*> enabled_layers, enabled_extensions;
+    std::vector<const char*> enabled_layers;
     if (validation) {
         enabled_layers.push_back(validation_layer);
         enabled_extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
@@ -127,6 +148,7 @@ int run(const vkt::Options& options) {
     VkInstanceCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO,
         .pNext = validation ? &features : nullptr,
+        .flags = instance_flags,
         .pApplicationInfo = &app,
         .enabledLayerCount = uint32_t(enabled_layers.size()),
         .ppEnabledLayerNames = enabled_layers.data(),

@@ -9,10 +9,15 @@
 #include "vkt/core/instance.hpp"
 #include "vkt/frame/runner.hpp"
 
+// VK_KHR_portability_subset is still a provisional extension: its name is in
+// vulkan_beta.h, which vulkan.h includes only with VK_ENABLE_BETA_EXTENSIONS.
+#include <vulkan/vulkan_beta.h>
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -181,6 +186,21 @@ int run(const vkt::Options& options) {
         for (VkPhysicalDevice device : devices) candidates.push_back(evaluate(device));
         const Candidate& chosen = choose(candidates, options.device);
 
+        // [portability-subset]
+        // A portability driver (MoltenVK) offers VK_KHR_portability_subset, whose
+        // features say which parts of Vulkan it lacks. The specification requires
+        // us to enable the extension wherever it is offered; the features we ask
+        // for here (chapter 02's) are all outside the subset.
+        VKT_CHECK(vkEnumerateDeviceExtensionProperties(chosen.device, nullptr, &count, nullptr));
+        std::vector<VkExtensionProperties> offered(count);
+        VKT_CHECK(
+            vkEnumerateDeviceExtensionProperties(chosen.device, nullptr, &count, offered.data()));
+        std::vector<const char*> device_extensions;
+        for (const auto& extension : offered)
+            if (std::strcmp(extension.extensionName, VK_KHR_PORTABILITY_SUBSET_EXTENSION_NAME) == 0)
+                device_extensions.push_back(VK_KHR_PORTABILITY_SUBSET_EXTENSION_NAME);
+        // [/portability-subset]
+
         // [create-device]
         // One queue from the chosen family. Its priority matters only when
         // several queues of a family compete.
@@ -206,6 +226,8 @@ int run(const vkt::Options& options) {
             .pNext = &features,
             .queueCreateInfoCount = 1,
             .pQueueCreateInfos = &queue_info,
+            .enabledExtensionCount = uint32_t(device_extensions.size()),
+            .ppEnabledExtensionNames = device_extensions.data(),
         };
         VkDevice device;
         VKT_CHECK(vkCreateDevice(chosen.device, &info, nullptr, &device));
@@ -215,7 +237,8 @@ int run(const vkt::Options& options) {
         // [/create-device]
         std::printf("logical device created: queue family %u, queue %p\n", chosen.queue_family,
                     static_cast<void*>(queue));
-        std::printf("enabled: Vulkan 1.3 dynamicRendering, synchronization2\n");
+        std::printf("enabled: Vulkan 1.3 dynamicRendering, synchronization2%s\n",
+                    device_extensions.empty() ? "" : "; VK_KHR_portability_subset");
 
         VKT_CHECK(vkDeviceWaitIdle(device));
         vkDestroyDevice(device, nullptr);

@@ -4,7 +4,6 @@
 #include <cctype>
 #include <charconv>
 #include <cstdlib>
-#include <cstring>
 #include <string_view>
 
 namespace vkt {
@@ -55,17 +54,17 @@ int device_score(const DeviceCandidate& candidate) {
     return 1000 * device_type_score(candidate.type) + int(candidate.max_image_dimension / 1024);
 }
 
-static bool has_device_extension(VkPhysicalDevice device, const char* name) {
+static std::vector<VkExtensionProperties> extensions_of(VkPhysicalDevice device) {
     uint32_t count = 0;
     VKT_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr));
-    std::vector<VkExtensionProperties> available(count);
-    VKT_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, available.data()));
-    return std::any_of(available.begin(), available.end(),
-                       [&](const auto& e) { return std::strcmp(e.extensionName, name) == 0; });
+    std::vector<VkExtensionProperties> offered(count);
+    VKT_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, offered.data()));
+    offered.resize(count);
+    return offered;
 }
 
 bool can_present(VkPhysicalDevice device, uint32_t queue_family, VkSurfaceKHR surface) {
-    if (!has_device_extension(device, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) return false;
+    if (!offers(extensions_of(device), VK_KHR_SWAPCHAIN_EXTENSION_NAME)) return false;
     VkBool32 supported = VK_FALSE;
     return vkGetPhysicalDeviceSurfaceSupportKHR(device, queue_family, surface, &supported) ==
                VK_SUCCESS &&
@@ -100,12 +99,32 @@ bool hidden_by_tests(std::string_view name) {
     return false;
 }
 
-// "lacks the dynamicRendering feature", "lacks the extension VK_KHR_swapchain"
-static std::string lacks(bool feature, std::string_view name) {
-    std::string text = feature ? "lacks the " + std::string(name) + " feature"
-                               : "lacks the extension " + std::string(name);
-    if (hidden_by_tests(name)) text += " (hidden by VKT_HIDE_FEATURES)";
-    return text;
+static std::string hidden_note(std::string_view name) {
+    return hidden_by_tests(name) ? " (hidden by VKT_HIDE_FEATURES)" : "";
+}
+
+std::string lacks_feature(std::string_view name, std::string_view of) {
+    return "lacks the " + std::string(name) + " feature" +
+           (of.empty() ? "" : " of " + std::string(of)) + hidden_note(name);
+}
+
+// "lacks the extension VK_KHR_swapchain"
+static std::string lacks_extension(std::string_view name) {
+    return "lacks the extension " + std::string(name) + hidden_note(name);
+}
+
+// What a portability device has of the parts VK_KHR_portability_subset names;
+// asked only where the device offers the extension.
+static VkPhysicalDevicePortabilitySubsetFeaturesKHR portability_features_of(
+    VkPhysicalDevice device, std::span<const VkExtensionProperties> offered) {
+    VkPhysicalDevicePortabilitySubsetFeaturesKHR subset{
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PORTABILITY_SUBSET_FEATURES_KHR};
+    if (!offers(offered, VK_KHR_PORTABILITY_SUBSET_EXTENSION_NAME)) return subset;
+    VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
+                                       .pNext = &subset};
+    vkGetPhysicalDeviceFeatures2(device, &features);
+    subset.pNext = nullptr;
+    return subset;
 }
 
 static std::string why_unsuitable(VkPhysicalDevice device, VkSurfaceKHR surface,
@@ -121,14 +140,17 @@ static std::string why_unsuitable(VkPhysicalDevice device, VkSurfaceKHR surface,
     vkGetPhysicalDeviceFeatures2(device, available.head());
     for (const Feature& feature : base_features())
         if (!available.has(feature) || hidden_by_tests(feature.name))
-            return lacks(true, feature.name);
+            return lacks_feature(feature.name);
     for (const Feature& feature : requirements.features)
         if (!available.has(feature) || hidden_by_tests(feature.name))
-            return lacks(true, feature.name);
+            return lacks_feature(feature.name);
 
+    const std::vector<VkExtensionProperties> offered = extensions_of(device);
     for (const char* wanted : requirements.extensions)
-        if (!has_device_extension(device, wanted) || hidden_by_tests(wanted))
-            return lacks(false, wanted);
+        if (!offers(offered, wanted) || hidden_by_tests(wanted)) return lacks_extension(wanted);
+    std::string shortfall = portability_shortfall(offered, portability_features_of(device, offered),
+                                                  requirements.portability_features);
+    if (!shortfall.empty()) return shortfall;
 
     uint32_t count = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
@@ -244,13 +266,22 @@ Device::Device(const DeviceCandidate& chosen, const DeviceRequirements& requirem
     for (const Feature& feature : requirements.features) enabled_[feature] = VK_TRUE;
     for (const Feature& feature : requirements.optional_features)
         enabled_[feature] = available.has(feature) ? VK_TRUE : VK_FALSE;
+    // On a portability driver (MoltenVK): VK_KHR_portability_subset, which must
+    // be enabled where offered, and the parts of it the chapter uses.
+    const std::vector<VkExtensionProperties> offered = extensions_of(physical_);
+    const std::vector<const char*> extensions = device_extensions(offered, requirements.extensions);
+    VkPhysicalDevicePortabilitySubsetFeaturesKHR subset =
+        portability_features_to_enable(requirements.portability_features);
+    subset.pNext = enabled_.head();
+    const void* chain = enabled_.head();
+    if (offers(offered, VK_KHR_PORTABILITY_SUBSET_EXTENSION_NAME)) chain = &subset;
     VkDeviceCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
-        .pNext = enabled_.head(),
+        .pNext = chain,
         .queueCreateInfoCount = 1,
         .pQueueCreateInfos = &queue_info,
-        .enabledExtensionCount = static_cast<uint32_t>(requirements.extensions.size()),
-        .ppEnabledExtensionNames = requirements.extensions.data(),
+        .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
+        .ppEnabledExtensionNames = extensions.data(),
     };
     VKT_CHECK(vkCreateDevice(physical_, &info, nullptr, &device_));
     vkGetDeviceQueue(device_, queue_family_, 0, &queue_);

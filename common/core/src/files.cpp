@@ -2,15 +2,44 @@
 
 #include "vkt/core/check.hpp"
 
+#include <cstring>
 #include <fstream>
 #include <string>
+
+// Where the running program is: each system has its own call (Linux a link in
+// /proc). Where it fails, the current folder stands in.
+#if defined(_WIN32)
+#ifndef WIN32_LEAN_AND_MEAN
+#define WIN32_LEAN_AND_MEAN
+#endif
+#include <windows.h>
+#elif defined(__APPLE__)
+#include <mach-o/dyld.h>
+#endif
 
 namespace vkt {
 
 std::filesystem::path executable_dir() {
+#if defined(_WIN32)
+    std::wstring self(32768, L'\0');  // the longest path Windows has
+    const DWORD length = GetModuleFileNameW(nullptr, self.data(), DWORD(self.size()));
+    if (length == 0 || length >= self.size()) return std::filesystem::current_path();
+    self.resize(length);
+    return std::filesystem::path(self).parent_path();
+#elif defined(__APPLE__)
+    uint32_t size = 0;
+    _NSGetExecutablePath(nullptr, &size);  // says how long the path is
+    std::string self(size, '\0');
+    if (_NSGetExecutablePath(self.data(), &size) != 0) return std::filesystem::current_path();
+    self.resize(std::strlen(self.c_str()));
+    std::error_code error;
+    const auto real = std::filesystem::canonical(self, error);
+    return error ? std::filesystem::current_path() : real.parent_path();
+#else
     std::error_code error;
     auto self = std::filesystem::read_symlink("/proc/self/exe", error);
     return error ? std::filesystem::current_path() : self.parent_path();
+#endif
 }
 
 std::filesystem::path shader_path(std::string_view chapter, std::string_view glsl_file) {

@@ -1,5 +1,7 @@
 #include "vkt/core/instance.hpp"
 
+#include "vkt/core/portability.hpp"
+
 #include <cstdio>
 #include <cstring>
 
@@ -69,13 +71,21 @@ Instance::Instance(const InstanceConfig& config) {
                     std::to_string(VK_API_VERSION_MINOR(loader_version)) +
                     "; this tutorial needs Vulkan 1.3");
 
+    uint32_t count = 0;
+    VKT_CHECK(vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr));
+    std::vector<VkExtensionProperties> offered(count);
+    VKT_CHECK(vkEnumerateInstanceExtensionProperties(nullptr, &count, offered.data()));
+    offered.resize(count);
     // Say plainly which extension is missing (a surface extension without a
     // window system, say) rather than just VK_ERROR_EXTENSION_NOT_PRESENT.
     for (const char* extension : config.extensions)
-        if (!instance_extension_available(extension))
+        if (!offers(offered, extension))
             throw Error(std::string("the Vulkan instance lacks the extension ") + extension);
 
-    std::vector<const char*> extensions = config.extensions;
+    // Where the loader offers it, VK_KHR_portability_enumeration and its flag,
+    // so that a portability driver such as MoltenVK is listed (chapter 01).
+    InstanceExtensions wanted = instance_extensions(offered, config.extensions);
+    std::vector<const char*>& extensions = wanted.names;
     std::vector<const char*> layers;
     if (config.validation) {
         // Both extensions are provided by the validation layer itself.
@@ -116,6 +126,7 @@ Instance::Instance(const InstanceConfig& config) {
     VkInstanceCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO,
         .pNext = config.validation ? &features : nullptr,
+        .flags = wanted.flags,
         .pApplicationInfo = &app,
         .enabledLayerCount = static_cast<uint32_t>(layers.size()),
         .ppEnabledLayerNames = layers.data(),

@@ -146,7 +146,6 @@ SwapchainPlan plan_swapchain(const SurfaceOffer& offer, const SwapchainRequest& 
 
 Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR surface,
                      const SwapchainRequest& request, VkSwapchainKHR old_swapchain) {
-    // [create-swapchain]
     // What the surface offers decides every setting (plan_swapchain, above).
     const SwapchainPlan plan = plan_swapchain(query_surface(physical, surface), request);
     format_ = plan.format;
@@ -180,7 +179,6 @@ Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR su
     images_.resize(count);
     VKT_CHECK(vkGetSwapchainImagesKHR(device, swapchain, &count, images_.data()));
     for (uint32_t i = 0; i < count; ++i) ready_to_present_.push_back(create_semaphore(device));
-    // [/create-swapchain]
 
     // [swapchain-views]
     // To render into an image, a pipeline sees it through a view: which

@@ -1,6 +1,8 @@
-// Where the picture goes (chapter 03): a window's swapchain, a headless
-// surface's swapchain, or only our own offscreen image. The frame loop that
-// draws into it is runner.cpp; chapter_run.hpp says how the two meet.
+// The runner's swapchain and colour target (chapter 03): a swapchain where the
+// harness has a surface (a window or a headless one), and our own image where
+// frames cannot go straight into the swapchain's, or where there is none
+// (offscreen). The frame loop that draws into them is runner.cpp;
+// chapter_run.hpp says how the two meet.
 
 #include "chapter_run.hpp"
 
@@ -8,114 +10,19 @@
 #include "vkt/core/memory.hpp"
 
 #include <cstdio>
-#include <cstdlib>
 
 namespace vkt::detail {
 
-const char* presentation_name(Presentation p) {
-    switch (p) {
-        case Presentation::window:
-            return "window";
-        case Presentation::headless_surface:
-            return "headless surface";
-        default:
-            return "offscreen";
-    }
-}
-
-namespace {
-
-bool has_display() {
-    for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY"})
-        if (const char* value = std::getenv(name); value && *value) return true;
-    return false;
-}
-
-}  // namespace
-
-void ChapterRun::open_presentation(const Options& options, const ChapterSpec& spec) {
-    // [choose-presentation]
-    // Where the picture goes: a window if we can, else a headless surface, else
-    // our own images only.
-    if (options.offscreen) {
-        presentation_ = Presentation::offscreen;
-    } else if (!options.headless && has_display()) {
-        try {
-            window_ = std::make_unique<Window>(
-                spec.title, VkExtent2D{options.width, options.height}, spec.input);
-            presentation_ = Presentation::window;
-        } catch (const Error& e) {
-            std::fprintf(stderr, "%s: %s; running headless\n", spec.name.c_str(), e.what());
-        }
-    }
-    if (!window_ && !options.offscreen)
-        presentation_ = instance_extension_available(VK_EXT_HEADLESS_SURFACE_EXTENSION_NAME)
-                            ? Presentation::headless_surface
-                            : Presentation::offscreen;
-    // [/choose-presentation]
-
-    std::vector<const char*> extensions;
-    if (presentation_ == Presentation::window) extensions = Window::required_instance_extensions();
-    if (presentation_ == Presentation::headless_surface)
-        extensions = {VK_KHR_SURFACE_EXTENSION_NAME, VK_EXT_HEADLESS_SURFACE_EXTENSION_NAME};
-
-    const bool layer = instance_layer_available(validation_layer_name);
-    if (options.validation.value_or(false) && !layer)
-        throw Error(
-            "--validation: the Khronos validation layer is not installed "
-            "(on Debian: apt install vulkan-validationlayers)");
-    instance_ = std::make_unique<Instance>(InstanceConfig{
-        .application_name = spec.name,
-        .validation = options.validation.value_or(layer),
-        .extensions = extensions,
-    });
-
-    if (presentation_ == Presentation::window) {
-        surface_ = SurfaceHandle(*instance_, window_->create_surface(*instance_));
-    } else if (presentation_ == Presentation::headless_surface) {
-        auto create = reinterpret_cast<PFN_vkCreateHeadlessSurfaceEXT>(
-            vkGetInstanceProcAddr(*instance_, "vkCreateHeadlessSurfaceEXT"));
-        VkHeadlessSurfaceCreateInfoEXT info{.sType =
-                                                VK_STRUCTURE_TYPE_HEADLESS_SURFACE_CREATE_INFO_EXT};
-        VkSurfaceKHR surface;
-        VKT_CHECK(create(*instance_, &info, nullptr, &surface));
-        surface_ = SurfaceHandle(*instance_, surface);
-    }
-
-    // A window needs a device that can present to it. Headless, the device is
-    // chosen on its own merits; if it cannot present to the headless surface
-    // (another driver may have provided that), it renders offscreen instead.
-    DeviceRequirements requirements = spec.requirements;
-    if (window_) requirements.extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
-    const auto candidates =
-        survey_devices(*instance_, window_ ? surface_.get() : VK_NULL_HANDLE, requirements);
-    const DeviceCandidate& chosen = choose_device(candidates, options.device);
-    if (presentation_ == Presentation::headless_surface) {
-        if (can_present(chosen.handle, chosen.queue_family, surface_)) {
-            requirements.extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
-        } else {
-            surface_.reset();
-            presentation_ = Presentation::offscreen;
-        }
-    }
-    device_ = std::make_unique<Device>(chosen, requirements);
-
-    const uint32_t largest = device_->properties().limits.maxImageDimension2D;
-    if (options.width > largest || options.height > largest)
-        throw Error("--size " + std::to_string(options.width) + "x" +
-                    std::to_string(options.height) + ": this device's images are at most " +
-                    std::to_string(largest) + "x" + std::to_string(largest));
-
-    VkExtent2D extent{options.width, options.height};
-    if (surface_) {
-        if (window_) extent = window_->framebuffer_size();
+void ChapterRun::create_swapchain() {
+    VkExtent2D extent = harness_.wanted_extent();
+    if (harness_.surface()) {
         swapchain_ = std::make_unique<Swapchain>(
-            device_->physical(), *device_, surface_,
+            device_.physical(), device_, harness_.surface(),
             SwapchainRequest{.extent = extent,
-                             .uncapped = options.benchmark,
-                             .readable = !options.screenshot.empty(),
-                             .drawable = !options.copy_to_swapchain,
-                             .transfer_into = spec.transfers_into_target},
+                             .uncapped = options_.benchmark,
+                             .readable = !options_.screenshot.empty(),
+                             .drawable = !options_.copy_to_swapchain,
+                             .transfer_into = spec_.transfers_into_target},
             VK_NULL_HANDLE);
         extent = swapchain_->extent();
     }
@@ -212,7 +119,6 @@ Image create_storage_target(VkPhysicalDevice physical, VkDevice device, VkFormat
 
 }  // namespace
 
-// [create-target]
 void ChapterRun::create_target(VkExtent2D extent) {
     VkFormat format =
         swapchain_ ? render_format_for(swapchain_->format()) : VK_FORMAT_R8G8B8A8_SRGB;
@@ -220,7 +126,7 @@ void ChapterRun::create_target(VkExtent2D extent) {
                                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                     VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     if (spec_.storage_target)
-        storage_format_ = storage_format_for(device_->physical(), format, usage);
+        storage_format_ = storage_format_for(device_.physical(), format, usage);
     target_storage_.reset();  // before the image it views
     if (direct()) {
         // Frames are drawn straight into the swapchain's images: no image of
@@ -231,26 +137,21 @@ void ChapterRun::create_target(VkExtent2D extent) {
         return;
     }
     if (storage_format_ != VK_FORMAT_UNDEFINED)
-        target_ = create_storage_target(device_->physical(), *device_, format, storage_format_,
+        target_ = create_storage_target(device_.physical(), device_, format, storage_format_,
                                         extent, usage, target_storage_);
     else
-        target_ = create_image_2d(device_->physical(), *device_, format, extent, usage,
+        target_ = create_image_2d(device_.physical(), device_, format, extent, usage,
                                   VK_IMAGE_ASPECT_COLOR_BIT);
 }
-// [/create-target]
 
-// [recreate]
 void ChapterRun::recreate_swapchain() {
-    if (window_) {
-        window_->wait_while_minimised();  // a 0x0 swapchain cannot exist
-        if (window_->should_close()) return;
-        window_->take_resized();  // this recreation answers any resize so far
-    }
+    if (!harness_.wait_while_minimised()) return;  // a 0x0 swapchain cannot exist
+    harness_.take_resized();                       // this recreation answers any resize so far
     // Simple and safe: let the GPU finish everything that uses the old images.
-    VKT_CHECK(vkDeviceWaitIdle(*device_));
+    VKT_CHECK(vkDeviceWaitIdle(device_));
     auto next = std::make_unique<Swapchain>(
-        device_->physical(), *device_, surface_,
-        SwapchainRequest{.extent = window_ ? window_->framebuffer_size() : target_.extent,
+        device_.physical(), device_, harness_.surface(),
+        SwapchainRequest{.extent = harness_.window() ? harness_.wanted_extent() : target_.extent,
                          .uncapped = options_.benchmark,
                          .readable = !options_.screenshot.empty(),
                          .keep = swapchain_->format(),
@@ -263,9 +164,7 @@ void ChapterRun::recreate_swapchain() {
         throw Error(std::string("the surface no longer offers a format with the byte order of ") +
                     format_name(target_.format));
     VkExtent2D extent = swapchain_->extent();
-    presented_ = {};  // the next present is reported, whatever its size
-    std::fprintf(stderr, "%s: swapchain recreated at %ux%u\n", spec_.name.c_str(), extent.width,
-                 extent.height);
+    harness_.note_recreated(extent);
     const bool resized =
         extent.width != target_.extent.width || extent.height != target_.extent.height;
     // A new size needs a new target; so does a swapchain we can no longer draw
@@ -273,16 +172,6 @@ void ChapterRun::recreate_swapchain() {
     if (resized || swapchain_->drawable() != (target_.image.get() == VK_NULL_HANDLE))
         create_target(extent);
     if (resized) renderer_->resize(extent);
-}
-// [/recreate]
-
-// Says when the first frame of a new size has been presented: the event a
-// window test waits for after it resizes, before it closes the window.
-void ChapterRun::note_presented(VkExtent2D extent) {
-    if (extent.width == presented_.width && extent.height == presented_.height) return;
-    presented_ = extent;
-    std::fprintf(stderr, "%s: presented a frame at %ux%u\n", spec_.name.c_str(), extent.width,
-                 extent.height);
 }
 
 }  // namespace vkt::detail

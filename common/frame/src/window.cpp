@@ -39,6 +39,11 @@ void show(GLFWwindow* window) {
 }  // namespace
 
 Window::Window(const std::string& title, VkExtent2D size, InputUse use) : use_(use) {
+#if GLFW_VERSION_MAJOR > 3 || (GLFW_VERSION_MAJOR == 3 && GLFW_VERSION_MINOR >= 4)
+    // GLFW 3.4 can take the loader we link rather than look for one itself
+    // (on macOS it would not look in Homebrew's lib folder). Debian's is 3.3.
+    glfwInitVulkanLoader(vkGetInstanceProcAddr);
+#endif
     if (!glfwInit()) throw Error("GLFW cannot initialise (no display?)");
     if (!glfwVulkanSupported()) {
         glfwTerminate();

@@ -22,7 +22,7 @@ void write_png(const std::filesystem::path& path, const RgbaImage& image) {
     png.width = image.width;
     png.height = image.height;
     png.format = PNG_FORMAT_RGBA;
-    if (!png_image_write_to_file(&png, path.c_str(), 0, image.pixels.data(), 0, nullptr))
+    if (!png_image_write_to_file(&png, path.string().c_str(), 0, image.pixels.data(), 0, nullptr))
         throw Error("cannot write " + path.string() + ": " + png.message);
 }
 

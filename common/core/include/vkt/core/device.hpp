@@ -4,6 +4,7 @@
 // create a logical device with the Vulkan 1.3 features the tutorial relies on.
 
 #include "vkt/core/check.hpp"
+#include "vkt/core/portability.hpp"
 
 #include <cstddef>
 #include <span>
@@ -71,6 +72,10 @@ struct DeviceRequirements {
     // Features the chapter uses when present (anisotropic filtering, say); it
     // asks Context::features whether it got them.
     std::vector<Feature> optional_features;
+    // Parts of Vulkan a portability driver (MoltenVK) may lack that the chapter
+    // uses, e.g. VKT_PORTABILITY_FEATURE(triangleFans): a portability device
+    // without one is unsuitable, and says which (vkt/core/portability.hpp).
+    std::vector<PortabilityFeature> portability_features;
 };
 
 // What we learned about one physical device.
@@ -91,6 +96,12 @@ struct DeviceCandidate {
 // structs and extension strings: bufferDeviceAddress, VK_KHR_swapchain (and,
 // for a chapter that checks a property itself, the flag's name).
 bool hidden_by_tests(std::string_view name);
+
+// How a device's verdict names a missing feature: "lacks the dynamicRendering
+// feature", or with `of`, "lacks the triangleFans feature of
+// VK_KHR_portability_subset"; " (hidden by VKT_HIDE_FEATURES)" follows when a
+// test hid it.
+std::string lacks_feature(std::string_view name, std::string_view of = {});
 
 // Discrete GPUs first, then integrated, virtual, and software rasterisers last.
 int device_type_score(VkPhysicalDeviceType type);

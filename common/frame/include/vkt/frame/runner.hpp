@@ -1,8 +1,8 @@
 #pragma once
-// The chapter runner: the command line, the window or headless surface (or
-// offscreen images), the swapchain, frames in flight, screenshots and
-// benchmarks. Chapter 03 builds it; every chapter from 03 on only says what to
-// record into each frame.
+// The chapter runner: chapter 03's swapchain and frame loop as a helper, inside
+// chapter 03's harness (harness.hpp: the command line, the window or headless
+// surface or offscreen images, the device, screenshots and benchmarks). Every
+// chapter from 04 on only says what to record into each frame.
 //
 // The contract with a chapter: each frame, record() gets a command buffer and
 // the frame's colour target in an _SRGB format (the acquired swapchain image
@@ -17,6 +17,7 @@
 #include "vkt/core/device.hpp"
 #include "vkt/frame/args.hpp"
 #include "vkt/frame/gpu_timer.hpp"
+#include "vkt/frame/harness.hpp"
 #include "vkt/frame/input.hpp"
 #include "vkt/resources/upload.hpp"
 
@@ -81,28 +82,6 @@ public:
     virtual void resize(VkExtent2D) {}
 };
 // [/renderer-contract]
-
-struct ChapterSpec {
-    std::string name;   // "04_triangle"
-    std::string title;  // shown in the window's title bar
-    DeviceRequirements requirements;
-    std::vector<OptionSpec> options;  // the chapter's own flags (--model, --lights, ...)
-    InputUse input = InputUse::none;  // what input the chapter wants in a window (chapter 11)
-    // The chapter may write its frames from a compute shader: give our own
-    // target a storage view (Frame::target_storage, chapter 20). Only where
-    // asked for, since a storage usage can cost a colour target its
-    // compression on some GPUs.
-    bool storage_target = false;
-    // The chapter writes its frame with transfer commands (a clear, a copy
-    // into Frame::target): a swapchain image it draws straight into then needs
-    // TRANSFER_DST usage, which the specification does not promise. Where the
-    // surface lacks it, the frame goes into our own target instead.
-    bool transfers_into_target = false;
-    // Checks between the chapter's own flags (two that contradict each other),
-    // run right after parsing, before any Vulkan object exists: throw
-    // UsageError, and the chapter exits with status 2 like any bad argument.
-    std::function<void(const Options&)> check_options;
-};
 
 using RendererFactory = std::function<std::unique_ptr<Renderer>(const Context&)>;
 
