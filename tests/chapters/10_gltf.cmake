@@ -116,7 +116,7 @@ vkt_chapter_test(bad_input.10_gltf.issue416_uri 10_gltf EXIT 1
   EXPECT "10_gltf: error: .*issue416.gltf: URI \"%00AAAQAAA5\" is not a file name: it holds a control character")
 vkt_chapter_test(bad_input.10_gltf.uri_dot 10_gltf EXIT 1
   ARGS ${vkt_10_run} --model ${vkt_10_dir}/uri_dot.gltf
-  EXPECT "10_gltf: error: .*uri_dot.gltf: URI \"\\.\": .*gltf_bad_input: is a directory, not a file")
+  EXPECT "10_gltf: error: .*uri_dot.gltf: buffer 0: URI \"\\.\": .*gltf_bad_input: is a directory, not a file")
 vkt_chapter_test(bad_input.10_gltf.short_data_uri 10_gltf EXIT 1
   ARGS ${vkt_10_run} --model ${vkt_10_dir}/short_data_uri.gltf
   EXPECT "10_gltf: error: .*short_data_uri.gltf: buffer 0: data URI \"data:application/octet-stream;base64,AAA\" is invalid: its base64 does not decode to the buffer's byteLength")
@@ -125,10 +125,10 @@ vkt_chapter_test(bad_input.10_gltf.bad_image_data_uri 10_gltf EXIT 1
   EXPECT "10_gltf: error: .*bad_image_data_uri.gltf: image 0: its data URI is invalid: its base64 decodes to no bytes")
 vkt_chapter_test(bad_input.10_gltf.uri_outside 10_gltf EXIT 1
   ARGS ${vkt_10_run} --model ${vkt_10_dir}/uri_outside.gltf
-  EXPECT "10_gltf: error: .*uri_outside.gltf: URI \"\\.\\./\\.\\./\\.\\./\\.\\./\\.\\./\\.\\./etc/passwd\" leads out of the model's folder")
+  EXPECT "10_gltf: error: .*uri_outside.gltf: buffer 0: URI \"\\.\\./\\.\\./\\.\\./\\.\\./\\.\\./\\.\\./etc/passwd\" leads out of the model's folder")
 vkt_chapter_test(bad_input.10_gltf.uri_absolute 10_gltf EXIT 1
   ARGS ${vkt_10_run} --model ${vkt_10_dir}/uri_absolute.gltf
-  EXPECT "10_gltf: error: .*uri_absolute.gltf: URI \"/etc/passwd\" is an absolute path")
+  EXPECT "10_gltf: error: .*uri_absolute.gltf: buffer 0: URI \"/etc/passwd\" is an absolute path")
 # A buffer of 1 GiB + 1 byte, sparse (no disk space), made for the test and
 # removed after it.
 find_program(VKT_TRUNCATE truncate)
@@ -146,3 +146,25 @@ if(VKT_TRUNCATE)
     EXPECT "10_gltf: error: .*huge_buffer.gltf: .*huge.bin: is 1073741825 bytes, past the 1 GiB limit for one file")
   set_tests_properties(bad_input.10_gltf.huge_buffer PROPERTIES FIXTURES_REQUIRED vkt_10_huge)
 endif()
+
+# --- Issue 25: what tinygltf 2.7 itself trusts, checked before it sees the
+# bytes (common/scene/src/gltf_guard.cpp). The files come from the fixture
+# vkt_hostile_files (tests/make_hostile_files.cpp). Before the guard: exit 139
+# (a stack overflow) and exit 0 (a file read past its end, and drawn).
+vkt_chapter_test(bad_input.10_gltf.deep_extras 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/deep_extras.gltf
+  EXPECT "10_gltf: error: .*deep_extras.gltf: JSON: arrays and objects nest more than 64 deep \\(at line 1, column [0-9]+\\); this loader's limit is 64 levels")
+foreach(extra 4 8)
+  vkt_chapter_test(bad_input.10_gltf.long_bin_chunk_${extra} 10_gltf EXIT 1
+    ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/long_bin_chunk_${extra}.glb
+    EXPECT "10_gltf: error: .*long_bin_chunk_${extra}.glb: .glb chunk 1 \\(BIN\\): its length, [0-9]+ bytes from byte [0-9]+, runs ${extra} bytes past the end of the file")
+endforeach()
+set_tests_properties(bad_input.10_gltf.deep_extras bad_input.10_gltf.long_bin_chunk_4
+  bad_input.10_gltf.long_bin_chunk_8 PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+# A PNG whose header claims 16384 x 16384 (3.7 GiB decoded, staged and
+# mipmapped) in 69 bytes: refused from its header, before anything is
+# allocated (unit.image budget* measure the peak memory).
+vkt_chapter_test(bad_input.10_gltf.huge_image_claim 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/huge_claim.gltf
+  EXPECT "10_gltf: error: .*huge_claim.gltf: image 0 \\(huge_claim.png\\): cannot decode image: it is 16384x16384: decoded, staged and mipmapped it would take 3755 MiB, past the 1024 MiB one image may use")
+set_tests_properties(bad_input.10_gltf.huge_image_claim PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)

@@ -205,3 +205,37 @@ TEST_CASE("--help and the usage line list a chapter's flags", "[args][chapter-op
     CHECK(help.find("a glTF file") != std::string::npos);
     CHECK(help.find("--screenshot FILE.png") != std::string::npos);
 }
+
+TEST_CASE("the alternatives --headless and --offscreen: both given is a usage error", "[args]") {
+    for (const auto& args :
+         {std::vector<const char*>{"--headless", "--offscreen"},
+          std::vector<const char*>{"--offscreen", "--frames", "2", "--headless"}}) {
+        try {
+            parse(args);
+            FAIL("no exception");
+        } catch (const UsageError& e) {
+            CHECK(std::string(e.what()).starts_with(
+                "--headless and --offscreen are alternatives: give one"));
+        }
+    }
+    CHECK(parse({"--headless", "--headless"}).headless);
+    CHECK(parse({"--offscreen", "--offscreen"}).offscreen);
+}
+
+TEST_CASE("a flag that wants a value does not take the next flag as its value", "[args]") {
+    try {
+        parse({"--device", "--offscreen"});
+        FAIL("no exception");
+    } catch (const UsageError& e) {
+        CHECK(std::string(e.what()) ==
+              "--device needs a value, not the flag '--offscreen' (write --device=--offscreen "
+              "if that is the value)");
+    }
+    CHECK_THROWS_AS(parse({"--screenshot", "--benchmark"}), UsageError);
+    CHECK_THROWS_AS(parse({"--frames", "--headless"}), UsageError);
+    CHECK_THROWS_AS(parse({"--size", "-h"}), UsageError);
+    CHECK_THROWS_AS(parse({"--device", "--no-such-flag"}), UsageError);
+    // Inline, a value may begin with "--"; a single "-" is a value (a number).
+    CHECK(parse({"--device=--odd"}).device == "--odd");
+    CHECK(parse({"--device", "-1"}).device == "-1");
+}

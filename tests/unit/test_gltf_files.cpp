@@ -183,24 +183,27 @@ TEST_CASE("gltf files: no URI reads outside the model's folder", "[gltf][files]"
     const Folders f("outside");
     // A buffer that would load, were it allowed: right bytes, right length.
     write_bytes(f.outside / "tri.bin", triangle_bin());
-    CHECK_THAT(model_error(f, "sibling.gltf", triangle_json("../outside/tri.bin")),
-               ContainsSubstring("sibling.gltf: URI \"../outside/tri.bin\" leads out of the "
-                                 "model's folder"));
+    CHECK_THAT(
+        model_error(f, "sibling.gltf", triangle_json("../outside/tri.bin")),
+        ContainsSubstring("sibling.gltf: buffer 0: URI \"../outside/tri.bin\" leads out of the "
+                          "model's folder"));
     std::error_code error;
     const uintmax_t passwd = fs::file_size("/etc/passwd", error);
-    CHECK_THAT(model_error(f, "passwd.gltf",
-                           triangle_json("../../../../../../etc/passwd", error ? 44 : passwd)),
-               ContainsSubstring("passwd.gltf: URI \"../../../../../../etc/passwd\" leads out"));
+    CHECK_THAT(
+        model_error(f, "passwd.gltf",
+                    triangle_json("../../../../../../etc/passwd", error ? 44 : passwd)),
+        ContainsSubstring("passwd.gltf: buffer 0: URI \"../../../../../../etc/passwd\" leads out"));
     // generic_string: '/' between the names, which JSON takes as it is (a
     // Windows '\\' would have to be escaped).
     const std::string absolute = (f.outside / "tri.bin").generic_string();
-    CHECK_THAT(model_error(f, "absolute.gltf", triangle_json(absolute)),
-               ContainsSubstring("absolute.gltf: URI \"" + absolute + "\" is an absolute path"));
+    CHECK_THAT(
+        model_error(f, "absolute.gltf", triangle_json(absolute)),
+        ContainsSubstring("absolute.gltf: buffer 0: URI \"" + absolute + "\" is an absolute path"));
 #ifndef _WIN32  // MinGW's std::filesystem makes no symbolic links
     fs::remove(f.model / "out");
     fs::create_directory_symlink(f.outside, f.model / "out");
     CHECK_THAT(model_error(f, "symlink.gltf", triangle_json("out/tri.bin")),
-               ContainsSubstring("symlink.gltf: URI \"out/tri.bin\" leads out"));
+               ContainsSubstring("symlink.gltf: buffer 0: URI \"out/tri.bin\" leads out"));
 #endif
     // %2e%2e is "..", once tinygltf has %-decoded it.
     CHECK_THAT(model_error(f, "encoded.gltf", triangle_json("%2e%2e/outside/tri.bin")),
@@ -209,7 +212,7 @@ TEST_CASE("gltf files: no URI reads outside the model's folder", "[gltf][files]"
     const fs::path glb = f.model / "sibling.glb";
     write_bytes(glb, glb_of(triangle_json("../outside/tri.bin")));
     CHECK_THAT(load_error(glb),
-               ContainsSubstring("sibling.glb: URI \"../outside/tri.bin\" leads out"));
+               ContainsSubstring("sibling.glb: buffer 0: URI \"../outside/tri.bin\" leads out"));
     write_bytes(f.model / "tri.bin", triangle_bin());
     CHECK_THAT(
         model_error(f, "image.gltf",
@@ -272,7 +275,8 @@ TEST_CASE("gltf files: data URIs are checked against their byteLength", "[gltf][
     CHECK_THAT(error, ContainsSubstring("data_long.gltf: buffer 0: data URI "));
     CHECK(error.size() < 400);
     // A data: URI tinygltf does not know would be a file name: refused as such.
-    CHECK_THAT(model_error(f, "data_webp.gltf", triangle_json("data:image/webp;base64,AAAA")),
-               ContainsSubstring("data_webp.gltf: URI \"data:image/webp;base64,AAAA\" is a "
-                                 "data: URI of a kind tinygltf does not decode"));
+    CHECK_THAT(
+        model_error(f, "data_webp.gltf", triangle_json("data:image/webp;base64,AAAA")),
+        ContainsSubstring("data_webp.gltf: buffer 0: URI \"data:image/webp;base64,AAAA\" is a "
+                          "data: URI of a kind tinygltf does not decode"));
 }

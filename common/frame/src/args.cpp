@@ -108,6 +108,7 @@ Options parse_args(std::span<const char* const> args, Flags flags,
     for (const auto& spec : chapter_options)
         if (!spec.default_value.empty())
             options.values[spec.name] = check_option_value(spec, spec.default_value);
+    bool said_headless = false;
     for (size_t i = 0; i < args.size(); ++i) {
         std::string_view arg = args[i];
         // Accept both "--frames 10" and "--frames=10".
@@ -120,6 +121,14 @@ Options parse_args(std::span<const char* const> args, Flags flags,
         auto value = [&]() -> std::string_view {
             if (inline_value) return *inline_value;
             if (i + 1 >= args.size()) throw UsageError(std::string(flag) + " needs a value");
+            // "--device --offscreen" forgot the device: it must not take the
+            // next flag as its value. A value that does begin with "--" can
+            // still be given inline, "--device=--odd".
+            const std::string_view next = args[i + 1];
+            if (next.starts_with("--") || next == "-h")
+                throw UsageError(std::string(flag) + " needs a value, not the flag '" +
+                                 std::string(next) + "' (write " + std::string(flag) + "=" +
+                                 std::string(next) + " if that is the value)");
             return args[++i];
         };
         auto no_value = [&] {
@@ -137,6 +146,7 @@ Options parse_args(std::span<const char* const> args, Flags flags,
         } else if (flag == "--headless") {
             no_value();
             options.headless = true;
+            said_headless = true;
         } else if (flag == "--offscreen") {
             no_value();
             options.headless = true;  // offscreen has no window either
@@ -193,6 +203,11 @@ Options parse_args(std::span<const char* const> args, Flags flags,
             options.values[spec->name] = check_option_value(*spec, value());
         }
     }
+    // Alternatives, not a combination: which one was meant cannot be guessed.
+    if (said_headless && options.offscreen)
+        throw UsageError(
+            "--headless and --offscreen are alternatives: give one (--offscreen renders with no "
+            "surface at all, --headless presents to a headless surface)");
     return options;
 }
 

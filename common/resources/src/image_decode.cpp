@@ -46,6 +46,7 @@ struct PngReader {
     png_infop info = nullptr;
     char error[256] = "";  // why it stopped: libpng's words, or ours
     uint32_t width = 0, height = 0;
+    int bit_depth = 0, channels = 0;  // as stored in the file
     std::vector<uint8_t> pixels;
     std::vector<png_bytep> rows;
 
@@ -90,7 +91,19 @@ bool png_header(PngReader& r) {
     png_read_info(r.png, r.info);
     r.width = png_get_image_width(r.png, r.info);
     r.height = png_get_image_height(r.png, r.info);
+    r.bit_depth = png_get_bit_depth(r.png, r.info);
+    r.channels = png_get_channels(r.png, r.info);
     return true;
+}
+
+// Deflate shrinks data at most about 1032 times (a run of 258 bytes in
+// 2 bits, at best), so a PNG's file is at least its filtered rows / 1032:
+// one filter byte and the row's packed samples each. A header that claims
+// more pixels than that is a lie, refused before anything is allocated.
+constexpr uint64_t deflate_max_ratio = 1032;
+bool png_plausible(const PngReader& r, size_t file_size) {
+    const uint64_t row = 1 + (uint64_t(r.width) * uint64_t(r.bit_depth) * r.channels + 7) / 8;
+    return uint64_t(r.height) * row <= deflate_max_ratio * file_size;
 }
 
 // The pixels, every kind of PNG converted to 8-bit RGBA on the way.
@@ -248,15 +261,29 @@ RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what) 
     // tests/fuzz/fuzz_image.cpp). Refuse, from the header alone, what no
     // texture of this tutorial could hold.
     auto check_size = [&](uint32_t width, uint32_t height) {
+        const std::string size = std::to_string(width) + "x" + std::to_string(height);
         if (width > max_image_side || height > max_image_side)
-            cannot_decode(what, "it is " + std::to_string(width) + "x" + std::to_string(height) +
-                                    ", larger than " + std::to_string(max_image_side) + "x" +
+            cannot_decode(what, "it is " + size + ", larger than " +
+                                    std::to_string(max_image_side) + "x" +
                                     std::to_string(max_image_side));
+        if (image_memory_cost(width, height) > image_memory_budget) {
+            const uint64_t mib = (image_memory_cost(width, height) + (1 << 19)) >> 20;  // rounded
+            cannot_decode(what, "it is " + size + ": decoded, staged and mipmapped it would take " +
+                                    std::to_string(mib) + " MiB, past the " +
+                                    std::to_string(image_memory_budget >> 20) +
+                                    " MiB one image may use");
+        }
     };
     if (kind_of(bytes, what) == Kind::png) {
         PngReader reader(bytes);
         if (!png_header(reader)) cannot_decode(what, reader.error);
         check_size(reader.width, reader.height);
+        if (!png_plausible(reader, bytes.size()))
+            cannot_decode(what, "its header claims " + std::to_string(reader.width) + "x" +
+                                    std::to_string(reader.height) + " pixels, which its " +
+                                    std::to_string(bytes.size()) +
+                                    " bytes cannot hold (PNG's compression shrinks at most " +
+                                    std::to_string(deflate_max_ratio) + " times)");
         if (!png_pixels(reader)) cannot_decode(what, reader.error);
         return {reader.width, reader.height, std::move(reader.pixels)};
     }
@@ -265,6 +292,11 @@ RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what) 
     check_size(reader.info.image_width, reader.info.image_height);
     if (!jpeg_pixels(reader)) cannot_decode(what, reader.errors.text);
     return {reader.info.output_width, reader.info.output_height, std::move(reader.pixels)};
+}
+
+uint64_t image_memory_cost(uint32_t width, uint32_t height) {
+    const uint64_t pixels = uint64_t(width) * height * 4;
+    return pixels + 2 * (pixels * 4 / 3);
 }
 
 RgbaImage load_image_file(const std::filesystem::path& path) {

@@ -53,14 +53,15 @@ glm::vec3 position_from_depth(const glm::mat4& inverse_view_proj, uint32_t x, ui
 
 std::vector<glm::vec3> shade_gbuffer(const GBufferTexels& g, const glm::mat4& inverse_view_proj,
                                      glm::vec3 camera_position, glm::vec3 ambient,
-                                     std::span<const PointLight> lights, glm::vec3 background) {
+                                     std::span<const PointLight> lights, glm::vec3 background,
+                                     const std::function<void(uint32_t)>& rows_done) {
     const size_t count = size_t{g.width} * g.height;
     if (g.base_colour.size() != count * 4 || g.normal.size() != count * 2 ||
         g.material.size() != count * 4 || g.depth.size() != count ||
         (!g.albedo_as_read.empty() && g.albedo_as_read.size() != count))
         throw Error("shade_gbuffer: the G-buffer's arrays do not match its size");
     std::vector<glm::vec3> out(count);
-    for (uint32_t y = 0; y < g.height; ++y)
+    for (uint32_t y = 0; y < g.height; ++y) {
         for (uint32_t x = 0; x < g.width; ++x) {
             const size_t i = size_t{y} * g.width + x;
             if (g.depth[i] == 1.0f) {
@@ -84,6 +85,8 @@ std::vector<glm::vec3> shade_gbuffer(const GBufferTexels& g, const glm::mat4& in
                 position_from_depth(inverse_view_proj, x, y, g.width, g.height, g.depth[i]);
             out[i] = shade(position, normal, albedo, camera_position, lights, params);
         }
+        if (rows_done) rows_done(y + 1);
+    }
     return out;
 }
 

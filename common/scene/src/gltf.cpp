@@ -130,9 +130,14 @@ private:
         if (auto found = image_slots_.find(index); found != image_slots_.end())
             return found->second;
         const tinygltf::Image& source = model_.images[size_t(index)];
+        // "image 2", "image 2 (\"bricks\")", "image 2 (bricks.png)", "image 2 (\"bricks\",
+        // bricks.png)"
+        const bool file = !source.uri.empty() && source.uri.rfind("data:", 0) != 0;
         std::string what = path_.string() + ": image " + std::to_string(index);
-        if (!source.uri.empty() && source.uri.rfind("data:", 0) != 0)
-            what += " (" + printable(source.uri) + ")";
+        if (!source.name.empty() || file)
+            what += " (" + (source.name.empty() ? "" : "\"" + printable(source.name, 60) + "\"") +
+                    (source.name.empty() || !file ? "" : ", ") +
+                    (file ? printable(source.uri) : "") + ")";
         RgbaImage decoded;
         if (source.bufferView >= 0) {
             std::span<const uint8_t> bytes =

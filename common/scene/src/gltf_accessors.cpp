@@ -64,15 +64,16 @@ std::span<const uint8_t> Accessors::view_bytes(int index, const std::string& wha
     if (index < 0 || size_t(index) >= model_.bufferViews.size())
         fail(what + ": bufferView " + std::to_string(index) + " does not exist");
     const tinygltf::BufferView& view = model_.bufferViews[size_t(index)];
+    const std::string view_name = "bufferView " + std::to_string(index) + quoted_name(view.name);
     if (view.buffer < 0 || size_t(view.buffer) >= model_.buffers.size())
-        fail(what + ": bufferView " + std::to_string(index) + " names buffer " +
-             std::to_string(view.buffer) + ", which does not exist");
+        fail(what + ": " + view_name + " names buffer " + std::to_string(view.buffer) +
+             ", which does not exist");
     const std::vector<unsigned char>& data = model_.buffers[size_t(view.buffer)].data;
     if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
-        fail(what + ": bufferView " + std::to_string(index) + " (offset " +
-             std::to_string(view.byteOffset) + ", length " + std::to_string(view.byteLength) +
-             ") runs past the end of buffer " + std::to_string(view.buffer) + " (" +
-             std::to_string(data.size()) + " bytes)");
+        fail(what + ": " + view_name + " (offset " + std::to_string(view.byteOffset) + ", length " +
+             std::to_string(view.byteLength) + ") runs past the end of buffer " +
+             std::to_string(view.buffer) + quoted_name(model_.buffers[size_t(view.buffer)].name) +
+             " (" + std::to_string(data.size()) + " bytes)");
     return {data.data() + view.byteOffset, view.byteLength};
 }
 
@@ -162,7 +163,7 @@ void Accessors::apply_sparse(const tinygltf::Accessor& a, const std::string& nam
 std::vector<float> Accessors::read_floats(int index, const std::string& what,
                                           const std::vector<AllowedFormat>& allowed) const {
     const tinygltf::Accessor& a = accessor(index, what);
-    const std::string name = what + ": accessor " + std::to_string(index);
+    const std::string name = what + ": accessor " + std::to_string(index) + quoted_name(a.name);
     bool ok = false;
     for (const AllowedFormat& f : allowed)
         if (a.type == f.type &&
@@ -216,7 +217,8 @@ std::vector<float> Accessors::read_floats(int index, const std::string& what,
 
 std::vector<uint32_t> Accessors::read_indices(int index, const std::string& what) const {
     const tinygltf::Accessor& a = accessor(index, what);
-    const std::string name = what + ": index accessor " + std::to_string(index);
+    const std::string name =
+        what + ": index accessor " + std::to_string(index) + quoted_name(a.name);
     const int ct = a.componentType;
     if (a.type != TINYGLTF_TYPE_SCALAR || (ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
                                            ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&

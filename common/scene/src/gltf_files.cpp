@@ -147,40 +147,6 @@ bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::stri
     return true;
 }
 
-// tinygltf's first complaint, fit for one line (it may quote a whole data: URI).
-std::string first_line(const std::string& text) {
-    std::string line = text.substr(0, text.find('\n'));
-    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
-    return printable(line, 200);
-}
-
-// tinygltf fails the whole file on a data: URI whose base64 it cannot
-// decode, in words that name neither what was wrong nor where ("Failed to
-// decode 'uri' : data:...;base64,AAA in Buffer", "Failed to decode 'uri' for
-// image[2] name = []"): printed as they are, behind "not a glTF file", they
-// blame JSON that is fine. tinygltf's decoder gives up when the
-// base64 decodes to nothing or, for a buffer, to other than its byteLength.
-// Say so, naming the buffer (tinygltf has kept the buffers before the one it
-// failed on, so their count is its index) or the image. nullopt: another fault.
-std::optional<std::string> invalid_data_uri(const std::string& err, const tinygltf::Model& model) {
-    const std::string buffer_text = "Failed to decode 'uri' : ";
-    const std::string image_text = "Failed to decode 'uri' for image[";
-    const std::string line = err.substr(0, err.find('\n'));
-    if (line.rfind(buffer_text, 0) == 0 && line.ends_with(" in Buffer")) {
-        const std::string uri = line.substr(
-            buffer_text.size(), line.size() - buffer_text.size() - std::strlen(" in Buffer"));
-        return "buffer " + std::to_string(model.buffers.size()) + ": data URI \"" +
-               printable(uri, 60) +
-               "\" is invalid: its base64 does not decode to the buffer's byteLength";
-    }
-    if (line.rfind(image_text, 0) == 0) {
-        const std::string index =
-            line.substr(image_text.size(), line.find(']') - image_text.size());
-        return "image " + index + ": its data URI is invalid: its base64 decodes to no bytes";
-    }
-    return std::nullopt;
-}
-
 }  // namespace
 
 void use_fs_callbacks(tinygltf::TinyGLTF& gltf, const tinygltf::FsCallbacks& callbacks) {
@@ -201,6 +167,8 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path) {
     auto fail = [&](const std::string& what) { throw Error(path.string() + ": " + what); };
     std::vector<char> file = read_file(path);  // "cannot open FILE", directories, 1 GiB
     if (file.empty()) fail("not a glTF file: it is empty");
+    // The JSON's nesting and a .glb's chunks, before tinygltf trusts them (gltf_guard.cpp).
+    if (const std::optional<std::string> unsafe = check_gltf_bytes(file)) fail(*unsafe);
 
     FileAccess access;
     access.folder = std::filesystem::absolute(path).parent_path();
@@ -244,13 +212,9 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path) {
         err = e.what();
         ok = false;
     }
-    if (!access.refusal.empty()) fail(access.refusal);  // even if tinygltf only warned
-    if (!ok) {
-        if (const std::optional<std::string> data_uri = invalid_data_uri(err, model))
-            fail(*data_uri);
-        fail(std::string("not a glTF file") + (glb ? " (.glb)" : "") + ": " +
-             (err.empty() ? "tinygltf cannot parse it" : first_line(err)));
-    }
+    // Even where tinygltf only warned (it does for images), a refusal fails.
+    if (!ok || !access.refusal.empty())
+        fail(explain_load_failure({err, access.refusal}, model, file));
     return model;
 }
 

@@ -6,11 +6,17 @@
 //   gltf_files.cpp      the file, and every file it names, read through
 //                       tinygltf's FsCallbacks of our own (inside the model's
 //                       folder only, no directories, 1 GiB at most); tinygltf
-//                       parses the JSON, the .glb chunks and the data: URIs
+//                       parses the JSON, the .glb chunks and the data: URIs,
+//                       after gltf_guard.cpp has checked the JSON's depth and
+//                       the .glb's chunks, and gltf_messages.cpp says why it
+//                       refused a file
 //   gltf_accessors.cpp  the bytes of a buffer view or an accessor, with every
 //                       index, offset, stride and count checked first
 //   gltf.cpp            the scene: materials and images, meshes and their
 //                       primitives, the node tree, flattened into GltfScene
+
+#include "vkt/core/files.hpp"
+#include "vkt/scene/gltf_guard.hpp"
 
 #include <tiny_gltf.h>
 
@@ -28,6 +34,27 @@ namespace vkt::gltf_detail {
 // glTF, names a file outside its folder (or the folder itself), or holds a
 // data: URI that does not decode.
 tinygltf::Model parse_gltf_file(const std::filesystem::path& path);
+
+// What went wrong in tinygltf's load: its error text, and our file access's
+// first refusal (empty if none).
+struct LoadFailure {
+    std::string err;
+    std::string refusal;
+};
+// Why tinygltf refused `file` (the model file's bytes), as "WHAT: WHY" in one
+// line: WHAT the element by index and name where it can be found, "not a
+// glTF file" only where the file is not one (gltf_messages.cpp).
+std::string explain_load_failure(const LoadFailure& failure, const tinygltf::Model& model,
+                                 std::span<const char> file);
+// An element's name for a message, " (\"wheels\")", or nothing where it has none:
+// messages name an element by index, and by name where it has one.
+inline std::string quoted_name(const std::string& name) {
+    return name.empty() ? std::string() : " (\"" + printable(name, 60) + "\")";
+}
+
+// tinygltf's complaint, fit for one line: its first line, printable, at most
+// 200 characters (it may quote a whole data: URI).
+std::string first_line(const std::string& text);
 
 // gltf.SetFsCallbacks(callbacks), and where tinygltf says it refused them
 // (2.9 and later answer; 2.7 cannot refuse), an Error naming SetFsCallbacks:

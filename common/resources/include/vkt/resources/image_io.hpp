@@ -22,8 +22,10 @@ struct RgbaImage {
 // checksum, a file that ends early, ...) or the size check below. Grey,
 // palette and RGB images arrive as RGBA, alpha 255 where the file has none;
 // 16-bit PNG channels keep their high byte. No gamma is applied: the bytes
-// are the file's. An image wider or taller than max_image_side is refused
-// from its header, before anything is decoded.
+// are the file's. From its header, before anything is decoded, an image is
+// refused if it is wider or taller than max_image_side, if it would cost more
+// than image_memory_budget (image_memory_cost), or (a PNG) if the file is too
+// small to hold the pixels its header claims.
 RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what);
 
 // The same for a file: "cannot open FILE" (vkt::read_file) when it cannot be
@@ -33,6 +35,16 @@ RgbaImage load_image_file(const std::filesystem::path& path);
 // The largest side decode_image accepts: the most maxImageDimension2D that
 // desktop GPUs offer (lavapipe's too); 16384 x 16384 RGBA8 is 1 GiB.
 constexpr uint32_t max_image_side = 16384;
+
+// What an image of width x height costs a chapter at its peak, in bytes: the
+// decoded RGBA pixels, then a staging copy and the GPU image (memory of the
+// machine's on lavapipe), each with every mip level (a chain adds a third:
+// x 4/3). So width x height x 4 x (1 + 4/3 + 4/3), 11/3 of the pixels.
+uint64_t image_memory_cost(uint32_t width, uint32_t height);
+// The most one image may cost: 1 GiB lets an 8192 x 8192 texture through
+// (939 MiB) and refuses 16384 x 16384 (3.7 GiB), which froze an 8 GB laptop
+// where it should have failed (issue 25).
+constexpr uint64_t image_memory_budget = uint64_t(1) << 30;
 
 // The size a PNG or JPEG says it has, from what comes before its pixel data
 // (PNG: the chunks up to the first IDAT's type; JPEG: the markers up to the

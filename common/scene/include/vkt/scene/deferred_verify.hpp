@@ -17,6 +17,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -129,6 +130,59 @@ struct VerifyPasses {
     std::function<void(VkCommandBuffer, VkImageView)> forward;  // depth barrier and pass
 };
 
+// --verify cpu lights every drawn texel with every light on one CPU core,
+// twice: at 65,536 lights and 800x600 that is some 40 minutes on lavapipe's
+// machine. Where the work is large (from 2.5e8 light evaluations, some
+// seconds), say so before it starts, estimate the whole once 2% is done,
+// then a line every 10% with the time left at the rate so far. Progress
+// counts drawn texels (the background costs nothing). Output only: nothing
+// is decided by the clock.
+class CpuProgress {
+public:
+    CpuProgress(VkExtent2D extent, std::span<const float> depth, size_t lights, int passes)
+        : passes_(passes) {
+        drawn_.assign(extent.height + 1, 0);
+        for (uint32_t y = 0; y < extent.height; ++y) {
+            drawn_[y + 1] = drawn_[y];
+            for (uint32_t x = 0; x < extent.width; ++x)
+                drawn_[y + 1] += depth[size_t{y} * extent.width + x] != 1.0f ? 1 : 0;
+        }
+        const double work = double(drawn_.back()) * double(lights) * passes;
+        shown_ = work >= 2.5e8;
+        if (shown_)
+            std::fprintf(stderr,
+                         "16_deferred: verify cpu: lighting %zu drawn texels with %zu lights on "
+                         "the CPU, %d passes (%.3g light evaluations): progress every 10%%\n",
+                         drawn_.back(), lights, passes, work);
+    }
+    // What shade_gbuffer calls after each row of pass `pass` (from 0); none
+    // where the work is small.
+    std::function<void(uint32_t)> pass(int pass) {
+        if (!shown_) return {};
+        return [this, pass](uint32_t rows) {
+            const double done = (pass + double(drawn_[rows]) / double(drawn_.back())) / passes_;
+            const double elapsed =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+            if (!estimated_ && done >= 0.02) {
+                estimated_ = true;
+                std::fprintf(stderr, "16_deferred: verify cpu: about %.0f s in all\n",
+                             elapsed / done);
+            }
+            if (done * 10 < next_tenth_) return;
+            next_tenth_ = int(done * 10) + 1;
+            std::fprintf(stderr, "16_deferred: verify cpu: %.0f%% done, about %.0f s left\n",
+                         done * 100, elapsed / done - elapsed);
+        };
+    }
+
+private:
+    std::vector<size_t> drawn_;  // drawn texels in the rows above each row
+    int passes_;
+    bool shown_ = false, estimated_ = false;
+    int next_tenth_ = 1;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
 // Renders the frame once more into float targets (the lighting pass with
 // several light ranges, its albedo view, and the forward path), reads them and
 // the G-buffer back, and runs `check`. Throws vkt::Error when it fails. The
@@ -211,9 +265,10 @@ inline void verify(const std::string& check, const VerifyInputs& in, const Verif
         // First with its own (exact) sRGB decoding of the base colour, then
         // with the base colour as the GPU decoded it: the lighting alone.
         const glm::vec3 background(0.02f, 0.02f, 0.04f);
+        CpuProgress progress(e, texels.depth, in.lights.size(), 2);
         const float whole = max_linear_difference(
             pictures[lit], vkt::shade_gbuffer(texels, in.inverse_view_proj, in.eye, in.ambient,
-                                              in.lights, background));
+                                              in.lights, background, progress.pass(0)));
         std::fprintf(stderr,
                      "16_deferred: verify cpu: with the CPU's own sRGB decoding, largest "
                      "difference %g (tolerance 0.005)\n",
@@ -222,7 +277,7 @@ inline void verify(const std::string& check, const VerifyInputs& in, const Verif
         texels.albedo_as_read = pictures[albedo];
         difference = max_linear_difference(
             pictures[lit], vkt::shade_gbuffer(texels, in.inverse_view_proj, in.eye, in.ambient,
-                                              in.lights, background));
+                                              in.lights, background, progress.pass(1)));
         // GPUs may evaluate pow, exp2, log2 and inversesqrt approximately (the
         // precision rules of the Vulkan environment for SPIR-V), and pow's
         // error grows with the shininess exponent: lavapipe comes within 6e-6,

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -53,10 +54,13 @@ glm::vec3 position_from_depth(const glm::mat4& inverse_view_proj, uint32_t x, ui
 // Lights every texel with vkt::shade (windowed falloff, the texel's own
 // specular strength and shininess, `ambient` times the albedo), in linear RGB;
 // texels with depth 1 (nothing drawn) get `background`. Returns width * height
-// colours, rows top to bottom.
+// colours, rows top to bottom. `rows_done`, where given, is called after each
+// row with the number of rows lit so far (for progress output: a reference
+// with tens of thousands of lights runs for minutes).
 std::vector<glm::vec3> shade_gbuffer(const GBufferTexels& gbuffer,
                                      const glm::mat4& inverse_view_proj, glm::vec3 camera_position,
                                      glm::vec3 ambient, std::span<const PointLight> lights,
-                                     glm::vec3 background);
+                                     glm::vec3 background,
+                                     const std::function<void(uint32_t)>& rows_done = {});
 
 }  // namespace vkt
