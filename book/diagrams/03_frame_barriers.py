@@ -148,21 +148,20 @@ def main(runner: bool = False) -> None:
     bx0, bx1 = START + BOX_W + 6, START + 3 * BOX_W + 12
     s.rect(bx0, CALLOUTS_A, bx1 - bx0, BOX_H, fill="#ffffff", stroke=GREY, rx=6, dash="4 3")
     if runner:
-        s.text(bx0 + 12, CALLOUTS_A + 22, "2  the chapter records (the same either way)", size=12.5, bold=True)
-        s.lines(bx0 + 12, CALLOUTS_A + 44, ["04: loadOp CLEAR, then draw: no barrier of its own",
-                                            "(03 writes its own loop: a clear, in TRANSFER_DST)"],
-                size=10.5, leading=1.3, mono=True)
-        s.lines(bx0 + 12, CALLOUTS_A + 106, ["The wait holds back the colour output only: a chapter's vertex",
-                                             "shading or compute may run before the image is free."],
-                size=11, leading=1.3, italic=True)
+        title = "2  the chapter records (the same either way)"
+        what = ["04: loadOp CLEAR, then draw: no barrier of its own",
+                "(03 writes its own loop: a clear, in TRANSFER_DST)"]
+        note = ["The wait holds back the colour output only: a chapter's vertex",
+                "shading or compute may run before the image is free."]
     else:
-        s.text(bx0 + 12, CALLOUTS_A + 22, "2  vkCmdClearColorImage (the same either way)", size=12.5, bold=True)
-        s.lines(bx0 + 12, CALLOUTS_A + 44, ["a transfer command: the image in TRANSFER_DST,",
-                                            "written at the CLEAR stage (TRANSFER_WRITE)"],
-                size=10.5, leading=1.3, mono=True)
-        s.lines(bx0 + 12, CALLOUTS_A + 106, ["With --screenshot, before 6: the swapchain image to",
-                                             "TRANSFER_SRC, read back, and from there to PRESENT_SRC."],
-                size=11, leading=1.3, italic=True)
+        title = "2  vkCmdClearColorImage (the same either way)"
+        what = ["a transfer command: the image in TRANSFER_DST,",
+                "written at the CLEAR stage (TRANSFER_WRITE)"]
+        note = ["With --screenshot, before 6: the swapchain image to",
+                "TRANSFER_SRC, read back, and from there to PRESENT_SRC."]
+    s.text(bx0 + 12, CALLOUTS_A + 22, title, size=12.5, bold=True)
+    s.lines(bx0 + 12, CALLOUTS_A + 44, what, size=10.5, leading=1.3, mono=True)
+    s.lines(bx0 + 12, CALLOUTS_A + 106, note, size=11, leading=1.3, italic=True)
 
     s.line(START, TOP_B - 14, END, TOP_B - 14, stroke=GRID, width=1)
 

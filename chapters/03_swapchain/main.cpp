@@ -12,7 +12,6 @@
 #include "vkt/frame/harness.hpp"
 #include "vkt/resources/readback.hpp"
 
-#include <bit>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -162,10 +161,10 @@ void FrameLoop::create_swapchain(VkSwapchainKHR old) {
     next.direct = !harness_.options().copy_to_swapchain && next.readable == screenshot_ &&
                   next.format == vkt::render_format_for(next.format);
     // OPAQUE: the window shows our colour, not what lies behind it. A surface
-    // without it offers something else; take the first it has.
-    VkCompositeAlphaFlagBitsKHR alpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
-    if (!(allows.supportedCompositeAlpha & alpha))
-        alpha = VkCompositeAlphaFlagBitsKHR(1u << std::countr_zero(allows.supportedCompositeAlpha));
+    // without it offers something else, and choose_composite_alpha takes the
+    // first it has.
+    const VkCompositeAlphaFlagBitsKHR alpha =
+        vkt::choose_composite_alpha(allows.supportedCompositeAlpha);
     // [/swapchain-choices]
 
     // [create-swapchain]

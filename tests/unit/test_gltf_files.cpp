@@ -146,8 +146,8 @@ TEST_CASE("files: resolve_inside keeps a URI inside its folder", "[files]") {
     CHECK_THAT(error_of([&] { vkt::resolve_inside(folder, ""); }), ContainsSubstring("empty URI"));
 
     // A symbolic link counts where it leads: out is out, in is in. (Not in the
-    // Windows build: MinGW's std::filesystem makes no symbolic links, "Function
-    // not implemented".)
+    // Windows build: MinGW's std::filesystem cannot make symbolic links, it
+    // fails with ENOSYS.)
 #ifndef _WIN32
     fs::remove(folder / "out");
     fs::remove(folder / "in");

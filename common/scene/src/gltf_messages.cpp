@@ -45,28 +45,29 @@ std::string element(std::string_view json, const char* array, const char* one, s
 // The element tinygltf failed on (see the top of this file); empty where every
 // array it parses is whole, so the fault lies elsewhere.
 std::string failed_element(std::string_view json, const tinygltf::Model& m) {
-    const std::array<std::pair<const char*, size_t>, 13> kept = {{
-        {"buffers", m.buffers.size()},
-        {"bufferViews", m.bufferViews.size()},
-        {"accessors", m.accessors.size()},
-        {"meshes", m.meshes.size()},
-        {"nodes", m.nodes.size()},
-        {"scenes", m.scenes.size()},
-        {"materials", m.materials.size()},
-        {"images", m.images.size()},
-        {"textures", m.textures.size()},
-        {"animations", m.animations.size()},
-        {"skins", m.skins.size()},
-        {"samplers", m.samplers.size()},
-        {"cameras", m.cameras.size()},
+    struct Kept {
+        const char* array;  // "buffers", as the JSON names the array
+        const char* one;    // "buffer", as the message names an element
+        size_t parsed;      // how many of them tinygltf kept
+    };
+    const std::array<Kept, 13> kept = {{
+        {"buffers", "buffer", m.buffers.size()},
+        {"bufferViews", "bufferView", m.bufferViews.size()},
+        {"accessors", "accessor", m.accessors.size()},
+        {"meshes", "mesh", m.meshes.size()},
+        {"nodes", "node", m.nodes.size()},
+        {"scenes", "scene", m.scenes.size()},
+        {"materials", "material", m.materials.size()},
+        {"images", "image", m.images.size()},
+        {"textures", "texture", m.textures.size()},
+        {"animations", "animation", m.animations.size()},
+        {"skins", "skin", m.skins.size()},
+        {"samplers", "sampler", m.samplers.size()},
+        {"cameras", "camera", m.cameras.size()},
     }};
-    constexpr std::array<const char*, 13> singular = {
-        "buffer", "bufferView", "accessor",  "mesh", "node",    "scene", "material",
-        "image",  "texture",    "animation", "skin", "sampler", "camera"};
-    for (size_t i = 0; i < kept.size(); ++i) {
-        const std::optional<size_t> in_json = json_array_size(json, kept[i].first);
-        if (in_json && kept[i].second < *in_json)
-            return element(json, kept[i].first, singular[i], kept[i].second);
+    for (const Kept& k : kept) {
+        const std::optional<size_t> in_json = json_array_size(json, k.array);
+        if (in_json && k.parsed < *in_json) return element(json, k.array, k.one, k.parsed);
     }
     return {};
 }
