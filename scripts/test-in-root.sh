@@ -23,7 +23,7 @@
 # sockets belong to a network namespace). It ends with one line: the
 # commands, their exit status, the tests passed and the minutes taken.
 #
-# On the 2-core machine a run takes 8 to 30 minutes
+# On the 2-core machine a run takes 4 to 30 minutes
 # (tests/roots/ has the last record of each): too long for every CI run. Run
 # both before a release, after any change to install-deps.sh, the CMake
 # files or the packages a chapter needs, and when Debian moves a package.
