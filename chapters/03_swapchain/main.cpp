@@ -1,14 +1,12 @@
-// Chapter 03: the swapchain and the frame loop.
-//
-// The harness (vkt/frame/harness.hpp) opens a window, a headless surface or
-// neither (--offscreen), the instance and device for it (chapters 01, 02), and
-// keeps the command line's promises (--frames, --screenshot, --benchmark).
+// Chapter 03: the swapchain and the frame loop. The harness (vkt/frame/harness.hpp)
+// opens a window, a headless surface or neither (--offscreen), the instance and
+// device (chapters 01, 02), and keeps --frames, --screenshot and --benchmark.
 // From the surface to the picture is this file: the swapchain, frame slots,
-// acquire, record, submit, present, recreation when the window changes. The
-// picture is the simplest there is: one colour, changing with time.
+// acquire, record, submit, present, recreation. The picture: one colour, changing.
 
 #include "vkt/core/memory.hpp"
 #include "vkt/core/swapchain.hpp"
+#include "vkt/core/swapchain_retirement.hpp"
 #include "vkt/frame/harness.hpp"
 #include "vkt/resources/readback.hpp"
 
@@ -91,7 +89,8 @@ private:
     vkt::Harness& harness_;
     const bool screenshot_;  // --screenshot: read back what each frame shows
     const vkt::Device& device_;
-    std::optional<Swapchain> swapchain_;  // none offscreen
+    std::optional<Swapchain> swapchain_;   // none offscreen
+    vkt::SwapchainRetirement retirement_;  // old swapchains, until their presents are over
     vkt::Image own_;  // our own _SRGB image, where frames do not go straight into the swapchain's
     std::vector<FrameSlot> slots_;
     std::optional<uint32_t> last_slot_;  // the slot of the last frame submitted
@@ -100,7 +99,8 @@ private:
 FrameLoop::FrameLoop(vkt::Harness& harness)
     : harness_(harness),
       screenshot_(!harness.options().screenshot.empty()),
-      device_(harness.device()) {
+      device_(harness.device()),
+      retirement_(harness.device(), harness.present_fences()) {
     if (harness.surface()) create_swapchain(VK_NULL_HANDLE);
     create_own_image();
 
@@ -193,7 +193,8 @@ void FrameLoop::create_swapchain(VkSwapchainKHR old) {
     VKT_CHECK(vkGetSwapchainImagesKHR(device_, handle, &n, next.images.data()));
     for (uint32_t i = 0; i < n; ++i)
         next.ready_to_present.push_back(vkt::create_semaphore(device_));
-    swapchain_ = std::move(next);  // the old swapchain, if any, is destroyed here
+    if (swapchain_) retirement_.retire(std::move(*swapchain_));  // kept until its presents end
+    swapchain_ = std::move(next);
     // [/create-swapchain]
 }
 
@@ -238,6 +239,7 @@ bool FrameLoop::draw_frame(uint64_t index) {
     VkFence done = slot.done;
     VKT_CHECK(vkWaitForFences(device_, 1, &done, VK_TRUE, UINT64_MAX));
     harness_.gpu_timer().collect(slot_index);  // --benchmark: that frame's GPU time
+    retirement_.slot_finished(slot_index);     // old swapchains proven free go
 
     // Which image is ours next. image_acquired is signalled once the
     // presentation engine has really let go of it; the call may return sooner.
@@ -253,6 +255,7 @@ bool FrameLoop::draw_frame(uint64_t index) {
         }
         vkt::check(acquired, "vkAcquireNextImageKHR");
         suboptimal = acquired == VK_SUBOPTIMAL_KHR;  // acquired: draw it, then recreate
+        retirement_.acquired(image_index, slot_index);
     }
     // Only now that this frame will be submitted: a fence reset before a
     // return above would never be signalled, and the next wait would hang.
@@ -304,6 +307,7 @@ bool FrameLoop::draw_frame(uint64_t index) {
     const VkSemaphore ready = swapchain_->ready_to_present[image_index];
     const VkPresentInfoKHR present{
         .sType = VK_STRUCTURE_TYPE_PRESENT_INFO_KHR,
+        .pNext = retirement_.present(image_index),  // a fence that says when it is over
         .waitSemaphoreCount = 1,
         .pWaitSemaphores = &ready,
         .swapchainCount = 1,
@@ -341,7 +345,6 @@ void FrameLoop::record(uint32_t slot_index, uint32_t image_index, double time) {
     const VkClearColorValue colour{{0.5f + 0.5f * std::sin(t), 0.5f + 0.5f * std::sin(t + 2.094f),
                                     0.5f + 0.5f * std::sin(t + 4.189f), 1.0f}};
     // [/clear-colour]
-
     // [clear]
     // The image we clear: the swapchain's, or our own. Its old contents do not
     // matter (from UNDEFINED, the driver may drop them), but it must not be
@@ -400,7 +403,6 @@ void FrameLoop::record(uint32_t slot_index, uint32_t image_index, double time) {
                              slot.readback);
     }
     // [/read-back]
-
     // [to-present]
     // The layout presentation needs. Nothing after it in this command buffer
     // touches the image (NONE): the present waits for ready_to_present, which
@@ -417,11 +419,12 @@ void FrameLoop::recreate() {
     // A minimised window may be 0x0, and no swapchain can be: wait it out.
     if (!harness_.wait_while_minimised()) return;  // closed meanwhile
     harness_.take_resized();                       // this answers every resize so far
-    // Simple and safe: let the GPU finish everything that uses the old images.
+    // Let the GPU finish the frames in flight (they use our image and the old
+    // swapchain's); the presentation engine's hold on it is retirement_'s to watch.
     VKT_CHECK(vkDeviceWaitIdle(device_));
-    create_swapchain(swapchain_->handle);  // from the old one, which then goes
+    create_swapchain(swapchain_->handle);  // from the old one, which it retires
     create_own_image();                    // the size may have changed
-    harness_.note_recreated(swapchain_->extent);
+    harness_.note_recreated(swapchain_->extent, retirement_.kept());
 }
 // [/recreate]
 

@@ -11,6 +11,7 @@
 //                     read-back
 
 #include "vkt/core/swapchain.hpp"
+#include "vkt/core/swapchain_retirement.hpp"
 #include "vkt/frame/harness.hpp"
 #include "vkt/frame/runner.hpp"
 #include "vkt/resources/readback.hpp"
@@ -64,6 +65,9 @@ private:
     const ChapterSpec& spec_;
     const Device& device_;
     std::unique_ptr<Swapchain> swapchain_;
+    // Old swapchains until their presents are over; after swapchain_, so it is
+    // destroyed first, once the current swapchain's presents are over too.
+    SwapchainRetirement retirement_;
     Image target_;
     ImageView target_storage_;  // with ChapterSpec::storage_target: see create_target
     VkFormat storage_format_ = VK_FORMAT_UNDEFINED;  // Context::storage_format

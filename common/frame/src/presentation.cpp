@@ -147,7 +147,9 @@ void ChapterRun::create_target(VkExtent2D extent) {
 void ChapterRun::recreate_swapchain() {
     if (!harness_.wait_while_minimised()) return;  // a 0x0 swapchain cannot exist
     harness_.take_resized();                       // this recreation answers any resize so far
-    // Simple and safe: let the GPU finish everything that uses the old images.
+    // The frames in flight use our target and the old images' views: let the
+    // GPU finish them. (The presentation engine's use of the old swapchain is
+    // not queue work, so this does not cover it: retirement_ does.)
     VKT_CHECK(vkDeviceWaitIdle(device_));
     auto next = std::make_unique<Swapchain>(
         device_.physical(), device_, harness_.surface(),
@@ -158,13 +160,14 @@ void ChapterRun::recreate_swapchain() {
                          .drawable = !options_.copy_to_swapchain,
                          .transfer_into = spec_.transfers_into_target},
         swapchain_->get());
-    swapchain_ = std::move(next);  // the old swapchain is destroyed after the new one exists
+    retirement_.retire(std::move(swapchain_));  // kept until its presents are over
+    swapchain_ = std::move(next);
     // The chapter's pipelines were made for our target's format; it must not change.
     if (render_format_for(swapchain_->format()) != target_.format)
         throw Error(std::string("the surface no longer offers a format with the byte order of ") +
                     format_name(target_.format));
     VkExtent2D extent = swapchain_->extent();
-    harness_.note_recreated(extent);
+    harness_.note_recreated(extent, retirement_.kept());
     const bool resized =
         extent.width != target_.extent.width || extent.height != target_.extent.height;
     // A new size needs a new target; so does a swapchain we can no longer draw

@@ -20,7 +20,8 @@ ChapterRun::ChapterRun(Harness& harness)
     : harness_(harness),
       options_(harness.options()),
       spec_(harness.spec()),
-      device_(harness.device()) {
+      device_(harness.device()),
+      retirement_(harness.device(), harness.present_fences()) {
     create_swapchain();  // and our colour target
 
     for (uint32_t i = 0; i < frames_in_flight; ++i) {
@@ -104,6 +105,7 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
     VkFence done = slot.done;
     VKT_CHECK(vkWaitForFences(device_, 1, &done, VK_TRUE, UINT64_MAX));
     harness_.gpu_timer().collect(slot_index);
+    retirement_.slot_finished(slot_index);  // old swapchains whose presents are over go now
 
     uint32_t image_index = 0;
     bool suboptimal = false;  // an image was acquired, but recreate after this frame
@@ -116,6 +118,7 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
         }
         check(result, "vkAcquireNextImageKHR");
         suboptimal = result == VK_SUBOPTIMAL_KHR;
+        retirement_.acquired(image_index, slot_index);
     }
     VKT_CHECK(vkResetFences(device_, 1, &done));  // only now that we will submit
 
@@ -165,6 +168,7 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
         VkSemaphore ready = swapchain_->ready_to_present(image_index);
         VkPresentInfoKHR present{
             .sType = VK_STRUCTURE_TYPE_PRESENT_INFO_KHR,
+            .pNext = retirement_.present(image_index),  // a present fence, where offered
             .waitSemaphoreCount = 1,
             .pWaitSemaphores = &ready,
             .swapchainCount = 1,
