@@ -40,7 +40,7 @@ struct Swapchain {
     // by its present, and free again only once the image is acquired again.
     std::vector<vkt::Semaphore> ready_to_present;
     bool readable = false;  // --screenshot can copy from the images (TRANSFER_SRC)
-    bool direct = false;    // frames are cleared straight into the images, else copied in
+    bool drawn_into = false;  // frames are cleared straight into the images, else copied in
 };
 // [/swapchain-struct]
 
@@ -158,7 +158,7 @@ void FrameLoop::create_swapchain(VkSwapchainKHR old) {
     if (next.readable) usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     // Straight in only where the image encodes our linear colour (an _SRGB
     // format) and, for --screenshot, can be read back.
-    next.direct = !harness_.options().copy_to_swapchain && next.readable == screenshot_ &&
+    next.drawn_into = !harness_.options().copy_to_swapchain && next.readable == screenshot_ &&
                   next.format == vkt::render_format_for(next.format);
     // OPAQUE: the window shows our colour, not what lies behind it. A surface
     // without it offers something else, and choose_composite_alpha takes the
@@ -201,7 +201,7 @@ void FrameLoop::create_swapchain(VkSwapchainKHR old) {
 // [own-image]
 void FrameLoop::create_own_image() {
     own_ = vkt::Image{};
-    if (swapchain_ && swapchain_->direct) return;  // frames go straight into the swapchain's
+    if (swapchain_ && swapchain_->drawn_into) return;  // frames go straight into the swapchain's
     // The _SRGB format with the swapchain's byte order, so that a plain copy
     // carries our bytes across unchanged; offscreen, R8G8B8A8_SRGB.
     const VkFormat format =
@@ -272,7 +272,7 @@ bool FrameLoop::draw_frame(uint64_t index) {
     const VkSemaphoreSubmitInfo wait{
         .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
         .semaphore = slot.image_acquired,
-        .stageMask = swapchain_ && swapchain_->direct ? VK_PIPELINE_STAGE_2_CLEAR_BIT
+        .stageMask = swapchain_ && swapchain_->drawn_into ? VK_PIPELINE_STAGE_2_CLEAR_BIT
                                                       : VK_PIPELINE_STAGE_2_COPY_BIT,
     };
     const VkSemaphoreSubmitInfo signal{
@@ -335,7 +335,7 @@ void FrameLoop::record(uint32_t slot_index, uint32_t image_index, double time) {
     };
     VKT_CHECK(vkBeginCommandBuffer(cmd, &begin));
     harness_.gpu_timer().begin(cmd, slot_index);
-    const bool direct = swapchain_ && swapchain_->direct;
+    const bool drawn_into = swapchain_ && swapchain_->drawn_into;
     const VkImage image = swapchain_ ? swapchain_->images[image_index] : VK_NULL_HANDLE;
 
     // [clear-colour]
@@ -351,9 +351,9 @@ void FrameLoop::record(uint32_t slot_index, uint32_t image_index, double time) {
     // written too early: the swapchain image not before the acquire semaphore,
     // which the submit waits for at the CLEAR stage, so the barrier starts
     // there; our own not before the last frame's copy (or read) of it.
-    const VkImage cleared = direct ? image : own_.image.get();
+    const VkImage cleared = drawn_into ? image : own_.image.get();
     transition(cmd, cleared, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-               direct ? VK_PIPELINE_STAGE_2_CLEAR_BIT : VK_PIPELINE_STAGE_2_COPY_BIT,
+               drawn_into ? VK_PIPELINE_STAGE_2_CLEAR_BIT : VK_PIPELINE_STAGE_2_COPY_BIT,
                VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
     const VkImageSubresourceRange whole{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     vkCmdClearColorImage(cmd, cleared, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &colour, 1, &whole);
@@ -365,12 +365,12 @@ void FrameLoop::record(uint32_t slot_index, uint32_t image_index, double time) {
     VkImageLayout layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
     VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_CLEAR_BIT;
     VkAccessFlags2 access = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-    if (!direct)  // our image, ready to be copied (or read back) once the clear is done
+    if (!drawn_into)  // our image, ready to be copied (or read back) once the clear is done
         transition(cmd, own_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
                    VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                    VK_ACCESS_2_TRANSFER_READ_BIT);
-    if (swapchain_ && !direct) {
+    if (swapchain_ && !drawn_into) {
         // The swapchain image, after the acquire semaphore (waited for at COPY).
         transition(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                    VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
@@ -433,7 +433,7 @@ vkt::Destination FrameLoop::destination() const {
     return {.swapchain_format = swapchain_->format,
             .present_mode = swapchain_->mode,
             .images = uint32_t(swapchain_->images.size()),
-            .drawn_into = swapchain_->direct,
+            .drawn_into = swapchain_->drawn_into,
             .extent = swapchain_->extent,
             .format = vkt::render_format_for(swapchain_->format)};
 }

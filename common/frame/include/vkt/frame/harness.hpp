@@ -41,6 +41,11 @@ struct ChapterSpec {
     // TRANSFER_DST usage, which the specification does not promise. Where the
     // surface lacks it, the frame goes into our own target instead.
     bool transfers_into_target = false;
+    // The layout record() wants the target in (Frame::target_layout): the
+    // runner's barrier takes it there from UNDEFINED. A chapter whose first
+    // write differs from frame to frame asks for UNDEFINED and makes that
+    // barrier itself, so that no barrier undoes another (chapter 20).
+    VkImageLayout target_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     // Checks between the chapter's own flags (two that contradict each other),
     // run right after parsing, before any Vulkan object exists: throw
     // UsageError, and the chapter exits with status 2 like any bad argument.
