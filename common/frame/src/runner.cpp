@@ -93,6 +93,7 @@ void ChapterRun::run(const RendererFactory& factory) {
 
     VKT_CHECK(vkDeviceWaitIdle(device_));
     harness_.finish(destination(), last_slot_ ? &slots_[*last_slot_].readback : nullptr);
+    if (last_slot_) renderer_->verify();  // checks on the last frame, outside the loop
     renderer_.reset();
 }
 

@@ -96,6 +96,9 @@ public:
     }
     // The colour target changed size (the window was resized); the GPU is idle.
     virtual void resize(VkExtent2D) {}
+    // Once, after the last frame, the GPU idle: where a check that submits
+    // GPU work of its own (--verify) runs, never inside record().
+    virtual void verify() {}
 };
 // [/renderer-contract]
 
