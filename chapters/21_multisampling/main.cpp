@@ -180,6 +180,8 @@ public:
                 VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                 VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
         // [/barriers]
+        // --benchmark's GPU time of the draws and the resolve, to the end of record().
+        auto scope = frame.gpu_scope("render");
 
         // [rendering]
         // With MSAA the samples go into our own image, and rendering ends by
