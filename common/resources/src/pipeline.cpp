@@ -57,6 +57,10 @@ Pipeline create_graphics_pipeline(VkDevice device, const GraphicsPipelineDesc& d
         .polygonMode = desc.polygon_mode,
         .cullMode = desc.cull_mode,
         .frontFace = desc.front_face,
+        .depthBiasEnable =
+            desc.depth_bias_constant != 0.0f || desc.depth_bias_slope != 0.0f ? VK_TRUE : VK_FALSE,
+        .depthBiasConstantFactor = desc.depth_bias_constant,
+        .depthBiasSlopeFactor = desc.depth_bias_slope,
         .lineWidth = 1.0f,
     };
     // [multisample]

@@ -1,7 +1,8 @@
 #pragma once
 // A graphics pipeline in one call: the tidy form of chapter 04's pipeline,
 // with chapter 05's vertex input, chapter 06's push constants, chapter 08's
-// depth test and chapter 21's multisampling as options. Later chapters name only what differs from
+// depth test, chapter 21's multisampling and chapter 22's depth bias as
+// options. Later chapters name only what differs from
 // the defaults; a chapter that teaches a pipeline setting writes it out itself.
 
 #include "vkt/core/owned.hpp"
@@ -32,6 +33,11 @@ struct GraphicsPipelineDesc {
     VkFormat depth_format = VK_FORMAT_UNDEFINED;
     bool depth_write = true;
     VkCompareOp depth_compare = VK_COMPARE_OP_LESS;
+    // Chapter 22: where either is not 0, the depth written is pushed back by
+    // constant * the format's smallest step + slope * the triangle's depth
+    // slope (a shadow map's bias against acne).
+    float depth_bias_constant = 0.0f;
+    float depth_bias_slope = 0.0f;
     bool alpha_blend = false;  // source-over blending on every colour attachment
     // Chapter 21: samples per pixel of every attachment the pipeline draws
     // into; and, where above 0, sample shading: the fragment shader runs for
