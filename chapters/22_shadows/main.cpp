@@ -11,6 +11,7 @@
 // texels as those far away.
 
 #include "cascades.hpp"
+#include "uniforms.hpp"
 
 #include "vkt/core/barrier.hpp"
 #include "vkt/core/check.hpp"
@@ -33,15 +34,6 @@ namespace {
 
 constexpr uint32_t shadow_size = 1024;  // texels per side of each cascade's map
 constexpr float z_near = 0.1f, z_far = 60.0f;
-
-// What both shaders read (set 0, binding 0); std140 as written.
-struct FrameBlock {
-    glm::mat4 clip_from_world;
-    glm::mat4 light_from_world[4];
-    glm::vec4 splits;  // the far distance of each cascade
-    glm::vec4 eye, forward, light;
-    glm::uvec4 settings;  // cascades, colour them
-};
 
 struct Draw {
     glm::mat4 world_from_object;

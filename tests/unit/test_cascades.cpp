@@ -3,9 +3,13 @@
 // orthographic box around each slice of the view; and the geometry behind
 // the chapter test's two hand-picked pixels.
 #include "../../chapters/22_shadows/cascades.hpp"
+#include "../../chapters/22_shadows/uniforms.hpp"
+#include "spirv_reflect.hpp"
 
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
+
+#include <cstddef>
 
 using Catch::Approx;
 
@@ -77,4 +81,21 @@ TEST_CASE("the chapter test's shadowed floor point looks at the light through a 
     CHECK(to_light.z > 0.0f);
     // The floor's Lambert term: n . -light = 1 / |(-0.6, -1, -0.45)| = 0.8.
     CHECK(glm::dot(glm::vec3(0, 1, 0), -glm::normalize(-to_light)) == Approx(0.8f));
+}
+
+TEST_CASE("chapter 22's FrameBlock matches both compiled shaders' block", "[cascades]") {
+    for (const char* shader : {"scene.vert", "scene.frag"}) {
+        INFO(shader);
+        const auto words =
+            spirv::read(std::string(VKT_BINARY_DIR "/shaders/22_shadows/") + shader + ".spv");
+        const auto block = spirv::struct_members(words, "Frame");
+        CHECK(block.at("clip_from_world").offset == offsetof(FrameBlock, clip_from_world));
+        CHECK(block.at("light_from_world").offset == offsetof(FrameBlock, light_from_world));
+        CHECK(block.at("light_from_world").array_stride == sizeof(glm::mat4));
+        CHECK(block.at("splits").offset == offsetof(FrameBlock, splits));
+        CHECK(block.at("eye").offset == offsetof(FrameBlock, eye));
+        CHECK(block.at("forward").offset == offsetof(FrameBlock, forward));
+        CHECK(block.at("light").offset == offsetof(FrameBlock, light));
+        CHECK(block.at("settings").offset == offsetof(FrameBlock, settings));
+    }
 }
