@@ -267,29 +267,32 @@ public:
         bind_geometry(cmd);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadow_pipeline_);
         vkt::set_viewport_and_scissor(cmd, {shadow_size, shadow_size});
-        for (uint32_t c = 0; c < cascades_; ++c) {
-            const VkRenderingAttachmentInfo depth{
-                .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                .imageView = shadow_views_[c],
-                .imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-                .storeOp = VK_ATTACHMENT_STORE_OP_STORE,  // the lit pass reads it
-                .clearValue = {.depthStencil = {1.0f, 0}},
-            };
-            const VkRenderingInfo rendering{
-                .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-                .renderArea = {{0, 0}, {shadow_size, shadow_size}},
-                .layerCount = 1,
-                .pDepthAttachment = &depth,
-            };
-            vkCmdBeginRendering(cmd, &rendering);
-            for (const Draw& draw : draws_) {
-                const glm::mat4 clip = block_.light_from_world[c] * draw.world_from_object;
-                vkCmdPushConstants(cmd, shadow_layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof clip,
-                                   &clip);
-                vkCmdDrawIndexed(cmd, draw.mesh.index_count, 1, draw.mesh.first_index, 0, 0);
+        {  // --benchmark's GPU time of the shadow pass, every cascade
+            auto scope = frame.gpu_scope("shadow");
+            for (uint32_t c = 0; c < cascades_; ++c) {
+                const VkRenderingAttachmentInfo depth{
+                    .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                    .imageView = shadow_views_[c],
+                    .imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                    .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                    .storeOp = VK_ATTACHMENT_STORE_OP_STORE,  // the lit pass reads it
+                    .clearValue = {.depthStencil = {1.0f, 0}},
+                };
+                const VkRenderingInfo rendering{
+                    .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                    .renderArea = {{0, 0}, {shadow_size, shadow_size}},
+                    .layerCount = 1,
+                    .pDepthAttachment = &depth,
+                };
+                vkCmdBeginRendering(cmd, &rendering);
+                for (const Draw& draw : draws_) {
+                    const glm::mat4 clip = block_.light_from_world[c] * draw.world_from_object;
+                    vkCmdPushConstants(cmd, shadow_layout_, VK_SHADER_STAGE_VERTEX_BIT, 0,
+                                       sizeof clip, &clip);
+                    vkCmdDrawIndexed(cmd, draw.mesh.index_count, 1, draw.mesh.first_index, 0, 0);
+                }
+                vkCmdEndRendering(cmd);
             }
-            vkCmdEndRendering(cmd);
         }
         // Depth writes to shader reads: the lit pass's fragment shader must
         // see every layer complete.
@@ -300,6 +303,7 @@ public:
                            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
         // [/shadow-pass]
 
+        auto scope = frame.gpu_scope("lit");
         vkt::begin_depth_frame(cmd, depth_.image);
         vkt::begin_rendering(cmd, frame.target_view, frame.extent, {{0.45f, 0.6f, 0.8f, 1.0f}},
                              depth_.view);
