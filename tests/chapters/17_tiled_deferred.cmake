@@ -71,7 +71,8 @@ endforeach()
 # the tile (partial tiles on the right and bottom), and with 16,384 lights.
 vkt_chapter_test(chapter.17_tiled_deferred.verify_brute 17_tiled_deferred
   ARGS ${headless} --verify brute
-  EXPECT "verify brute: tiled fragment vs brute force, largest difference"
+  EXPECT "verify motion: 1024 lights at t = [0-9.]+, largest position difference from the CPU"
+  "verify brute: tiled fragment vs brute force, largest difference"
   "verify brute: tiled compute vs brute force" "tiles overflowed 0")
 vkt_chapter_test(chapter.17_tiled_deferred.verify_brute_odd_size 17_tiled_deferred
   ARGS --offscreen --validation --frames 3 --size 250x130 --verify brute --shade compute
@@ -98,7 +99,8 @@ vkt_chapter_test(chapter.17_tiled_deferred.verify_bins_many 17_tiled_deferred
   --lights 65536 EXPECT "65536 lights, .*lists that differ: 0")
 vkt_chapter_test(chapter.17_tiled_deferred.verify_bins_million 17_tiled_deferred
   ARGS --offscreen --no-validation --frames 1 --size 256x144 --verify bins
-  --lights 1048576 EXPECT "1048576 lights, .*lists that differ: 0; overflowed \\(counts compared\\): [0-9]+")
+  --lights 1048576 EXPECT "verify motion: 1048576 lights"
+  "1048576 lights, .*lists that differ: 0; overflowed \\(counts compared\\): [0-9]+")
 # Binning's own overflow: a budget too small for the bins. The fill drops what
 # does not fit; the run says so, the bins grow for the next frames, and
 # --verify bins refuses a frame that dropped candidates.
@@ -123,15 +125,15 @@ vkt_chapter_test(chapter.17_tiled_deferred.overflow_fails_verify 17_tiled_deferr
 # --benchmark times the passes as named GPU scopes.
 vkt_chapter_test(chapter.17_tiled_deferred.benchmark 17_tiled_deferred
   ARGS --offscreen --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark
-  EXPECT "\"gpu_scopes_ms\": \\{\"gbuffer\": \\{\"min\": [0-9.]+.*\"bin\": \\{.*\"cull\": \\{.*\"lighting\": \\{")
+  EXPECT "\"gpu_scopes_ms\": \\{\"move\": \\{\"min\": [0-9.]+.*\"gbuffer\": \\{.*\"bin\": \\{.*\"cull\": \\{.*\"lighting\": \\{")
 vkt_chapter_test(chapter.17_tiled_deferred.benchmark_compute 17_tiled_deferred
   ARGS --offscreen --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark
   --shade compute
-  EXPECT "\"gpu_scopes_ms\": \\{\"gbuffer\": \\{\"min\": [0-9.]+.*\"bin\": \\{.*\"shade\": \\{.*\"copy\": \\{")
+  EXPECT "\"gpu_scopes_ms\": \\{\"move\": \\{\"min\": [0-9.]+.*\"gbuffer\": \\{.*\"bin\": \\{.*\"shade\": \\{.*\"copy\": \\{")
 vkt_chapter_test(chapter.17_tiled_deferred.benchmark_tiled 17_tiled_deferred
   ARGS --offscreen --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark
   --shade compute --cull tiled
-  EXPECT "\"gpu_scopes_ms\": \\{\"gbuffer\": \\{\"min\": [0-9.]+, [^}]*\\}, \"shade\": \\{.*\"copy\": \\{")
+  EXPECT "\"gpu_scopes_ms\": \\{\"move\": \\{[^}]*\\}, \"gbuffer\": \\{\"min\": [0-9.]+, [^}]*\\}, \"shade\": \\{.*\"copy\": \\{")
 vkt_chapter_test(chapter.17_tiled_deferred.help 17_tiled_deferred EXIT 0 ARGS --help
   EXPECT "usage: 17_tiled_deferred" "--shade PASS" "--cull HOW" "--view VIEW" "--lights N"
   "--bin-budget N" "--verify CHECK")
