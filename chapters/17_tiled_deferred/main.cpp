@@ -10,7 +10,10 @@
 //   --shade fragment: the compute pass writes the lists to a buffer and a
 //                     full-screen triangle lights the pixels (three passes);
 //   --shade compute:  one dispatch culls and lights, the list never leaving
-//                     shared memory; the result is copied to the target.
+//                     shared memory; the result is copied to the target;
+//   --shade lists:    as fragment, but the lighting is a compute pass, one
+//                     invocation per pixel (the experiment of the
+//                     performance part: what the fragment launch costs).
 //
 // Which lights a tile tests is the second choice:
 //
@@ -64,6 +67,7 @@ public:
         : gpu_(context.gpu()),
           device_(context.device),
           compute_(context.options.text("--shade") == "compute"),
+          lists_(context.options.text("--shade") == "lists"),
           binned_(context.options.text("--cull") == "binned"),
           verify_(context.options.has("--verify") ? context.options.text("--verify") : ""),
           view_(context.options.text("--view") == "heat" ? view_heat : view_lit),
@@ -82,7 +86,8 @@ public:
           lighting_(context, layout_, verify_.empty() ? VK_FORMAT_UNDEFINED : verify_format),
           moving_(light_count_) {
         std::fprintf(stderr, "17_tiled_deferred: %u light%s, shade %s, view %s, cull %s\n",
-                     light_count_, light_count_ == 1 ? "" : "s", compute_ ? "compute" : "fragment",
+                     light_count_, light_count_ == 1 ? "" : "s",
+                     context.options.text("--shade").c_str(),
                      context.options.text("--view").c_str(), binned_ ? "binned" : "tiled");
         create_frame_data(context.frames_in_flight,
                           context.properties.limits.maxStorageBufferRange);
@@ -148,6 +153,15 @@ public:
             {
                 auto scope = frame.gpu_scope("cull");
                 tiles_.cull(cmd, sets, frame.extent, view_, binned_);
+            }
+            if (lists_) {
+                {
+                    auto scope = frame.gpu_scope("lighting");  // in compute
+                    lighting_.dispatch(cmd, sets, frame.extent, tiles_, view_);
+                }
+                auto scope = frame.gpu_scope("copy");
+                tiles_.copy_to_target(cmd, frame.target, frame.extent);
+                return;
             }
             auto scope = frame.gpu_scope("lighting");
             lighting_.draw(cmd, sets, frame.extent, frame.target_view, ch17::LightingPass::tiled,
@@ -319,7 +333,7 @@ private:
 
     vkt::Gpu gpu_;
     VkDevice device_;
-    bool compute_, binned_;
+    bool compute_, lists_, binned_;
     std::string verify_;  // "", "brute" or "bins"
     int32_t view_;
     uint32_t light_count_;
@@ -354,16 +368,17 @@ int main(int argc, char** argv) {
     // size for Vulkan 1.3 as LocalSizeId, which needs it.
     spec.requirements.features = {VKT_FEATURE_12(separateDepthStencilLayouts),
                                   VKT_FEATURE_13(maintenance4)};
-    // --shade compute copies its shaded image into the frame.
+    // --shade compute and lists copy their shaded image into the frame.
     spec.transfers_into_target = true;
     spec.options = {
         {.name = "--shade",
          .type = vkt::OptionType::choice,
          .value_name = "PASS",
-         .help = "fragment (a compute pass writes light lists, a fragment pass lights) or "
-                 "compute (one dispatch culls and lights)",
+         .help = "fragment (a compute pass writes light lists, a fragment pass lights), "
+                 "compute (one dispatch culls and lights) or lists (as fragment, the lighting "
+                 "in compute)",
          .default_value = "fragment",
-         .choices = {"fragment", "compute"}},
+         .choices = {"fragment", "compute", "lists"}},
         {.name = "--cull",
          .type = vkt::OptionType::choice,
          .value_name = "HOW",

@@ -31,7 +31,7 @@ if(XVFB_RUN)
 endif()
 
 # --cull tiled, every tile testing every light: the same picture, both ways.
-foreach(shade fragment compute)
+foreach(shade fragment compute lists)
   vkt_chapter_test(chapter.17_tiled_deferred.cull_tiled_${shade} 17_tiled_deferred
     GOLDEN ${VKT_17_PIXEL} ARGS ${headless} --cull tiled --shade ${shade}
     EXPECT "shade ${shade}, view lit, cull tiled")
@@ -39,7 +39,7 @@ endforeach()
 
 # With chapter 16's 32 lights the scene is chapter 16's: both tiled paths
 # against chapter 16's golden image (the golden tests' tolerance).
-foreach(shade fragment compute)
+foreach(shade fragment compute lists)
   set(test chapter.17_tiled_deferred.matches_16_${shade})
   add_test(NAME ${test} COMMAND vkt_chapter_check --exe $<TARGET_FILE:17_tiled_deferred>
     --out ${VKT_TEST_OUTPUT} --name ${test} --golden ${VKT_GOLDEN_DIR}/16_deferred.png
@@ -53,7 +53,7 @@ endforeach()
 # pixel: the top-left tile holds no geometry, so it kept 0 lights: the ramp's
 # (0, 0, 0.5), shown 75% over a black albedo as (0, 0, 0.375), sRGB-encoded
 # (0, 0, 164); its border pixel (0, 0) is half that, 0.1875, encoded 121.
-foreach(shade fragment compute)
+foreach(shade fragment compute lists)
   set(test chapter.17_tiled_deferred.view_heat_${shade})
   add_test(NAME ${test} COMMAND vkt_chapter_check --exe $<TARGET_FILE:17_tiled_deferred>
     --out ${VKT_TEST_OUTPUT} --name ${test} --golden ${VKT_GOLDEN_DIR}/17_tiled_deferred_heat.png
@@ -147,7 +147,7 @@ vkt_chapter_test(bad_input.17_tiled_deferred.too_many_lights 17_tiled_deferred E
 vkt_chapter_test(bad_input.17_tiled_deferred.bad_cull 17_tiled_deferred EXIT 2
   ARGS --cull clustered EXPECT "--cull wants one of binned, tiled, not 'clustered'")
 vkt_chapter_test(bad_input.17_tiled_deferred.bad_shade 17_tiled_deferred EXIT 2
-  ARGS --shade raster EXPECT "--shade wants one of fragment, compute, not 'raster'")
+  ARGS --shade raster EXPECT "--shade wants one of fragment, compute, lists, not 'raster'")
 vkt_chapter_test(bad_input.17_tiled_deferred.bad_view 17_tiled_deferred EXIT 2
   ARGS --view normal EXPECT "--view wants one of lit, heat, not 'normal'")
 vkt_chapter_test(bad_input.17_tiled_deferred.bad_verify 17_tiled_deferred EXIT 2
