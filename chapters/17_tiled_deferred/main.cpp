@@ -72,7 +72,6 @@ public:
           verify_(context.options.has("--verify") ? context.options.text("--verify") : ""),
           view_(context.options.text("--view") == "heat" ? view_heat : view_lit),
           light_count_(uint32_t(context.options.integer("--lights"))),
-          verify_frame_(context.options.frames.value_or(1) - 1),
           frame_layout_(create_frame_layout(device_)),
           screen_layout_(create_screen_layout(device_)),
           layout_(create_layout(device_, frame_layout_, screen_layout_)),
@@ -127,7 +126,7 @@ public:
         read_stats(frame.slot);  // the last use of this slot is finished
         const float t = float(frame.time);
         update(frame.slot, frame.extent, t);
-        if (!verify_.empty() && frame.index == verify_frame_) verify(frame.slot, frame.extent, t);
+        last_ = {frame.slot, frame.extent, t};  // what verify() checks
         const VkCommandBuffer cmd = frame.cmd;
         const ch17::PassSets sets = pass_sets(frame.slot);
         {
@@ -290,13 +289,20 @@ private:
     }
 
     // [verify]
-    // Both checks first compare the lights the GPU moved to time t with the
-    // CPU's (light_motion.hpp). --verify brute (verify_brute.hpp): this frame
-    // once more, into float images: chapter 16's lighting pass over every
-    // light, the tiled fragment pass and the tiled compute pass (culling as
-    // --cull says), from one G-buffer. --verify bins (verify_bins.hpp): the
-    // lists and pictures of --cull tiled and --cull binned, from one G-buffer.
-    void verify(uint32_t slot, VkExtent2D e, float t) {
+    // Once the runner's loop is over and the GPU idle, on the last frame's
+    // scene. Both checks first compare the lights the GPU moved to that
+    // frame's time with the CPU's (light_motion.hpp). --verify brute
+    // (verify_brute.hpp): the frame once more, into float images: chapter
+    // 16's lighting pass over every light, the tiled fragment pass and the
+    // tiled compute pass (culling as --cull says), from one G-buffer.
+    // --verify bins (verify_bins.hpp): the lists and pictures of --cull
+    // tiled and --cull binned, from one G-buffer.
+    void verify() override {
+        if (verify_.empty()) return;
+        const uint32_t slot = last_.slot;
+        const VkExtent2D e = last_.extent;
+        const float t = last_.time;
+        count_stats(slot);  // the last frame's counts, before the checks count their own
         motion_->verify(slot, t, moving_);
         const ch17::PassSets sets = pass_sets(slot);
         const LightingPush everything{view_lit, 0, light_count_, 1.0f};
@@ -337,7 +343,11 @@ private:
     std::string verify_;  // "", "brute" or "bins"
     int32_t view_;
     uint32_t light_count_;
-    uint64_t verify_frame_;
+    struct {
+        uint32_t slot = 0;
+        VkExtent2D extent{};
+        float time = 0.0f;
+    } last_;  // the last frame recorded
     // Declared in the order they are made: each part needs those above it.
     vkt::DescriptorSetLayout frame_layout_, screen_layout_;
     vkt::PipelineLayout layout_;

@@ -83,7 +83,7 @@ public:
         keys_.steer(frame.input, dt);
         if (!still_ && !keys_.paused) spin_time_ += dt;
         const Push push = make_push(frame.extent);
-        if (verify_ && frame.index == verify_frame_) verify(frame, push);
+        last_ = {frame.slot, frame.extent, push};  // what verify() checks
 
         const VkCommandBuffer cmd = frame.cmd;
         const VkBuffer projected = transform_->projected(frame.slot);
@@ -144,7 +144,6 @@ private:
         still_ = choice.still;
         verify_ = options.has("--verify");
         verify_raster_ = verify_ && options.text("--verify") == "raster";
-        verify_frame_ = options.frames.value_or(1) - 1;
         raster_name_ = options.text("--raster");
         binned_raster_ = raster_name_ == "binned";
         if (binned_raster_) ch20::BinnedRaster::check_device(context);
@@ -229,16 +228,19 @@ private:
     }
 
     // [verify]
-    // --verify cpu: run the pose and transform passes alone on the last
-    // frame, read the projected vertices back and compare each with the CPU
-    // reference (scene_state.hpp: vkt::ndim's per-plane transform_point and
+    // --verify cpu: once the runner's loop is over and the GPU idle, run the
+    // pose and transform passes alone on the last frame's scene, read the
+    // projected vertices back and compare each with the CPU reference
+    // (scene_state.hpp: vkt::ndim's per-plane transform_point and
     // project_to_2d, a different path from the matrix the GPU builds and
     // uses). Throws above the tolerance. (--verify raster: binned_raster.hpp.)
-    void verify(const vkt::Frame& frame, const Push& push) {
-        const uint32_t slot = frame.slot;
+    void verify() override {
+        if (!verify_) return;
+        const uint32_t slot = last_.slot;
+        const Push& push = last_.push;
         const VkBuffer projected = transform_->projected(slot);
         if (verify_raster_)
-            return binned_->verify(*raster_, frame.extent, projected, [&](VkCommandBuffer cmd) {
+            return binned_->verify(*raster_, last_.extent, projected, [&](VkCommandBuffer cmd) {
                 record_poses_and_transform(cmd, slot, push);
             });
         const VkDeviceSize bytes = transform_->vertex_total() * sizeof(Projected);
@@ -271,7 +273,11 @@ private:
     VkDevice device_;
     std::string scene_name_, raster_name_;
     bool still_ = false, verify_ = false, verify_raster_ = false, binned_raster_ = false;
-    uint64_t verify_frame_ = 0;
+    struct {
+        uint32_t slot = 0;
+        VkExtent2D extent{};
+        Push push{};
+    } last_;  // the last frame recorded
     nd::Scene scene_;
     nd::Controls keys_{4, nd::Projection::perspective};  // chapter 18's keys
     double last_time_ = 0.0;
