@@ -46,20 +46,21 @@ public:
     // (transform_boxes.comp). Vulkan 1.1 promises subgroups in compute
     // shaders, but of their operations only the basic ones; min and max are
     // "arithmetic", which nearly every device has, lavapipe included.
-    static void check_device(const vkt::Context& context) {
+    static bool available(const vkt::Context& context) {
         VkPhysicalDeviceSubgroupProperties subgroups{
             .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
         VkPhysicalDeviceProperties2 properties{
             .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, .pNext = &subgroups};
         vkGetPhysicalDeviceProperties2(context.physical, &properties);
-        const char* flag = "VK_SUBGROUP_FEATURE_ARITHMETIC_BIT";
-        if (!(subgroups.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) ||
-            !(subgroups.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT) ||
-            vkt::hidden_by_tests(flag))
-            throw vkt::Error(std::string("--raster binned needs subgroup arithmetic in "
-                                         "compute shaders (") +
-                             flag + "), which " + properties.properties.deviceName +
-                             " lacks: use --raster compute");
+        return (subgroups.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) &&
+               (subgroups.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT) &&
+               !vkt::hidden_by_tests("VK_SUBGROUP_FEATURE_ARITHMETIC_BIT");
+    }
+    static void check_device(const vkt::Context& context) {
+        if (!available(context))
+            throw vkt::Error(std::string("--raster binned needs subgroup arithmetic in compute "
+                                         "shaders (VK_SUBGROUP_FEATURE_ARITHMETIC_BIT), which ") +
+                             context.properties.deviceName + " lacks: use --raster compute");
     }
     // [/subgroups]
 

@@ -144,10 +144,15 @@ private:
         still_ = choice.still;
         verify_ = options.has("--verify");
         verify_raster_ = verify_ && options.text("--verify") == "raster";
+        scene_ = nd::make_scene(choice.scene, choice.n, still_);
         raster_name_ = options.text("--raster");
+        if (raster_name_ == "auto") {  // the tuning's choice for this device and scene
+            raster_name_ =
+                tuning_.auto_raster(scene_.line_count(), ch20::BinnedRaster::available(context));
+            raster_chosen_ = true;
+        }
         binned_raster_ = raster_name_ == "binned";
         if (binned_raster_) ch20::BinnedRaster::check_device(context);
-        scene_ = nd::make_scene(choice.scene, choice.n, still_);
         keys_ = nd::Controls(choice.n, choice.orthographic ? nd::Projection::orthographic
                                                            : nd::Projection::perspective);
     }
@@ -169,10 +174,10 @@ private:
     void describe() const {
         std::fprintf(stderr,
                      "20_ndim_compute: %s scene, n = %d, %zu objects, %u vertices, %u lines per "
-                     "frame, raster %s, eye at %.3g\n",
+                     "frame, raster %s%s, eye at %.3g\n",
                      scene_name_.c_str(), scene_.dim, scene_.objects.size(),
                      transform_->vertex_total(), transform_->line_total(), raster_name_.c_str(),
-                     scene_.eye);
+                     raster_chosen_ ? " (auto)" : "", scene_.eye);
         std::fprintf(stderr, "20_ndim_compute: %s\n", tuning_.describe().c_str());
     }
 
@@ -273,6 +278,7 @@ private:
     VkDevice device_;
     std::string scene_name_, raster_name_;
     bool still_ = false, verify_ = false, verify_raster_ = false, binned_raster_ = false;
+    bool raster_chosen_ = false;  // --raster auto chose raster_name_
     struct {
         uint32_t slot = 0;
         VkExtent2D extent{};
@@ -322,9 +328,9 @@ int main(int argc, char** argv) {
             {.name = "--raster",
              .type = vkt::OptionType::choice,
              .help = "draw the lines with the graphics pipeline, a compute pass, or a compute "
-                     "pass tile by tile",
-             .default_value = "graphics",
-             .choices = {"graphics", "compute", "binned"}},
+                     "pass tile by tile; auto: the fastest for this device and scene",
+             .default_value = "auto",
+             .choices = {"auto", "graphics", "compute", "binned"}},
             {.name = "--to-target",
              .type = vkt::OptionType::choice,
              .help = "how the compute rasterisers' pixels reach the colour target: a compute "
