@@ -251,6 +251,7 @@ private:
         const VkDeviceSize bytes = transform_->vertex_total() * sizeof(Projected);
         vkt::Buffer host = vkt::create_host_buffer(gpu_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
         vkt::one_time_submit(gpu_, [&](VkCommandBuffer cmd) {
+            if (binned_) binned_->clear_boxes(cmd);  // binds set 2, which its transform writes
             record_poses_and_transform(cmd, slot, push);
             vkt::buffer_barrier(cmd, projected, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,

@@ -162,6 +162,11 @@ vkt_chapter_test(chapter.20_ndim_compute.verify_many 20_ndim_compute
   ARGS ${offscreen} --scene many --dim 6 --verify cpu
   EXPECT "many scene, n = 6, 250 objects, 16000 vertices, 48000 lines per frame" "verify: 16000 vertices"
   "${VKT_20_VERIFY}")
+# --verify cpu with --raster binned: its transform pass also writes the
+# boxes (set 2), which the check must bind too.
+vkt_chapter_test(chapter.20_ndim_compute.verify_binned 20_ndim_compute
+  ARGS ${offscreen} --scene many --dim 6 --verify cpu --raster binned
+  EXPECT "raster binned" "${VKT_20_VERIFY}")
 vkt_chapter_test(chapter.20_ndim_compute.verify_ortho 20_ndim_compute
   ARGS ${headless} --scene many --dim 5 --projection orthographic --verify cpu --raster compute
   EXPECT "${VKT_20_VERIFY}")
