@@ -317,8 +317,8 @@ LastWrite last_write_in(VkImageLayout layout) {
                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT};
         case VK_IMAGE_LAYOUT_GENERAL:
             return {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
-        case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:
-            return {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
+        case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:  // a copy, a blit or a clear
+            return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
         default:
             throw Error(
                 "a chapter's target can be left only in COLOR_ATTACHMENT_OPTIMAL, GENERAL "
