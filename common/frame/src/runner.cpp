@@ -73,7 +73,10 @@ void ChapterRun::run(const RendererFactory& factory) {
     renderer_ = factory(context);
 
     Window* window = harness_.window();
-    if (window && spec_.overlay) {
+    // The overlay only where the reader can use it: a window run without
+    // --frames (with it, as headless, no input reaches the frames, and the
+    // pictures must be exact).
+    if (window && spec_.overlay && !harness_.fixed_step()) {
         if (overlay_available())
             overlay_ = std::make_unique<Overlay>(context);
         else
