@@ -179,23 +179,10 @@ public:
         };
         const VkPushConstantRange shadow_push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4)};
         shadow_layout_ = vkt::create_pipeline_layout(device_, {}, {&shadow_push, 1});
-        vkt::ShaderModule shadow_vertex = vkt::load_shader(device_, context.chapter, "shadow.vert");
-        // [shadow-pipeline]
-        // Depth only (no fragment shader, no colour attachment), nothing
-        // culled (a caster's back faces cast too), and the depth bias: each
-        // depth written is pushed away from the light by `constant` steps of
-        // the format plus `slope` times the triangle's depth slope, so that a
-        // lit surface does not shadow itself where the map's texels are
-        // coarser than the screen's pixels (shadow acne).
-        shadow_pipeline_ = vkt::create_graphics_pipeline(
-            device_, {.vertex = shadow_vertex,
-                      .layout = shadow_layout_,
-                      .bindings = {&binding, 1},
-                      .attributes = {attributes, 1},
-                      .depth_format = shadow_format_,
-                      .depth_bias_constant = float(context.options.number("--bias-constant")),
-                      .depth_bias_slope = float(context.options.number("--bias-slope"))});
-        // [/shadow-pipeline]
+        shadow_vertex_ = vkt::load_shader(device_, context.chapter, "shadow.vert");
+        bias_constant_ = float(context.options.number("--bias-constant"));
+        bias_slope_ = float(context.options.number("--bias-slope"));
+        create_shadow_pipeline();
 
         const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                        sizeof(glm::mat4) + sizeof(glm::vec4)};
@@ -217,11 +204,28 @@ public:
                      "22_shadows: %u cascades of %ux%u, splits at %.1f %.1f %.1f %.1f, bias %.2f "
                      "+ %.2f x slope%s\n",
                      cascades_, shadow_size, shadow_size, block_.splits[0], block_.splits[1],
-                     block_.splits[2], block_.splits[3],
-                     float(context.options.number("--bias-constant")),
-                     float(context.options.number("--bias-slope")),
+                     block_.splits[2], block_.splits[3], bias_constant_, bias_slope_,
                      colour_cascades_ ? ", cascades coloured" : "");
     }
+
+    // [overlay]
+    // In a window (chapter 21's overlay): the cascade colours, a setting of
+    // the uniform block, and the depth bias, baked into the shadow pipeline.
+    // One uniform buffer and one shadow pipeline serve every frame in
+    // flight, so a change waits for the GPU to finish them before it
+    // rewrites the one or makes the other again.
+    void overlay(vkt::OverlayPanel& panel) override {
+        const bool colours = panel.checkbox("Colour the cascades", colour_cascades_);
+        bool bias = panel.slider("Bias constant", bias_constant_, 0.0f, 8.0f);
+        bias = panel.slider("Bias slope", bias_slope_, 0.0f, 150.0f) || bias;
+        panel.text(std::to_string(cascades_) + " cascades (--cascades, at start-up)");
+        if (!colours && !bias) return;
+        VKT_CHECK(vkDeviceWaitIdle(device_));
+        block_.settings.y = colour_cascades_ ? 1u : 0u;
+        std::memcpy(frame_buffer_.mapped, &block_, sizeof block_);
+        if (bias) create_shadow_pipeline();
+    }
+    // [/overlay]
 
     // The camera and the cascades follow the target's shape; the GPU is idle.
     void resize(VkExtent2D extent) override {
@@ -328,10 +332,35 @@ private:
         vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT16);
     }
 
+    void create_shadow_pipeline() {
+        const VkVertexInputBindingDescription binding{0, sizeof(vkt::shapes::Vertex),
+                                                      VK_VERTEX_INPUT_RATE_VERTEX};
+        const VkVertexInputAttributeDescription position{0, 0, VK_FORMAT_R32G32B32_SFLOAT,
+                                                         offsetof(vkt::shapes::Vertex, position)};
+        // [shadow-pipeline]
+        // Depth only (no fragment shader, no colour attachment), nothing
+        // culled (a caster's back faces cast too), and the depth bias: each
+        // depth written is pushed away from the light by `constant` steps of
+        // the format plus `slope` times the triangle's depth slope, so that a
+        // lit surface does not shadow itself where the map's texels are
+        // coarser than the screen's pixels (shadow acne).
+        shadow_pipeline_ =
+            vkt::create_graphics_pipeline(device_, {.vertex = shadow_vertex_,
+                                                    .layout = shadow_layout_,
+                                                    .bindings = {&binding, 1},
+                                                    .attributes = {&position, 1},
+                                                    .depth_format = shadow_format_,
+                                                    .depth_bias_constant = bias_constant_,
+                                                    .depth_bias_slope = bias_slope_});
+        // [/shadow-pipeline]
+    }
+
     VkPhysicalDevice physical_;
     VkDevice device_;
     uint32_t cascades_;
     bool colour_cascades_;
+    float bias_constant_ = 0.0f, bias_slope_ = 0.0f;  // the shadow pipeline's depth bias
+    vkt::ShaderModule shadow_vertex_;                 // kept: the overlay remakes that pipeline
     std::vector<Draw> draws_;
     vkt::Buffer vertices_, indices_, frame_buffer_;
     FrameBlock block_{};
@@ -353,6 +382,7 @@ private:
 int main(int argc, char** argv) {
     // [spec]
     vkt::ChapterSpec spec{.name = "22_shadows", .title = "22 - Shadow maps"};
+    spec.overlay = true;  // in a window: the cascade colours and the depth bias, live
     spec.requirements.features = {VKT_FEATURE_12(separateDepthStencilLayouts)};
     spec.options = {
         {.name = "--cascades",
