@@ -39,7 +39,7 @@ struct Swapchain {
     // One per image: signalled when the image's frame is finished, waited for
     // by its present, and free again only once the image is acquired again.
     std::vector<vkt::Semaphore> ready_to_present;
-    bool readable = false;  // --screenshot can copy from the images (TRANSFER_SRC)
+    bool readable = false;    // --screenshot can copy from the images (TRANSFER_SRC)
     bool drawn_into = false;  // frames are cleared straight into the images, else copied in
 };
 // [/swapchain-struct]
@@ -159,7 +159,7 @@ void FrameLoop::create_swapchain(VkSwapchainKHR old) {
     // Straight in only where the image encodes our linear colour (an _SRGB
     // format) and, for --screenshot, can be read back.
     next.drawn_into = !harness_.options().copy_to_swapchain && next.readable == screenshot_ &&
-                  next.format == vkt::render_format_for(next.format);
+                      next.format == vkt::render_format_for(next.format);
     // OPAQUE: the window shows our colour, not what lies behind it. A surface
     // without it offers something else, and choose_composite_alpha takes the
     // first it has.
@@ -273,7 +273,7 @@ bool FrameLoop::draw_frame(uint64_t index) {
         .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
         .semaphore = slot.image_acquired,
         .stageMask = swapchain_ && swapchain_->drawn_into ? VK_PIPELINE_STAGE_2_CLEAR_BIT
-                                                      : VK_PIPELINE_STAGE_2_COPY_BIT,
+                                                          : VK_PIPELINE_STAGE_2_COPY_BIT,
     };
     const VkSemaphoreSubmitInfo signal{
         .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,

@@ -70,7 +70,6 @@ public:
             "19_ndim_gpu");
         still_ = choice.still;
         verify_ = options.has("--verify");
-        verify_frame_ = options.frames.value_or(1) - 1;
         if (verify_ && !context.features.has(VKT_FEATURE_10(vertexPipelineStoresAndAtomics)))
             throw vkt::Error(
                 "--verify writes from the vertex shader, which needs the "
@@ -245,7 +244,7 @@ public:
             std::memcpy(out + o * floats_per_object_, packed.data(), packed.size() * sizeof(float));
         }
         // [/write-transforms]
-        if (verify_ && frame.index == verify_frame_) verify(frame);
+        last_ = {frame.slot, frame.extent};  // what verify() checks
         invocations_.start_frame(frame.cmd, frame.slot);
 
         vkt::begin_rendering(frame.cmd, frame.target_view, frame.extent,
@@ -307,11 +306,14 @@ private:
     // [/draw]
 
     // [verify]
-    // --verify cpu: the same draws with the capture pipeline, in a pass with
-    // no attachments, on their own submit; then every vertex of every object
+    // --verify cpu, once the runner's loop is over (the GPU idle): the last
+    // frame's draws again with the capture pipeline, in a pass with no
+    // attachments, on their own submit; then every vertex of every object
     // the GPU wrote is compared with the CPU's transform and projection, both
     // the per-plane path and chapter 18's matrix (verify.hpp).
-    void verify(const vkt::Frame& frame) {
+    void verify() override {
+        if (!verify_) return;
+        const Last& frame = last_;
         std::memset(capture_.mapped, 0, size_t(capture_.size));
         vkt::one_time_submit(gpu_, [&](VkCommandBuffer cmd) {
             const VkRenderingInfo nothing{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
@@ -344,7 +346,10 @@ private:
     int n_ = 4;
     nd::Controls controls_{4, nd::Projection::perspective};  // chapter 18's keys
     bool still_ = false, benchmark_ = false, verify_ = false;
-    uint64_t verify_frame_ = 0;
+    struct Last {
+        uint32_t slot = 0;
+        VkExtent2D extent{};
+    } last_;  // the last frame recorded
     std::vector<double> cpu_ms_;
     nd::Scene scene_;
     std::vector<MeshRange> meshes_;

@@ -59,6 +59,7 @@ public:
     VkBuffer projected(uint32_t slot) const { return projected_[slot].buffer; }
     std::vector<VkBuffer> poses() const {
         std::vector<VkBuffer> buffers;
+        buffers.reserve(poses_.size());
         for (const vkt::Buffer& b : poses_) buffers.push_back(b.buffer);
         return buffers;
     }

@@ -43,7 +43,7 @@ struct Scene {
 
 void add_quad(Scene& scene, const glm::vec3 (&corners)[4], glm::vec3 colour, float striped) {
     const auto first = uint32_t(scene.vertices.size());
-    for (int i = 0; i < 4; ++i) scene.vertices.push_back({corners[i], colour, striped});
+    for (const glm::vec3& corner : corners) scene.vertices.push_back({corner, colour, striped});
     for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) scene.indices.push_back(first + i);
 }
 
@@ -158,11 +158,13 @@ public:
     void overlay(vkt::OverlayPanel& panel) override {
         int chosen = 0;
         std::vector<std::string> names;
+        names.reserve(offered_.size());
         for (size_t i = 0; i < offered_.size(); ++i) {
             names.push_back(std::to_string(unsigned(offered_[i])));
             if (offered_[i] == samples_) chosen = int(i);
         }
         std::vector<const char*> labels;
+        labels.reserve(names.size());
         for (const std::string& name : names) labels.push_back(name.c_str());
         bool changed = panel.choice("Samples", chosen, labels);
         bool shading = shading_ > 0.0f;

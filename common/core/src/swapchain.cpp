@@ -123,12 +123,13 @@ SwapchainPlan plan_swapchain(const SurfaceOffer& offer, const SwapchainRequest& 
     // read back where --screenshot wants them, and TRANSFER_DST for a chapter
     // that clears or copies into its frame.
     const bool srgb = plan.format.format == render_format_for(plan.format.format);
-    plan.drawn_into = request.draw_into && srgb && (offered & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) &&
-                    plan.readable == request.readable && (!request.transfer_into || copy_in);
+    plan.drawn_into = request.draw_into && srgb &&
+                      (offered & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) &&
+                      plan.readable == request.readable && (!request.transfer_into || copy_in);
     if (!plan.drawn_into && !copy_in) {
         const char* why =
             !request.draw_into ? "--copy-to-swapchain asks to copy"
-            : !srgb           ? "its format is not an _SRGB one"
+            : !srgb            ? "its format is not an _SRGB one"
             : request.transfer_into
                 ? "this chapter writes its frames with transfer commands"
                 : "--screenshot needs them readable (TRANSFER_SRC), which they are not";
@@ -137,7 +138,7 @@ SwapchainPlan plan_swapchain(const SurfaceOffer& offer, const SwapchainRequest& 
                     why + " (" + format_name(plan.format.format) + ")");
     }
     plan.usage = plan.drawn_into ? VkImageUsageFlags{VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT}
-                               : VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_DST_BIT};
+                                 : VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_DST_BIT};
     if (plan.drawn_into && request.transfer_into) plan.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     if (plan.readable) plan.usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     return plan;

@@ -51,8 +51,8 @@ public:
     // vkCreateSwapchainKHR has just retired `old` (a swapchain owner with the
     // semaphores its presents wait on): kept until its presents are over.
     template <class Old>
-    void retire(Old&& old) {
-        retired_.push_back({generation_, std::make_shared<std::decay_t<Old>>(std::move(old))});
+    void retire(Old old) {
+        retired_.push_back({generation_, std::make_shared<Old>(std::move(old))});
         ++generation_;
         first_present_.reset();
     }
