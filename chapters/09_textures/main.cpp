@@ -35,8 +35,7 @@ namespace {
 // The budget (--max-memory) is judged from the file's size and the image's
 // header, before a pixel is decoded: what the pixels will cost decoded,
 // staged and on the GPU with their mips.
-vkt::RgbaImage load_texture(const std::filesystem::path& path, uint64_t max_memory) {
-    vkt::MemoryBudget budget(max_memory);
+vkt::RgbaImage load_texture(const std::filesystem::path& path, vkt::MemoryBudget& budget) {
     budget.charge(vkt::readable_file_size(path), path.string());
     const std::vector<char> file = vkt::read_file(path);
     return vkt::decode_image(std::span(reinterpret_cast<const uint8_t*>(file.data()), file.size()),
@@ -235,7 +234,8 @@ public:
         std::filesystem::path file = options.has("--texture")
                                          ? std::filesystem::path(options.text("--texture"))
                                          : vkt::asset_path("textures/checker.png");
-        vkt::RgbaImage pixels = load_texture(file, uint64_t(options.integer("--max-memory")));
+        vkt::MemoryBudget budget(uint64_t(options.integer("--max-memory")));
+        vkt::RgbaImage pixels = load_texture(file, budget);
         const uint32_t max_size = context.properties.limits.maxImageDimension2D;
         if (pixels.width > max_size || pixels.height > max_size)
             throw vkt::Error(file.string() + ": larger than this device's " +
@@ -258,6 +258,11 @@ public:
             mips = "cpu";
         }
         // [/format-check]
+        // Mips made on the CPU are a chain in memory of its own before the
+        // staging copy, level 0 included: 4/3 of the pixels again.
+        if (mips == "cpu")
+            budget.charge(uint64_t(pixels.pixels.size()) * 4 / 3,
+                          file.string() + ": its mip chain, made on the CPU");
         texture_ = upload_texture(context, pixels, mips);
 
         // [sampler]
