@@ -203,12 +203,14 @@ bool jpeg_header(JpegReader& r) {
 // them (a component sampled at half the rate covers twice the pixels).
 uint64_t jpeg_component_blocks(const jpeg_decompress_struct& info, int c) {
     const jpeg_component_info& component = info.comp_info[c];
+    const uint64_t block_width = 8 * uint64_t(info.max_h_samp_factor);  // in pixels
+    const uint64_t block_height = 8 * uint64_t(info.max_v_samp_factor);
     const uint64_t across =
-        (uint64_t(info.image_width) * component.h_samp_factor + 8 * info.max_h_samp_factor - 1) /
-        (8 * uint64_t(info.max_h_samp_factor));
+        (uint64_t(info.image_width) * uint64_t(component.h_samp_factor) + block_width - 1) /
+        block_width;
     const uint64_t down =
-        (uint64_t(info.image_height) * component.v_samp_factor + 8 * info.max_v_samp_factor - 1) /
-        (8 * uint64_t(info.max_v_samp_factor));
+        (uint64_t(info.image_height) * uint64_t(component.v_samp_factor) + block_height - 1) /
+        block_height;
     return across * down;
 }
 

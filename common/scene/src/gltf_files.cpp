@@ -230,7 +230,11 @@ std::vector<unsigned char> decode_base64(std::string_view text) {
     int held = 0;
     for (size_t i = 0; i < length; ++i) {
         bits = (bits << 6 | uint32_t(base64_value(text[i]))) & 0xFFFFFFu;
-        if ((held += 6) >= 8) out.push_back(uint8_t(bits >> (held -= 8)));
+        held += 6;
+        if (held >= 8) {
+            held -= 8;
+            out.push_back(uint8_t(bits >> held));
+        }
     }
     return out;
 }
@@ -261,7 +265,9 @@ std::vector<char> decode_data_uris(std::vector<char> file, FileAccess& access,
             path + ": " + (found.image ? "image " : "buffer ") + std::to_string(found.index) +
             quoted_name(json_element_name(json, found.image ? "images" : "buffers", found.index));
         const std::string_view payload = text.substr(prefix->size());
-        access.budget->charge(payload.size() / 4 * 3 + 2, what + ": its data: URI, decoded");
+        // An image's bytes are copied once more, into tinygltf's Image.
+        access.budget->charge((found.image ? 2 : 1) * (payload.size() / 4 * 3 + 2),
+                              what + ": its data: URI, decoded");
         std::vector<unsigned char> bytes = decode_base64(payload);
         if (bytes.empty())
             throw Error(what + ": its data URI is invalid: its base64 decodes to no bytes");
