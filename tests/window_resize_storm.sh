@@ -25,6 +25,11 @@ for i in $(seq 0 $((resizes - 1))); do
 done
 resize "$window" 301 199
 echo "$(grep -c 'swapchain recreated' "$err") recreations for $resizes + 1 resize requests"
+# STORM_RETIREMENT: how old swapchains must have been retired, as the
+# recreation lines say it ("their present fences signal", "a later present ends").
+if [ -n "${STORM_RETIREMENT:-}" ] && ! grep -q "retired kept until $STORM_RETIREMENT" "$err"; then
+  fail "no recreation line says the old swapchains were kept until $STORM_RETIREMENT"
+fi
 close_with_wm "$window"
 grep -v '^\[validation' "$err" | grep -v -E 'swapchain recreated|presented a frame'
 expect_clean_exit "$shot" 301 199

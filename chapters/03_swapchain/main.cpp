@@ -1,14 +1,12 @@
-// Chapter 03: the swapchain and the frame loop.
-//
-// The harness (vkt/frame/harness.hpp) opens a window, a headless surface or
-// neither (--offscreen), the instance and device for it (chapters 01, 02), and
-// keeps the command line's promises (--frames, --screenshot, --benchmark).
+// Chapter 03: the swapchain and the frame loop. The harness (vkt/frame/harness.hpp)
+// opens a window, a headless surface or neither (--offscreen), the instance and
+// device (chapters 01, 02), and keeps --frames, --screenshot and --benchmark.
 // From the surface to the picture is this file: the swapchain, frame slots,
-// acquire, record, submit, present, recreation when the window changes. The
-// picture is the simplest there is: one colour, changing with time.
+// acquire, record, submit, present, recreation. The picture: one colour, changing.
 
 #include "vkt/core/memory.hpp"
 #include "vkt/core/swapchain.hpp"
+#include "vkt/core/swapchain_retirement.hpp"
 #include "vkt/frame/harness.hpp"
 #include "vkt/resources/readback.hpp"
 
@@ -42,7 +40,7 @@ struct Swapchain {
     // by its present, and free again only once the image is acquired again.
     std::vector<vkt::Semaphore> ready_to_present;
     bool readable = false;  // --screenshot can copy from the images (TRANSFER_SRC)
-    bool direct = false;    // frames are cleared straight into the images, else copied in
+    bool drawn_into = false;  // frames are cleared straight into the images, else copied in
 };
 // [/swapchain-struct]
 
@@ -91,7 +89,8 @@ private:
     vkt::Harness& harness_;
     const bool screenshot_;  // --screenshot: read back what each frame shows
     const vkt::Device& device_;
-    std::optional<Swapchain> swapchain_;  // none offscreen
+    std::optional<Swapchain> swapchain_;   // none offscreen
+    vkt::SwapchainRetirement retirement_;  // old swapchains, until their presents are over
     vkt::Image own_;  // our own _SRGB image, where frames do not go straight into the swapchain's
     std::vector<FrameSlot> slots_;
     std::optional<uint32_t> last_slot_;  // the slot of the last frame submitted
@@ -100,7 +99,8 @@ private:
 FrameLoop::FrameLoop(vkt::Harness& harness)
     : harness_(harness),
       screenshot_(!harness.options().screenshot.empty()),
-      device_(harness.device()) {
+      device_(harness.device()),
+      retirement_(harness.device(), harness.present_fences()) {
     if (harness.surface()) create_swapchain(VK_NULL_HANDLE);
     create_own_image();
 
@@ -158,7 +158,7 @@ void FrameLoop::create_swapchain(VkSwapchainKHR old) {
     if (next.readable) usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     // Straight in only where the image encodes our linear colour (an _SRGB
     // format) and, for --screenshot, can be read back.
-    next.direct = !harness_.options().copy_to_swapchain && next.readable == screenshot_ &&
+    next.drawn_into = !harness_.options().copy_to_swapchain && next.readable == screenshot_ &&
                   next.format == vkt::render_format_for(next.format);
     // OPAQUE: the window shows our colour, not what lies behind it. A surface
     // without it offers something else, and choose_composite_alpha takes the
@@ -193,14 +193,15 @@ void FrameLoop::create_swapchain(VkSwapchainKHR old) {
     VKT_CHECK(vkGetSwapchainImagesKHR(device_, handle, &n, next.images.data()));
     for (uint32_t i = 0; i < n; ++i)
         next.ready_to_present.push_back(vkt::create_semaphore(device_));
-    swapchain_ = std::move(next);  // the old swapchain, if any, is destroyed here
+    if (swapchain_) retirement_.retire(std::move(*swapchain_));  // kept until its presents end
+    swapchain_ = std::move(next);
     // [/create-swapchain]
 }
 
 // [own-image]
 void FrameLoop::create_own_image() {
     own_ = vkt::Image{};
-    if (swapchain_ && swapchain_->direct) return;  // frames go straight into the swapchain's
+    if (swapchain_ && swapchain_->drawn_into) return;  // frames go straight into the swapchain's
     // The _SRGB format with the swapchain's byte order, so that a plain copy
     // carries our bytes across unchanged; offscreen, R8G8B8A8_SRGB.
     const VkFormat format =
@@ -238,6 +239,7 @@ bool FrameLoop::draw_frame(uint64_t index) {
     VkFence done = slot.done;
     VKT_CHECK(vkWaitForFences(device_, 1, &done, VK_TRUE, UINT64_MAX));
     harness_.gpu_timer().collect(slot_index);  // --benchmark: that frame's GPU time
+    retirement_.slot_finished(slot_index);     // old swapchains proven free go
 
     // Which image is ours next. image_acquired is signalled once the
     // presentation engine has really let go of it; the call may return sooner.
@@ -253,6 +255,7 @@ bool FrameLoop::draw_frame(uint64_t index) {
         }
         vkt::check(acquired, "vkAcquireNextImageKHR");
         suboptimal = acquired == VK_SUBOPTIMAL_KHR;  // acquired: draw it, then recreate
+        retirement_.acquired(image_index, slot_index);
     }
     // Only now that this frame will be submitted: a fence reset before a
     // return above would never be signalled, and the next wait would hang.
@@ -269,7 +272,7 @@ bool FrameLoop::draw_frame(uint64_t index) {
     const VkSemaphoreSubmitInfo wait{
         .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
         .semaphore = slot.image_acquired,
-        .stageMask = swapchain_ && swapchain_->direct ? VK_PIPELINE_STAGE_2_CLEAR_BIT
+        .stageMask = swapchain_ && swapchain_->drawn_into ? VK_PIPELINE_STAGE_2_CLEAR_BIT
                                                       : VK_PIPELINE_STAGE_2_COPY_BIT,
     };
     const VkSemaphoreSubmitInfo signal{
@@ -304,6 +307,7 @@ bool FrameLoop::draw_frame(uint64_t index) {
     const VkSemaphore ready = swapchain_->ready_to_present[image_index];
     const VkPresentInfoKHR present{
         .sType = VK_STRUCTURE_TYPE_PRESENT_INFO_KHR,
+        .pNext = retirement_.present(image_index),  // a fence that says when it is over
         .waitSemaphoreCount = 1,
         .pWaitSemaphores = &ready,
         .swapchainCount = 1,
@@ -331,7 +335,7 @@ void FrameLoop::record(uint32_t slot_index, uint32_t image_index, double time) {
     };
     VKT_CHECK(vkBeginCommandBuffer(cmd, &begin));
     harness_.gpu_timer().begin(cmd, slot_index);
-    const bool direct = swapchain_ && swapchain_->direct;
+    const bool drawn_into = swapchain_ && swapchain_->drawn_into;
     const VkImage image = swapchain_ ? swapchain_->images[image_index] : VK_NULL_HANDLE;
 
     // [clear-colour]
@@ -341,16 +345,15 @@ void FrameLoop::record(uint32_t slot_index, uint32_t image_index, double time) {
     const VkClearColorValue colour{{0.5f + 0.5f * std::sin(t), 0.5f + 0.5f * std::sin(t + 2.094f),
                                     0.5f + 0.5f * std::sin(t + 4.189f), 1.0f}};
     // [/clear-colour]
-
     // [clear]
     // The image we clear: the swapchain's, or our own. Its old contents do not
     // matter (from UNDEFINED, the driver may drop them), but it must not be
     // written too early: the swapchain image not before the acquire semaphore,
     // which the submit waits for at the CLEAR stage, so the barrier starts
     // there; our own not before the last frame's copy (or read) of it.
-    const VkImage cleared = direct ? image : own_.image.get();
+    const VkImage cleared = drawn_into ? image : own_.image.get();
     transition(cmd, cleared, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-               direct ? VK_PIPELINE_STAGE_2_CLEAR_BIT : VK_PIPELINE_STAGE_2_COPY_BIT,
+               drawn_into ? VK_PIPELINE_STAGE_2_CLEAR_BIT : VK_PIPELINE_STAGE_2_COPY_BIT,
                VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
     const VkImageSubresourceRange whole{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     vkCmdClearColorImage(cmd, cleared, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &colour, 1, &whole);
@@ -362,12 +365,12 @@ void FrameLoop::record(uint32_t slot_index, uint32_t image_index, double time) {
     VkImageLayout layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
     VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_CLEAR_BIT;
     VkAccessFlags2 access = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-    if (!direct)  // our image, ready to be copied (or read back) once the clear is done
+    if (!drawn_into)  // our image, ready to be copied (or read back) once the clear is done
         transition(cmd, own_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
                    VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                    VK_ACCESS_2_TRANSFER_READ_BIT);
-    if (swapchain_ && !direct) {
+    if (swapchain_ && !drawn_into) {
         // The swapchain image, after the acquire semaphore (waited for at COPY).
         transition(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                    VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
@@ -400,7 +403,6 @@ void FrameLoop::record(uint32_t slot_index, uint32_t image_index, double time) {
                              slot.readback);
     }
     // [/read-back]
-
     // [to-present]
     // The layout presentation needs. Nothing after it in this command buffer
     // touches the image (NONE): the present waits for ready_to_present, which
@@ -417,11 +419,12 @@ void FrameLoop::recreate() {
     // A minimised window may be 0x0, and no swapchain can be: wait it out.
     if (!harness_.wait_while_minimised()) return;  // closed meanwhile
     harness_.take_resized();                       // this answers every resize so far
-    // Simple and safe: let the GPU finish everything that uses the old images.
+    // Let the GPU finish the frames in flight (they use our image and the old
+    // swapchain's); the presentation engine's hold on it is retirement_'s to watch.
     VKT_CHECK(vkDeviceWaitIdle(device_));
-    create_swapchain(swapchain_->handle);  // from the old one, which then goes
+    create_swapchain(swapchain_->handle);  // from the old one, which it retires
     create_own_image();                    // the size may have changed
-    harness_.note_recreated(swapchain_->extent);
+    harness_.note_recreated(swapchain_->extent, retirement_.kept());
 }
 // [/recreate]
 
@@ -430,7 +433,7 @@ vkt::Destination FrameLoop::destination() const {
     return {.swapchain_format = swapchain_->format,
             .present_mode = swapchain_->mode,
             .images = uint32_t(swapchain_->images.size()),
-            .drawn_into = swapchain_->direct,
+            .drawn_into = swapchain_->drawn_into,
             .extent = swapchain_->extent,
             .format = vkt::render_format_for(swapchain_->format)};
 }

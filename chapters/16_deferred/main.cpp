@@ -64,7 +64,6 @@ public:
           forward_path_(context.options.text("--path") == "forward"),
           light_count_(uint32_t(context.options.integer("--lights"))),
           verify_(context.options.has("--verify") ? context.options.text("--verify") : ""),
-          verify_frame_(context.options.frames.value_or(1) - 1),
           frame_layout_(create_frame_layout(context.device)),
           scene_(gpu_, frame_layout_),
           gbuffer_(context, scene_, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT),
@@ -91,7 +90,7 @@ public:
 
     void record(const vkt::Frame& frame) override {
         update(frame.slot, frame.extent, float(frame.time));
-        if (!verify_.empty() && frame.index == verify_frame_) verify(frame);
+        last_ = {frame.slot, frame.extent};  // what verify() checks
         const VkCommandBuffer cmd = frame.cmd;
         const VkDescriptorSet frame_set = frame_sets_[frame.slot];
         if (forward_path_) {
@@ -163,16 +162,18 @@ private:
     // [/update]
 
     // [verify]
-    // --verify: the checks of deferred_verify.hpp, on this frame. Lights
-    // n .. 2n - 1 of the buffer become the n lights lifted far out of reach.
-    void verify(const vkt::Frame& frame) {
+    // --verify: the checks of deferred_verify.hpp, on the last frame's scene,
+    // once the runner's loop is over and the GPU idle. Lights n .. 2n - 1 of
+    // that frame's buffer become the n lights lifted far out of reach.
+    void verify() override {
+        if (verify_.empty()) return;
         const uint32_t n = light_count_;
-        const VkDescriptorSet set = frame_sets_[frame.slot];
+        const VkDescriptorSet set = frame_sets_[last_.slot];
         std::vector<vkt::PointLight> lifted = lights_now_;
         for (vkt::PointLight& light : lifted) light.position.y += 1000.0f;
-        std::memcpy(static_cast<vkt::PointLight*>(lights_[frame.slot].mapped) + n, lifted.data(),
+        std::memcpy(static_cast<vkt::PointLight*>(lights_[last_.slot].mapped) + n, lifted.data(),
                     n * sizeof(vkt::PointLight));
-        const VkExtent2D e = frame.extent;
+        const VkExtent2D e = last_.extent;
         const GBuffer& g = gbuffer_.images();
         vkt::deferred::verify(
             verify_,
@@ -198,7 +199,10 @@ private:
     bool forward_path_;
     uint32_t light_count_;
     std::string verify_;  // the check, or empty
-    uint64_t verify_frame_;
+    struct {
+        uint32_t slot = 0;
+        VkExtent2D extent{};
+    } last_;  // the last frame recorded
     int32_t view_ = view_lit;
     // Declared in the order they are made: each part needs those above it.
     vkt::DescriptorSetLayout frame_layout_;

@@ -39,14 +39,14 @@ vkt::SurfaceOffer window() {
 
 // What the runner asks by default: draw straight in where possible.
 vkt::SwapchainRequest drawing() {
-    return {.extent = {800, 600}, .drawable = true};
+    return {.extent = {800, 600}, .draw_into = true};
 }
 
 }  // namespace
 
 TEST_CASE("a typical window: drawn into, with only the usages needed", "[swapchain]") {
     const vkt::SwapchainPlan plan = vkt::plan_swapchain(window(), drawing());
-    CHECK(plan.drawable);
+    CHECK(plan.drawn_into);
     CHECK_FALSE(plan.readable);
     CHECK(plan.usage == attach);  // no TRANSFER_DST: nothing is copied in
     CHECK(plan.format.format == VK_FORMAT_B8G8R8A8_SRGB);
@@ -61,7 +61,7 @@ TEST_CASE("a chapter that clears or copies into its frame gets TRANSFER_DST", "[
     vkt::SwapchainRequest request = drawing();
     request.transfer_into = true;
     const vkt::SwapchainPlan plan = vkt::plan_swapchain(window(), request);
-    CHECK(plan.drawable);
+    CHECK(plan.drawn_into);
     CHECK(plan.usage == (attach | copy_in));
 }
 
@@ -70,15 +70,15 @@ TEST_CASE("a screenshot adds TRANSFER_SRC where offered", "[swapchain]") {
     request.readable = true;
     const vkt::SwapchainPlan plan = vkt::plan_swapchain(window(), request);
     CHECK(plan.readable);
-    CHECK(plan.drawable);
+    CHECK(plan.drawn_into);
     CHECK(plan.usage == (attach | copy_out));
 }
 
 TEST_CASE("copied in with --copy-to-swapchain: no COLOR_ATTACHMENT", "[swapchain]") {
     vkt::SwapchainRequest request = drawing();
-    request.drawable = false;
+    request.draw_into = false;
     const vkt::SwapchainPlan plan = vkt::plan_swapchain(window(), request);
-    CHECK_FALSE(plan.drawable);
+    CHECK_FALSE(plan.drawn_into);
     CHECK(plan.usage == copy_in);
 }
 
@@ -87,7 +87,7 @@ TEST_CASE("no TRANSFER_DST usage", "[swapchain]") {
     offer.capabilities.supportedUsageFlags = attach | copy_out;
     SECTION("drawing straight in needs none") {
         const vkt::SwapchainPlan plan = vkt::plan_swapchain(offer, drawing());
-        CHECK(plan.drawable);
+        CHECK(plan.drawn_into);
         CHECK(plan.usage == attach);
     }
     SECTION("a chapter that clears into its frame cannot run, and is told why") {
@@ -99,7 +99,7 @@ TEST_CASE("no TRANSFER_DST usage", "[swapchain]") {
     }
     SECTION("--copy-to-swapchain cannot copy") {
         vkt::SwapchainRequest request = drawing();
-        request.drawable = false;
+        request.draw_into = false;
         REQUIRE_THROWS_WITH(vkt::plan_swapchain(offer, request),
                             ContainsSubstring("--copy-to-swapchain"));
     }
@@ -129,7 +129,7 @@ TEST_CASE("no _SRGB format (lavapipe's headless surface): copied in", "[swapchai
     vkt::SwapchainRequest request = drawing();
     request.readable = true;
     const vkt::SwapchainPlan plan = vkt::plan_swapchain(offer, request);
-    CHECK_FALSE(plan.drawable);  // our linear colours would be taken as encoded
+    CHECK_FALSE(plan.drawn_into);  // our linear colours would be taken as encoded
     CHECK(plan.usage == (copy_in | copy_out));
     CHECK(plan.extent.width == 800);
     CHECK(plan.extent.height == 600);
@@ -142,6 +142,6 @@ TEST_CASE("no TRANSFER_SRC: --screenshot reads our own target instead", "[swapch
     request.readable = true;
     const vkt::SwapchainPlan plan = vkt::plan_swapchain(offer, request);
     CHECK_FALSE(plan.readable);
-    CHECK_FALSE(plan.drawable);  // the frame goes through our target, which is read back
+    CHECK_FALSE(plan.drawn_into);  // the frame goes through our target, which is read back
     CHECK(plan.usage == copy_in);
 }

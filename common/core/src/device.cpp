@@ -71,6 +71,10 @@ bool can_present(VkPhysicalDevice device, uint32_t queue_family, VkSurfaceKHR su
            supported;
 }
 
+bool device_extension_available(VkPhysicalDevice device, const char* name) {
+    return !hidden_by_tests(name) && offers(extensions_of(device), name);
+}
+
 int device_type_score(VkPhysicalDeviceType type) {
     switch (type) {
         case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
@@ -283,7 +287,9 @@ Device::Device(const DeviceCandidate& chosen, const DeviceRequirements& requirem
         .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
         .ppEnabledExtensionNames = extensions.data(),
     };
+    enabled_.link(requirements.extension_features);
     VKT_CHECK(vkCreateDevice(physical_, &info, nullptr, &device_));
+    enabled_.link(nullptr);  // those structs are the caller's, and may go now
     vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
 }
 

@@ -19,14 +19,18 @@
 
 namespace vkt {
 
-bool instance_layer_available(const char* name) {
+uint32_t instance_layer_version(const char* name) {
     uint32_t count = 0;
     VKT_CHECK(vkEnumerateInstanceLayerProperties(&count, nullptr));
     std::vector<VkLayerProperties> layers(count);
     VKT_CHECK(vkEnumerateInstanceLayerProperties(&count, layers.data()));
     for (const auto& layer : layers)
-        if (std::strcmp(layer.layerName, name) == 0) return true;
-    return false;
+        if (std::strcmp(layer.layerName, name) == 0) return layer.specVersion;
+    return 0;
+}
+
+bool instance_layer_available(const char* name) {
+    return instance_layer_version(name) != 0;
 }
 
 bool instance_extension_available(const char* name) {

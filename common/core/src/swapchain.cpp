@@ -123,11 +123,11 @@ SwapchainPlan plan_swapchain(const SurfaceOffer& offer, const SwapchainRequest& 
     // read back where --screenshot wants them, and TRANSFER_DST for a chapter
     // that clears or copies into its frame.
     const bool srgb = plan.format.format == render_format_for(plan.format.format);
-    plan.drawable = request.drawable && srgb && (offered & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) &&
+    plan.drawn_into = request.draw_into && srgb && (offered & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) &&
                     plan.readable == request.readable && (!request.transfer_into || copy_in);
-    if (!plan.drawable && !copy_in) {
+    if (!plan.drawn_into && !copy_in) {
         const char* why =
-            !request.drawable ? "--copy-to-swapchain asks to copy"
+            !request.draw_into ? "--copy-to-swapchain asks to copy"
             : !srgb           ? "its format is not an _SRGB one"
             : request.transfer_into
                 ? "this chapter writes its frames with transfer commands"
@@ -136,9 +136,9 @@ SwapchainPlan plan_swapchain(const SurfaceOffer& offer, const SwapchainRequest& 
                                 "usage) and frames cannot be drawn into them: ") +
                     why + " (" + format_name(plan.format.format) + ")");
     }
-    plan.usage = plan.drawable ? VkImageUsageFlags{VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT}
+    plan.usage = plan.drawn_into ? VkImageUsageFlags{VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT}
                                : VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_DST_BIT};
-    if (plan.drawable && request.transfer_into) plan.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    if (plan.drawn_into && request.transfer_into) plan.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     if (plan.readable) plan.usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     return plan;
 }
@@ -152,7 +152,7 @@ Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR su
     extent_ = plan.extent;
     present_mode_ = plan.present_mode;
     readable_ = plan.readable;
-    const bool drawable = plan.drawable;
+    const bool drawn_into = plan.drawn_into;
 
     VkSwapchainCreateInfoKHR info{
         .sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR,
@@ -183,7 +183,7 @@ Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR su
     // [swapchain-views]
     // To render into an image, a pipeline sees it through a view: which
     // format, which mip levels and layers. Ours is the whole image as it is.
-    if (drawable) {
+    if (drawn_into) {
         for (VkImage image : images_) {
             VkImageViewCreateInfo view_info{
                 .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,

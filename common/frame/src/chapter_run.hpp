@@ -11,9 +11,12 @@
 //                     read-back
 
 #include "vkt/core/swapchain.hpp"
+#include "vkt/core/swapchain_retirement.hpp"
 #include "vkt/frame/harness.hpp"
 #include "vkt/frame/runner.hpp"
 #include "vkt/resources/readback.hpp"
+
+#include "overlay.hpp"
 
 #include <memory>
 #include <optional>
@@ -50,8 +53,11 @@ private:
     void create_target(VkExtent2D extent);
     void recreate_swapchain();
     // Whether frames are drawn straight into the swapchain's images (chapter
-    // 03: an _SRGB swapchain) rather than into target_ and copied in.
-    bool direct() const { return swapchain_ && swapchain_->drawable(); }
+    // 03: an _SRGB swapchain) rather than into own_ and copied in.
+    bool drawn_into() const { return swapchain_ && swapchain_->drawn_into(); }
+    // The stage after which this frame's target may be written: where the
+    // submit waits for the acquire semaphore, or after our image's last copy.
+    VkPipelineStageFlags2 target_ready() const;
     // What the start-up line and --benchmark say about where frames go.
     Destination destination() const;
 
@@ -64,11 +70,19 @@ private:
     const ChapterSpec& spec_;
     const Device& device_;
     std::unique_ptr<Swapchain> swapchain_;
-    Image target_;
-    ImageView target_storage_;  // with ChapterSpec::storage_target: see create_target
+    // Old swapchains until their presents are over; after swapchain_, so it is
+    // destroyed first, once the current swapchain's presents are over too.
+    SwapchainRetirement retirement_;
+    // The colour target's format and size, whichever image it is; our own
+    // image only where frames are not drawn straight into the swapchain's.
+    VkFormat format_ = VK_FORMAT_UNDEFINED;
+    VkExtent2D extent_{};
+    std::optional<Image> own_;
+    ImageView own_storage_;  // with ChapterSpec::storage_target: see create_target
     VkFormat storage_format_ = VK_FORMAT_UNDEFINED;  // Context::storage_format
     std::vector<FrameSlot> slots_;
     std::unique_ptr<Renderer> renderer_;
+    std::unique_ptr<Overlay> overlay_;   // in a window, for a chapter with ChapterSpec::overlay
     std::optional<uint32_t> last_slot_;  // the slot of the last frame submitted
 };
 

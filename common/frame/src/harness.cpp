@@ -4,6 +4,7 @@
 // (runner.cpp, presentation.cpp) each write their loop inside it.
 
 #include "vkt/frame/harness.hpp"
+#include "vkt/frame/overlay.hpp"
 
 #include "guarded.hpp"
 
@@ -82,7 +83,10 @@ void Harness::open_presentation() {
     } else if (!options_.headless && has_display()) {
         try {
             window_ = std::make_unique<Window>(
-                spec_.title, VkExtent2D{options_.width, options_.height}, spec_.input);
+                spec_.title, VkExtent2D{options_.width, options_.height},
+                spec_.overlay && overlay_available() && spec_.input != InputUse::mouse_look
+                    ? InputUse::pointer
+                    : spec_.input);
             presentation_ = Presentation::window;
         } catch (const Error& e) {
             std::fprintf(stderr, "%s: %s; running headless\n", spec_.name.c_str(), e.what());
@@ -100,13 +104,35 @@ void Harness::open_presentation() {
         extensions = {VK_KHR_SURFACE_EXTENSION_NAME, VK_EXT_HEADLESS_SURFACE_EXTENSION_NAME};
 
     const bool layer = instance_layer_available(validation_layer_name);
+    const bool validation = options_.validation.value_or(layer);
+    // Where there will be a swapchain: the instance extensions that
+    // VK_EXT_swapchain_maintenance1 (present fences) builds on, where offered.
+    // Not in a window under validation layers older than 1.3.290 (Debian 12
+    // has 1.3.239): with the extension on, they check a new swapchain's size
+    // against a fresh query of the window's, which a resize between our query
+    // and vkCreateSwapchainKHR makes a false error (the race of Vulkan-Docs
+    // issue 1144); later layers check it against our own query, as they do
+    // without the extension. There the fallback retires swapchains instead.
+    const bool racy_layer =
+        validation && presentation_ == Presentation::window &&
+        instance_layer_version(validation_layer_name) < VK_MAKE_API_VERSION(0, 1, 3, 290);
+    const bool surface_maintenance =
+        presentation_ != Presentation::offscreen && !racy_layer &&
+        instance_extension_available(VK_KHR_GET_SURFACE_CAPABILITIES_2_EXTENSION_NAME) &&
+        instance_extension_available(VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME) &&
+        !hidden_by_tests(VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME);
+    if (surface_maintenance) {
+        extensions.push_back(VK_KHR_GET_SURFACE_CAPABILITIES_2_EXTENSION_NAME);
+        extensions.push_back(VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME);
+    }
+
     if (options_.validation.value_or(false) && !layer)
         throw Error(
             "--validation: the Khronos validation layer is not installed "
             "(on Debian: apt install vulkan-validationlayers)");
     instance_ = std::make_unique<Instance>(InstanceConfig{
         .application_name = spec_.name,
-        .validation = options_.validation.value_or(layer),
+        .validation = validation,
         .extensions = extensions,
     });
 
@@ -137,6 +163,20 @@ void Harness::open_presentation() {
             surface_.reset();
             presentation_ = Presentation::offscreen;
         }
+    }
+    VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT maintenance{
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SWAPCHAIN_MAINTENANCE_1_FEATURES_EXT};
+    if (surface_ && surface_maintenance &&
+        device_extension_available(chosen.handle, VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME)) {
+        VkPhysicalDeviceFeatures2 query{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
+                                        .pNext = &maintenance};
+        vkGetPhysicalDeviceFeatures2(chosen.handle, &query);
+        present_fences_ = maintenance.swapchainMaintenance1 == VK_TRUE;
+    }
+    if (present_fences_) {
+        maintenance.pNext = requirements.extension_features;  // after the chapter's own
+        requirements.extension_features = &maintenance;
+        requirements.extensions.push_back(VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME);
     }
     device_ = std::make_unique<Device>(chosen, requirements);
 
@@ -220,10 +260,11 @@ void Harness::note_presented(VkExtent2D extent) {
                  extent.height);
 }
 
-void Harness::note_recreated(VkExtent2D extent) {
+void Harness::note_recreated(VkExtent2D extent, size_t kept) {
     presented_ = {};  // the next present is reported, whatever its size
-    std::fprintf(stderr, "%s: swapchain recreated at %ux%u\n", spec_.name.c_str(), extent.width,
-                 extent.height);
+    std::fprintf(stderr, "%s: swapchain recreated at %ux%u (%zu retired kept until %s)\n",
+                 spec_.name.c_str(), extent.width, extent.height, kept,
+                 present_fences_ ? "their present fences signal" : "a later present ends");
 }
 
 void Harness::finish(const Destination& where, const Readback* last_frame) {

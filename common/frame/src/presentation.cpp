@@ -21,7 +21,7 @@ void ChapterRun::create_swapchain() {
             SwapchainRequest{.extent = extent,
                              .uncapped = options_.benchmark,
                              .readable = !options_.screenshot.empty(),
-                             .drawable = !options_.copy_to_swapchain,
+                             .draw_into = !options_.copy_to_swapchain,
                              .transfer_into = spec_.transfers_into_target},
             VK_NULL_HANDLE);
         extent = swapchain_->extent();
@@ -127,50 +127,47 @@ void ChapterRun::create_target(VkExtent2D extent) {
                                     VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     if (spec_.storage_target)
         storage_format_ = storage_format_for(device_.physical(), format, usage);
-    target_storage_.reset();  // before the image it views
-    if (direct()) {
-        // Frames are drawn straight into the swapchain's images: no image of
-        // our own, only its size and format, which the chapter is told.
-        target_ = Image{};
-        target_.format = format;
-        target_.extent = extent;
-        return;
-    }
+    own_storage_.reset();  // before the image it views
+    own_.reset();
+    format_ = format;
+    extent_ = extent;
+    if (drawn_into()) return;  // frames go straight into the swapchain's images
     if (storage_format_ != VK_FORMAT_UNDEFINED)
-        target_ = create_storage_target(device_.physical(), device_, format, storage_format_,
-                                        extent, usage, target_storage_);
+        own_ = create_storage_target(device_.physical(), device_, format, storage_format_, extent,
+                                     usage, own_storage_);
     else
-        target_ = create_image_2d(device_.physical(), device_, format, extent, usage,
-                                  VK_IMAGE_ASPECT_COLOR_BIT);
+        own_ = create_image_2d(device_.physical(), device_, format, extent, usage,
+                               VK_IMAGE_ASPECT_COLOR_BIT);
 }
 
 void ChapterRun::recreate_swapchain() {
     if (!harness_.wait_while_minimised()) return;  // a 0x0 swapchain cannot exist
     harness_.take_resized();                       // this recreation answers any resize so far
-    // Simple and safe: let the GPU finish everything that uses the old images.
+    // The frames in flight use our target and the old images' views: let the
+    // GPU finish them. (The presentation engine's use of the old swapchain is
+    // not queue work, so this does not cover it: retirement_ does.)
     VKT_CHECK(vkDeviceWaitIdle(device_));
     auto next = std::make_unique<Swapchain>(
         device_.physical(), device_, harness_.surface(),
-        SwapchainRequest{.extent = harness_.window() ? harness_.wanted_extent() : target_.extent,
+        SwapchainRequest{.extent = harness_.window() ? harness_.wanted_extent() : extent_,
                          .uncapped = options_.benchmark,
                          .readable = !options_.screenshot.empty(),
                          .keep = swapchain_->format(),
-                         .drawable = !options_.copy_to_swapchain,
+                         .draw_into = !options_.copy_to_swapchain,
                          .transfer_into = spec_.transfers_into_target},
         swapchain_->get());
-    swapchain_ = std::move(next);  // the old swapchain is destroyed after the new one exists
+    retirement_.retire(std::move(swapchain_));  // kept until its presents are over
+    swapchain_ = std::move(next);
     // The chapter's pipelines were made for our target's format; it must not change.
-    if (render_format_for(swapchain_->format()) != target_.format)
+    if (render_format_for(swapchain_->format()) != format_)
         throw Error(std::string("the surface no longer offers a format with the byte order of ") +
-                    format_name(target_.format));
+                    format_name(format_));
     VkExtent2D extent = swapchain_->extent();
-    harness_.note_recreated(extent);
-    const bool resized =
-        extent.width != target_.extent.width || extent.height != target_.extent.height;
+    harness_.note_recreated(extent, retirement_.kept());
+    const bool resized = extent.width != extent_.width || extent.height != extent_.height;
     // A new size needs a new target; so does a swapchain we can no longer draw
     // into (or now can), e.g. one that came back in the _UNORM format.
-    if (resized || swapchain_->drawable() != (target_.image.get() == VK_NULL_HANDLE))
-        create_target(extent);
+    if (resized || swapchain_->drawn_into() == own_.has_value()) create_target(extent);
     if (resized) renderer_->resize(extent);
 }
 

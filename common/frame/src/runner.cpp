@@ -20,7 +20,8 @@ ChapterRun::ChapterRun(Harness& harness)
     : harness_(harness),
       options_(harness.options()),
       spec_(harness.spec()),
-      device_(harness.device()) {
+      device_(harness.device()),
+      retirement_(harness.device(), harness.present_fences()) {
     create_swapchain();  // and our colour target
 
     for (uint32_t i = 0; i < frames_in_flight; ++i) {
@@ -43,18 +44,18 @@ ChapterRun::ChapterRun(Harness& harness)
 }
 
 Destination ChapterRun::destination() const {
-    Destination where{.extent = target_.extent, .format = target_.format};
+    Destination where{.extent = extent_, .format = format_};
     if (swapchain_) {
         where.swapchain_format = swapchain_->format();
         where.present_mode = swapchain_->present_mode();
         where.images = uint32_t(swapchain_->images().size());
-        where.drawn_into = swapchain_->drawable();
+        where.drawn_into = swapchain_->drawn_into();
     }
     return where;
 }
 
 void ChapterRun::run(const RendererFactory& factory) {
-    renderer_ = factory(Context{
+    const Context context{
         .options = options_,
         .chapter = spec_.name,
         .instance = harness_.instance(),
@@ -62,15 +63,23 @@ void ChapterRun::run(const RendererFactory& factory) {
         .device = device_,
         .queue = device_.queue(),
         .queue_family = device_.queue_family(),
-        .color_format = target_.format,
+        .color_format = format_,
         .storage_format = storage_format_,
-        .extent = target_.extent,
+        .extent = extent_,
         .frames_in_flight = frames_in_flight,
         .properties = device_.properties(),
         .features = device_.features(),
-    });
+    };
+    renderer_ = factory(context);
 
     Window* window = harness_.window();
+    if (window && spec_.overlay) {
+        if (overlay_available())
+            overlay_ = std::make_unique<Overlay>(context);
+        else
+            std::fprintf(stderr, "%s: no overlay: this build has no Dear ImGui\n",
+                         spec_.name.c_str());
+    }
     for (uint64_t index = 0;;) {
         const Harness::Next next = harness_.next_frame(index);
         if (next == Harness::Next::stop) break;
@@ -92,6 +101,7 @@ void ChapterRun::run(const RendererFactory& factory) {
 
     VKT_CHECK(vkDeviceWaitIdle(device_));
     harness_.finish(destination(), last_slot_ ? &slots_[*last_slot_].readback : nullptr);
+    if (last_slot_) renderer_->verify();  // checks on the last frame, outside the loop
     renderer_.reset();
 }
 
@@ -104,6 +114,7 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
     VkFence done = slot.done;
     VKT_CHECK(vkWaitForFences(device_, 1, &done, VK_TRUE, UINT64_MAX));
     harness_.gpu_timer().collect(slot_index);
+    retirement_.slot_finished(slot_index);  // old swapchains whose presents are over go now
 
     uint32_t image_index = 0;
     bool suboptimal = false;  // an image was acquired, but recreate after this frame
@@ -116,18 +127,30 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
         }
         check(result, "vkAcquireNextImageKHR");
         suboptimal = result == VK_SUBOPTIMAL_KHR;
+        retirement_.acquired(image_index, slot_index);
     }
     VKT_CHECK(vkResetFences(device_, 1, &done));  // only now that we will submit
 
     // The chapter draws into the acquired swapchain image itself where it can,
     // else into our own image, which record() then copies into the swapchain's.
-    const bool straight_in = direct();
+    const bool straight = drawn_into();
+    if (overlay_)  // the reader's changes, before the frame that shows them
+        overlay_->build(input, extent_, time,
+                        [&](OverlayPanel& panel) { renderer_->overlay(panel); });
     VKT_CHECK(vkResetCommandPool(device_, slot.pool, 0));
     record(slot, image_index,
-           Frame{slot.cmd, straight_in ? swapchain_->images()[image_index] : target_.image.get(),
-                 straight_in ? swapchain_->view(image_index) : target_.view.get(),
-                 straight_in ? VK_NULL_HANDLE : target_storage_.get(), target_.extent, index, time,
-                 slot_index, input, harness_.gpu_timer() ? &harness_.gpu_timer() : nullptr});
+           Frame{.cmd = slot.cmd,
+                 .target = straight ? swapchain_->images()[image_index] : own_->image.get(),
+                 .target_view = straight ? swapchain_->view(image_index) : own_->view.get(),
+                 .target_storage = straight ? VK_NULL_HANDLE : own_storage_.get(),
+                 .extent = extent_,
+                 .target_layout = spec_.target_layout,
+                 .target_ready = target_ready(),
+                 .index = index,
+                 .time = time,
+                 .slot = slot_index,
+                 .input = input,
+                 .timer = harness_.gpu_timer() ? &harness_.gpu_timer() : nullptr});
 
     // Submit: wait for the acquired image before the first write to it (the
     // chapter's drawing, or our copy), signal the image's own ready_to_present
@@ -135,8 +158,7 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
     VkSemaphoreSubmitInfo wait{
         .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
         .semaphore = slot.image_acquired,
-        .stageMask = straight_in ? VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT
-                                 : VK_PIPELINE_STAGE_2_COPY_BIT,
+        .stageMask = target_ready(),
     };
     VkSemaphoreSubmitInfo signal{
         .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
@@ -158,13 +180,14 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
     };
     VKT_CHECK(vkQueueSubmit2(device_.queue(), 1, &submit, slot.done));
     last_slot_ = slot_index;
-    if (!swapchain_) harness_.note_presented(target_.extent);
+    if (!swapchain_) harness_.note_presented(extent_);
 
     if (swapchain_) {
         VkSwapchainKHR swapchain = swapchain_->get();
         VkSemaphore ready = swapchain_->ready_to_present(image_index);
         VkPresentInfoKHR present{
             .sType = VK_STRUCTURE_TYPE_PRESENT_INFO_KHR,
+            .pNext = retirement_.present(image_index),  // a present fence, where offered
             .waitSemaphoreCount = 1,
             .pWaitSemaphores = &ready,
             .swapchainCount = 1,
@@ -173,7 +196,7 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
         };
         VkResult result = vkQueuePresentKHR(device_.queue(), &present);
         if (result != VK_ERROR_OUT_OF_DATE_KHR) check(result, "vkQueuePresentKHR");
-        harness_.note_presented(target_.extent);
+        harness_.note_presented(extent_);
         const bool resized = harness_.take_resized();
         if (suboptimal || result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR ||
             resized)
@@ -190,44 +213,58 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
     };
     VKT_CHECK(vkBeginCommandBuffer(cmd, &begin));
     harness_.gpu_timer().begin(cmd, frame.slot);
-    const bool straight_in = direct();
+    const bool straight = drawn_into();
     const bool screenshot = !options_.screenshot.empty();
     // --screenshot reads back what each frame presents: the swapchain image
     // where the surface lets us read it, else our target.
     const bool read_swapchain = screenshot && swapchain_ && swapchain_->readable();
 
     // The image the chapter draws into, whose old contents do not matter
-    // (UNDEFINED). Our own target: the previous frame's copy must have read it
-    // before we overwrite it. A swapchain image: the acquire semaphore, which
-    // the submit waits for at the colour-output stage, says when.
-    image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_UNDEFINED,
-                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                  straight_in ? VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT
-                              : VK_PIPELINE_STAGE_2_COPY_BIT,
-                  VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
+    // (UNDEFINED), into the layout the chapter asked for. Our own target: the
+    // previous frame's copy must have read it before we overwrite it. A
+    // swapchain image: the acquire semaphore, which the submit waits for at
+    // the same stage, says when.
+    if (frame.target_layout != VK_IMAGE_LAYOUT_UNDEFINED) {
+        const LastWrite first = last_write_in(frame.target_layout);  // and its reads
+        const VkAccessFlags2 reads = frame.target_layout == VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL
+                                         ? VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT
+                                         : VK_ACCESS_2_NONE;
+        image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_UNDEFINED, frame.target_layout,
+                      frame.target_ready, VK_ACCESS_2_NONE, first.stage, first.access | reads);
+    }
 
     renderer_->record(frame);  // the chapter draws
+    VkImageLayout left_in = renderer_->target_layout_after(frame);
+    LastWrite last = last_write_in(left_in);
 
     // GPU time ends here: what follows is presentation, not the chapter's cost.
     harness_.gpu_timer().end(cmd, frame.slot);
 
+    if (overlay_) {
+        // Over the finished frame, in the layout for drawing: its last write
+        // done and visible before the overlay's rendering loads its pixels.
+        image_barrier(
+            cmd, frame.target, left_in, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, last.stage,
+            last.access, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+            VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+        overlay_->record(cmd, frame.slot, frame.target_view, frame.extent);
+        left_in = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        last = last_write_in(left_in);
+    }
+
     // Our target: the chapter's writes must be finished and visible before we
     // copy or read it (and before the next frame's barrier, which waits for
     // the COPY stage, overwrites it).
-    if (!straight_in)
-        image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                      VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                      VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
-                      VK_ACCESS_2_TRANSFER_READ_BIT);
+    if (!straight)
+        image_barrier(cmd, frame.target, left_in, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, last.stage,
+                      last.access, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
 
     if (swapchain_) {
         VkImage image = swapchain_->images()[image_index];
-        VkImageLayout layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
-        VkAccessFlags2 access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
-        if (!straight_in) {
+        VkImageLayout layout = left_in;  // drawn straight in: where the chapter left it
+        VkPipelineStageFlags2 stage = last.stage;
+        VkAccessFlags2 access = last.access;
+        if (!straight) {
             // Copy our target in: after the acquire semaphore (waited for at the
             // COPY stage), make the image a copy destination, then copy.
             image_barrier(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -260,13 +297,34 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
                       VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE);
     }
     if (screenshot && !read_swapchain)
-        record_readback(device_.physical(), device_, cmd, frame.target, target_.format,
-                        frame.extent, slot.readback);
+        record_readback(device_.physical(), device_, cmd, frame.target, format_, frame.extent,
+                        slot.readback);
 
     VKT_CHECK(vkEndCommandBuffer(cmd));
 }
 
+VkPipelineStageFlags2 ChapterRun::target_ready() const {
+    return drawn_into() ? VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT
+                        : VK_PIPELINE_STAGE_2_COPY_BIT;
+}
+
 }  // namespace detail
+
+LastWrite last_write_in(VkImageLayout layout) {
+    switch (layout) {
+        case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL:
+            return {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT};
+        case VK_IMAGE_LAYOUT_GENERAL:
+            return {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+        case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:
+            return {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
+        default:
+            throw Error(
+                "a chapter's target can be left only in COLOR_ATTACHMENT_OPTIMAL, GENERAL "
+                "or TRANSFER_DST_OPTIMAL");
+    }
+}
 
 int run_chapter(int argc, char** argv, const ChapterSpec& spec, const RendererFactory& factory) {
     return run_in_harness(argc, argv, spec, detail::frames_in_flight, [&](Harness& harness) {

@@ -53,6 +53,8 @@ public:
     VkBool32& operator[](const Feature& feature);
     bool has(const Feature& feature) const;
     VkPhysicalDeviceFeatures2* head() { return &features_; }
+    // Links `next` (extension feature structs) after the core ones, or unlinks them (nullptr).
+    void link(void* next) { features13_.pNext = next; }
 
 private:
     VkPhysicalDeviceFeatures2 features_{};
@@ -76,6 +78,11 @@ struct DeviceRequirements {
     // uses, e.g. VKT_PORTABILITY_FEATURE(triangleFans): a portability device
     // without one is unsuitable, and says which (vkt/core/portability.hpp).
     std::vector<PortabilityFeature> portability_features;
+    // Feature structs of extensions (VkPhysicalDevice...FeaturesEXT/KHR, their
+    // members set to what is wanted), linked through their pNext: appended to
+    // the feature chain that vkCreateDevice is given. The caller keeps them alive
+    // until the Device is created, and names their extensions above.
+    void* extension_features = nullptr;
 };
 
 // What we learned about one physical device.
@@ -112,6 +119,9 @@ int device_score(const DeviceCandidate& candidate);
 // the surface. A query that fails (some loaders answer a surface of an
 // extension the driver lacks with an error) counts as "no".
 bool can_present(VkPhysicalDevice device, uint32_t queue_family, VkSurfaceKHR surface);
+
+// Whether the device offers the extension (and VKT_HIDE_FEATURES does not hide it).
+bool device_extension_available(VkPhysicalDevice device, const char* name);
 
 // Everything vkEnumeratePhysicalDevices reports, each with its verdict.
 // surface may be VK_NULL_HANDLE (offscreen: no present support needed).

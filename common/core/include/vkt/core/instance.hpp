@@ -15,6 +15,8 @@ namespace vkt {
 inline constexpr const char* validation_layer_name = "VK_LAYER_KHRONOS_validation";
 
 bool instance_layer_available(const char* name);
+// The layer's Vulkan version (VkLayerProperties::specVersion), 0 if not installed.
+uint32_t instance_layer_version(const char* name);
 bool instance_extension_available(const char* name);
 
 // Counts what the validation layer reported. A chapter run that saw any

@@ -41,7 +41,7 @@ struct SwapchainRequest {
     bool uncapped = false;                // --benchmark: do not wait for the display
     bool readable = false;                // --screenshot: images may be copied from
     VkFormat keep = VK_FORMAT_UNDEFINED;  // on recreation: the format we had
-    bool drawable = false;                // draw straight into the images where we can
+    bool draw_into = false;               // draw straight into the images where we can
     // The chapter writes its frame with transfer commands (a clear, a copy),
     // so an image it draws straight into needs TRANSFER_DST too.
     bool transfer_into = false;
@@ -67,7 +67,7 @@ struct SwapchainPlan {
     VkImageUsageFlags usage = 0;
     VkSurfaceTransformFlagBitsKHR transform = VK_SURFACE_TRANSFORM_IDENTITY_BIT_KHR;
     VkCompositeAlphaFlagBitsKHR composite_alpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
-    bool drawable = false;  // frames are drawn straight into the images
+    bool drawn_into = false;  // frames are drawn straight into the images
     bool readable = false;  // the images may be copied from
 };
 
@@ -92,7 +92,7 @@ public:
     // Whether the images are drawn into directly: asked for, the format is the
     // _SRGB one the chapters render in, and the surface allows it. Then each
     // image has a view for rendering; otherwise frames are copied in.
-    bool drawable() const { return !views_.empty(); }
+    bool drawn_into() const { return !views_.empty(); }
     VkImageView view(uint32_t image) const { return views_[image]; }
     // Signalled when the image's frame is rendered; presenting it waits on it.
     // One per swapchain image, not per frame in flight: the presentation engine

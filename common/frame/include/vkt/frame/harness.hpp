@@ -31,6 +31,10 @@ struct ChapterSpec {
     DeviceRequirements requirements;
     std::vector<OptionSpec> options;  // the chapter's own flags (--model, --lights, ...)
     InputUse input = InputUse::none;  // what input the chapter wants in a window (chapter 11)
+    // The on-screen overlay of the chapter's settings (Renderer::overlay,
+    // chapter 21), in a window only; its CMake call says OVERLAY too, for the
+    // overlay's shaders. The window then reports the pointer (InputUse::pointer).
+    bool overlay = false;
     // The chapter may write its frames from a compute shader: give our own
     // target a storage view (Frame::target_storage, chapter 20). Only where
     // asked for, since a storage usage can cost a colour target its
@@ -41,6 +45,11 @@ struct ChapterSpec {
     // TRANSFER_DST usage, which the specification does not promise. Where the
     // surface lacks it, the frame goes into our own target instead.
     bool transfers_into_target = false;
+    // The layout record() wants the target in (Frame::target_layout): the
+    // runner's barrier takes it there from UNDEFINED. A chapter whose first
+    // write differs from frame to frame asks for UNDEFINED and makes that
+    // barrier itself, so that no barrier undoes another (chapter 20).
+    VkImageLayout target_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     // Checks between the chapter's own flags (two that contradict each other),
     // run right after parsing, before any Vulkan object exists: throw
     // UsageError, and the chapter exits with status 2 like any bad argument.
@@ -81,6 +90,11 @@ public:
     VkSurfaceKHR surface() const { return surface_; }  // VK_NULL_HANDLE offscreen
     Window* window() const { return window_.get(); }   // nullptr unless in a window
     bool validation() const { return instance_->validation(); }
+    // Whether each present can carry a fence that says when it is over
+    // (VK_EXT_swapchain_maintenance1, enabled where the instance and device
+    // offer it): how a retired swapchain is known to be free
+    // (vkt/core/swapchain_retirement.hpp).
+    bool present_fences() const { return present_fences_; }
     std::shared_ptr<const ValidationCounts> counts() const { return instance_->counts(); }
 
     // The loop. Once before each frame: polls the window, and says whether to
@@ -112,7 +126,8 @@ public:
     // "presented a frame at WxH" for the first frame of each size, and
     // "swapchain recreated at WxH": the events the window tests wait for.
     void note_presented(VkExtent2D extent);
-    void note_recreated(VkExtent2D extent);
+    // kept: retired swapchains still waiting for their presents to end.
+    void note_recreated(VkExtent2D extent, size_t kept);
     // After the loop, the GPU idle: --benchmark's last GPU times and its JSON,
     // and --screenshot's PNG from the last frame's read-back (null if no frame
     // was drawn).
@@ -129,6 +144,7 @@ private:
     std::unique_ptr<Instance> instance_;
     SurfaceHandle surface_;
     std::unique_ptr<Device> device_;
+    bool present_fences_ = false;
     GpuTimer gpu_timer_;  // after device_: destroyed before it
     double start_seconds_ = 0;
     uint64_t last_drawn_ = 0;

@@ -6,10 +6,12 @@
 //
 // The contract with a chapter: each frame, record() gets a command buffer and
 // the frame's colour target in an _SRGB format (the acquired swapchain image
-// where its format allows, else an image of our own), already in
-// VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL with undefined contents. record()
-// draws into it and leaves it in COLOR_ATTACHMENT_OPTIMAL; the runner then
-// presents it, copies our own into the swapchain image, or keeps it offscreen.
+// where its format allows, else an image of our own), with undefined contents,
+// in the layout the frame names (Frame::target_layout: the chapter's
+// ChapterSpec::target_layout, COLOR_ATTACHMENT_OPTIMAL unless it asks for
+// another). record() draws into it and says the layout it leaves it in
+// (Renderer::target_layout_after); the runner takes it from there: presents
+// it, copies our own into the swapchain image, or keeps it offscreen.
 // Where the chapter asks for it (ChapterSpec::storage_target), a frame drawn
 // into our own target also carries a storage view of it
 // (Frame::target_storage), for a compute pass that writes the pixels itself.
@@ -19,6 +21,7 @@
 #include "vkt/frame/gpu_timer.hpp"
 #include "vkt/frame/harness.hpp"
 #include "vkt/frame/input.hpp"
+#include "vkt/frame/overlay.hpp"
 #include "vkt/resources/upload.hpp"
 
 #include <functional>
@@ -62,6 +65,13 @@ struct Frame {
     // Context::storage_format is VK_FORMAT_UNDEFINED.
     VkImageView target_storage;
     VkExtent2D extent;
+    // The layout `target` is in as record() begins. UNDEFINED (a chapter
+    // whose ChapterSpec::target_layout asks for it): untouched, and the
+    // chapter's first barrier on it must start at `target_ready`, the stage
+    // after which it may be written (where the acquire semaphore is waited
+    // for, or the last frame's copy of our own image is done).
+    VkImageLayout target_layout;
+    VkPipelineStageFlags2 target_ready;
     uint64_t index;  // 0, 1, 2, ...
     double time;    // seconds: index / 60 headless or with --frames (reproducible), else wall clock
     uint32_t slot;  // which frame in flight, 0 .. frames_in_flight - 1
@@ -78,10 +88,32 @@ class Renderer {
 public:
     virtual ~Renderer() = default;
     virtual void record(const Frame& frame) = 0;
+    // The layout record() left frame.target in, its last write made by the
+    // stage that layout implies (vkt::last_write_in): COLOR_ATTACHMENT_OPTIMAL
+    // by the colour output, GENERAL by a compute shader, TRANSFER_DST_OPTIMAL
+    // by a copy. Asked after each record().
+    virtual VkImageLayout target_layout_after(const Frame&) const {
+        return VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    }
     // The colour target changed size (the window was resized); the GPU is idle.
     virtual void resize(VkExtent2D) {}
+    // Chapter 21's overlay, in a window: the chapter's settings as widgets,
+    // each bound to a value it owns (vkt/frame/overlay.hpp). Called before
+    // record() each frame, so a change shows in that frame.
+    virtual void overlay(OverlayPanel&) {}
+    // Once, after the last frame, the GPU idle: where a check that submits
+    // GPU work of its own (--verify) runs, never inside record().
+    virtual void verify() {}
 };
 // [/renderer-contract]
+
+// Where a target left in `layout` had its last write: the stage and access
+// a barrier after record() must wait for. Throws Error for another layout.
+struct LastWrite {
+    VkPipelineStageFlags2 stage;
+    VkAccessFlags2 access;
+};
+LastWrite last_write_in(VkImageLayout layout);
 
 using RendererFactory = std::function<std::unique_ptr<Renderer>(const Context&)>;
 
