@@ -20,6 +20,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -219,5 +220,30 @@ TEST_CASE("gltf budget: a file a URI names is charged before it is read", "[gltf
     CHECK_THAT(
         load_error(model, 12u << 20),
         ContainsSubstring("external.gltf: buffer 0 (\"big\"): URI \"big.bin\": needs 16 MiB"));
+    CHECK(load_error(model, 32u << 20).empty());
+}
+
+TEST_CASE("gltf budget: a .glb's data: URI is left to tinygltf and charged as its copies",
+          "[gltf][budget]") {
+    const Folder folder("glb_data_uri");
+    // The 4 MiB .gltf above as a .glb's JSON chunk (no BIN chunk).
+    const fs::path gltf = big_data_uri_model(folder.dir / "big.gltf", 3 << 20);
+    std::string json;
+    {
+        std::ifstream in(gltf, std::ios::binary);
+        json.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    while (json.size() % 4) json += ' ';
+    std::string glb = "glTF";
+    for (const uint32_t word : {2u, uint32_t(20 + json.size()), uint32_t(json.size())})
+        for (int i = 0; i < 4; ++i) glb += char(uint8_t(word >> (8 * i)));
+    glb += "JSON" + json;
+    const fs::path model = write_text(folder.dir / "big.glb", glb);
+    // The file (4 MiB), then 5 times its JSON's text (20 MiB): nlohmann's
+    // copy, tinygltf's, the substring it decodes, the bytes twice.
+    CHECK_THAT(load_error(model, 16u << 20),
+               ContainsSubstring("big.glb: its JSON, parsed (") &&
+                   ContainsSubstring("values at most): needs 20 MiB, which would bring what this "
+                                     "file needs to 24 MiB, past the limit of 16 MiB"));
     CHECK(load_error(model, 32u << 20).empty());
 }
