@@ -12,6 +12,14 @@
 //   huge_claim.png           a PNG whose header says 16384 x 16384 (1 GiB of
 //                            pixels) and whose one IDAT holds 12 bytes
 //   huge_claim.gltf          a triangle whose material's texture is huge_claim.png
+//   big_data_uri.gltf        a triangle whose buffer is a 50 MiB base64 data: URI
+//                            (37.5 MiB of bytes, zeros after the triangle's):
+//                            tinygltf alone peaked at 388 MB decoding it
+//   huge_claim.jpg           a JPEG whose header says 8192 x 8192 (inside the
+//                            budget: 939 MiB) and whose scan holds 16 bytes
+//   jpeg_claim.gltf          a triangle whose material's texture is huge_claim.jpg
+//   flat_4096.jpg            a true JPEG of 4096 x 4096 flat grey in 64 KiB: what
+//                            the JPEG check lets through, and a budget of 235 MiB
 //
 //   vkt_make_hostile_files OUT_DIR [gltf]   (gltf: only the two kinds of glTF
 //                                            finding, for the fuzzer's regressions)
@@ -136,6 +144,59 @@ std::string textured_triangle(const std::string& image) {
 )";
 }
 
+// A triangle (positions, then 16-bit indices) whose buffer is a data: URI of
+// `size` bytes, the rest zeros: written piece by piece, never held whole.
+void write_big_data_uri(const fs::path& path, uint64_t size) {
+    std::ofstream out(path, std::ios::binary);
+    out << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+  "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+  "buffers": [{"byteLength": )"
+        << size << R"(, "uri": "data:application/octet-stream;base64,)";
+    // The triangle's 44 bytes and one zero: 60 characters, then 'A's (zeros).
+    out << "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAAA";
+    const std::string zeros(65536, 'A');
+    for (uint64_t left = (size - 45) / 3 * 4; left > 0;) {
+        const uint64_t n = std::min<uint64_t>(left, zeros.size());
+        out.write(zeros.data(), std::streamsize(n));
+        left -= n;
+    }
+    out << "\"}]}\n";
+    if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+// A baseline grey JPEG whose frame header (SOF0) says width x height, with
+// one Huffman table of a single 1-bit code for DC and one for AC: each 8x8
+// block is two bits ("no change", "end of block"), a flat grey picture, and
+// `blocks` of them are in its scan. Written byte by byte: no encoder needed.
+Bytes jpeg_claiming(uint16_t width, uint16_t height, size_t blocks) {
+    Bytes jpeg = {0xFF, 0xD8};  // SOI
+    auto segment = [&](uint8_t marker, const Bytes& data) {
+        jpeg.insert(jpeg.end(),
+                    {0xFF, marker, uint8_t((data.size() + 2) >> 8), uint8_t(data.size() + 2)});
+        jpeg.insert(jpeg.end(), data.begin(), data.end());
+    };
+    Bytes quantisation = {0x00};  // 8-bit table 0
+    quantisation.resize(65, 1);
+    segment(0xDB, quantisation);
+    segment(0xC0, {8, uint8_t(height >> 8), uint8_t(height), uint8_t(width >> 8), uint8_t(width), 1,
+                   1, 0x11, 0});   // 1 component: id 1, 1x1 sampling, table 0
+    Bytes huffman_dc = {0x00, 1};  // DC table 0: one code of length 1 ...
+    huffman_dc.resize(17, 0);
+    huffman_dc.push_back(0x00);  // ... for category 0: no change
+    segment(0xC4, huffman_dc);
+    Bytes huffman_ac = huffman_dc;
+    huffman_ac[0] = 0x10;  // AC table 0: the one code is 0x00, end of block
+    segment(0xC4, huffman_ac);
+    segment(0xDA, {1, 1, 0x00, 0, 63, 0});  // the scan: component 1, tables 0 and 0
+    const size_t bytes = (2 * blocks + 7) / 8;
+    jpeg.insert(jpeg.end(), bytes, 0x00);   // two 0 bits a block (0x00 needs no stuffing)
+    jpeg.insert(jpeg.end(), {0xFF, 0xD9});  // EOI
+    return jpeg;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -153,6 +214,10 @@ int main(int argc, char** argv) {
         if (argc == 2) {
             write(out / "huge_claim.png", png_claiming(16384, 16384));
             write(out / "huge_claim.gltf", textured_triangle("huge_claim.png"));
+            write_big_data_uri(out / "big_data_uri.gltf", 39321600);
+            write(out / "huge_claim.jpg", jpeg_claiming(8192, 8192, 64));
+            write(out / "jpeg_claim.gltf", textured_triangle("huge_claim.jpg"));
+            write(out / "flat_4096.jpg", jpeg_claiming(4096, 4096, 512 * 512));
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "vkt_make_hostile_files: %s\n", e.what());

@@ -32,10 +32,14 @@ namespace {
 // and JPEG to libjpeg-turbo, and asks both for 8-bit RGBA whatever the file
 // holds (alpha 255 where it has none). The file itself is read by
 // vkt::read_file, which names it when it is missing, a directory or past 1 GiB.
-vkt::RgbaImage load_texture(const std::filesystem::path& path) {
+// The budget (--max-memory) is judged from the file's size and the image's
+// header, before a pixel is decoded: what the pixels will cost decoded,
+// staged and on the GPU with their mips.
+vkt::RgbaImage load_texture(const std::filesystem::path& path, vkt::MemoryBudget& budget) {
+    budget.charge(vkt::readable_file_size(path), path.string());
     const std::vector<char> file = vkt::read_file(path);
     return vkt::decode_image(std::span(reinterpret_cast<const uint8_t*>(file.data()), file.size()),
-                             path.string());
+                             path.string(), budget);
 }
 // [/load]
 
@@ -230,7 +234,8 @@ public:
         std::filesystem::path file = options.has("--texture")
                                          ? std::filesystem::path(options.text("--texture"))
                                          : vkt::asset_path("textures/checker.png");
-        vkt::RgbaImage pixels = load_texture(file);
+        vkt::MemoryBudget budget(uint64_t(options.integer("--max-memory")));
+        vkt::RgbaImage pixels = load_texture(file, budget);
         const uint32_t max_size = context.properties.limits.maxImageDimension2D;
         if (pixels.width > max_size || pixels.height > max_size)
             throw vkt::Error(file.string() + ": larger than this device's " +
@@ -253,6 +258,11 @@ public:
             mips = "cpu";
         }
         // [/format-check]
+        // Mips made on the CPU are a chain in memory of its own before the
+        // staging copy, level 0 included: 4/3 of the pixels again.
+        if (mips == "cpu")
+            budget.charge(uint64_t(pixels.pixels.size()) * 4 / 3,
+                          file.string() + ": its mip chain, made on the CPU");
         texture_ = upload_texture(context, pixels, mips);
 
         // [sampler]
@@ -385,6 +395,7 @@ int main(int argc, char** argv) {
          .default_value = "16",
          .min = 1,
          .max = 16},
+        vkt::max_memory_option(),
     };
     // [/spec]
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {

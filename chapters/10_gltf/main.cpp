@@ -85,7 +85,7 @@ public:
         const std::string model = context.options.has("--model")
                                       ? context.options.text("--model")
                                       : vkt::asset_path("gltf/scene.gltf").string();
-        scene_ = vkt::load_gltf(model);
+        scene_ = vkt::load_gltf(model, uint64_t(context.options.integer("--max-memory")));
         for (const std::string& warning : scene_.warnings)
             std::fprintf(stderr, "10_gltf: %s: warning: %s\n", model.c_str(), warning.c_str());
         std::fprintf(stderr,
@@ -260,7 +260,8 @@ int main(int argc, char** argv) {
     spec.options = {{.name = "--model",
                      .type = vkt::OptionType::text,
                      .value_name = "FILE",
-                     .help = "a glTF 2.0 file, .gltf or .glb (default: assets/gltf/scene.gltf)"}};
+                     .help = "a glTF 2.0 file, .gltf or .glb (default: assets/gltf/scene.gltf)"},
+                    vkt::max_memory_option()};
     // [/spec]
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
         return std::make_unique<GltfViewer>(context);

@@ -54,6 +54,23 @@ if(VKT_TRUNCATE)
     EXPECT "09_textures: error: .*09_textures_huge.png: is 1073741825 bytes, past the 1 GiB limit for one file")
   set_tests_properties(bad_input.09_textures.huge_texture PROPERTIES FIXTURES_REQUIRED vkt_09_huge)
 endif()
+# --max-memory: a true 4096 x 4096 JPEG (64 KiB of flat grey, from the
+# fixture vkt_hostile_files) costs 235 MiB decoded, staged and mipmapped,
+# judged from its header before a pixel is decoded; one that claims 8192 x
+# 8192 in 156 bytes is refused for the bytes it lacks.
+vkt_chapter_test(bad_input.09_textures.max_memory 09_textures EXIT 1
+  ARGS --headless --frames 1 --texture ${VKT_HOSTILE_DIR}/flat_4096.jpg --max-memory 128M
+  EXPECT "09_textures: error: .*flat_4096.jpg: cannot decode image: it is 4096x4096: decoded, staged and mipmapped it would take 235 MiB, past the 128 MiB limit \\(--max-memory\\) with the 64 KiB the file needs besides")
+vkt_chapter_test(bad_input.09_textures.jpeg_claim 09_textures EXIT 1
+  ARGS --headless --frames 1 --texture ${VKT_HOSTILE_DIR}/huge_claim.jpg
+  EXPECT "09_textures: error: .*huge_claim.jpg: cannot decode image: its header claims 8192x8192 pixels, which its 156 bytes cannot hold")
+# With --mips cpu the chain is made in memory of its own first: 85 MiB more.
+vkt_chapter_test(bad_input.09_textures.max_memory_cpu_mips 09_textures EXIT 1
+  ARGS --headless --frames 1 --texture ${VKT_HOSTILE_DIR}/flat_4096.jpg --mips cpu --max-memory 240M
+  EXPECT "09_textures: error: .*flat_4096.jpg: its mip chain, made on the CPU: needs 85 MiB, which would bring what this file needs to 320 MiB, past the limit of 240 MiB \\(--max-memory\\)")
+set_tests_properties(bad_input.09_textures.max_memory bad_input.09_textures.jpeg_claim
+  bad_input.09_textures.max_memory_cpu_mips PROPERTIES
+  FIXTURES_REQUIRED vkt_hostile_files)
 vkt_chapter_test(bad_input.09_textures.bad_mips 09_textures EXIT 2 ARGS --mips trilinear
   EXPECT "--mips wants one of blit, cpu, none, not 'trilinear'")
 

@@ -119,7 +119,7 @@ vkt_chapter_test(bad_input.10_gltf.uri_dot 10_gltf EXIT 1
   EXPECT "10_gltf: error: .*uri_dot.gltf: buffer 0: URI \"\\.\": .*gltf_bad_input: is a directory, not a file")
 vkt_chapter_test(bad_input.10_gltf.short_data_uri 10_gltf EXIT 1
   ARGS ${vkt_10_run} --model ${vkt_10_dir}/short_data_uri.gltf
-  EXPECT "10_gltf: error: .*short_data_uri.gltf: buffer 0: data URI \"data:application/octet-stream;base64,AAA\" is invalid: its base64 does not decode to the buffer's byteLength")
+  EXPECT "10_gltf: error: .*short_data_uri.gltf: buffer 0: data URI \"data:application/octet-stream;base64,AAA\" is invalid: its base64 decodes to 2 bytes, not the buffer's byteLength 44")
 vkt_chapter_test(bad_input.10_gltf.bad_image_data_uri 10_gltf EXIT 1
   ARGS ${vkt_10_run} --model ${vkt_10_dir}/bad_image_data_uri.gltf
   EXPECT "10_gltf: error: .*bad_image_data_uri.gltf: image 0: its data URI is invalid: its base64 decodes to no bytes")
@@ -166,5 +166,24 @@ set_tests_properties(bad_input.10_gltf.deep_extras bad_input.10_gltf.long_bin_ch
 # allocated (unit.image budget* measure the peak memory).
 vkt_chapter_test(bad_input.10_gltf.huge_image_claim 10_gltf EXIT 1
   ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/huge_claim.gltf
-  EXPECT "10_gltf: error: .*huge_claim.gltf: image 0 \\(huge_claim.png\\): cannot decode image: it is 16384x16384: decoded, staged and mipmapped it would take 3755 MiB, past the 1024 MiB one image may use")
-set_tests_properties(bad_input.10_gltf.huge_image_claim PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+  EXPECT "10_gltf: error: .*huge_claim.gltf: image 0 \\(huge_claim.png\\): cannot decode image: it is 16384x16384: decoded, staged and mipmapped it would take 3755 MiB, past the 2 GiB limit \\(--max-memory\\)")
+# The same for a JPEG: 8192 x 8192 fits the budget, but 156 bytes cannot hold
+# its 1,048,576 blocks (a Huffman-coded JPEG spends a bit on each at least).
+vkt_chapter_test(bad_input.10_gltf.jpeg_claim 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/jpeg_claim.gltf
+  EXPECT "10_gltf: error: .*jpeg_claim.gltf: image 0 \\(huge_claim.jpg\\): cannot decode image: its header claims 8192x8192 pixels, which its 156 bytes cannot hold")
+# The whole model's budget (--max-memory): a 50 MiB base64 data: URI (37.5
+# MiB of buffer) is decoded by the loader, once, and the chapter draws its
+# triangle (tinygltf alone peaked at 388 MB); with 64 MiB allowed, it is
+# refused before it is decoded.
+vkt_chapter_test(chapter.10_gltf.big_data_uri 10_gltf
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/big_data_uri.gltf
+  EXPECT "big_data_uri.gltf: draws 1, primitives 1, materials 1, images 0, vertices 3")
+vkt_chapter_test(bad_input.10_gltf.max_memory 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/big_data_uri.gltf --max-memory 64M
+  EXPECT "10_gltf: error: .*big_data_uri.gltf: buffer 0: its data: URI, decoded: needs 38 MiB, which would bring what this file needs to 88 MiB, past the limit of 64 MiB \\(--max-memory\\)")
+set_tests_properties(bad_input.10_gltf.huge_image_claim bad_input.10_gltf.jpeg_claim
+  chapter.10_gltf.big_data_uri bad_input.10_gltf.max_memory PROPERTIES
+  FIXTURES_REQUIRED vkt_hostile_files)
+vkt_chapter_test(bad_input.10_gltf.max_memory_value 10_gltf EXIT 2 ARGS --max-memory lots
+  EXPECT "10_gltf: --max-memory wants a size from 16 MiB to 1024 GiB \\(a number of bytes, or with K, M, G: 512M, 4G\\), not 'lots'")

@@ -1,6 +1,7 @@
 #include "vkt/frame/args.hpp"
 
 #include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers_string.hpp>
 
 #include <vector>
 
@@ -238,4 +239,22 @@ TEST_CASE("a flag that wants a value does not take the next flag as its value", 
     // Inline, a value may begin with "--"; a single "-" is a value (a number).
     CHECK(parse({"--device=--odd"}).device == "--odd");
     CHECK(parse({"--device", "-1"}).device == "-1");
+}
+
+TEST_CASE("the shared flag --max-memory takes a size in bytes or with K M G T",
+          "[args][chapter-options]") {
+    const std::vector<vkt::OptionSpec> options = {vkt::max_memory_option()};
+    auto parse = [&](std::vector<const char*> args) {
+        return parse_args(args, Flags::frame_loop, options);
+    };
+    CHECK(parse({}).integer("--max-memory") == int64_t(2) << 30);  // the default, 2G
+    CHECK(parse({"--max-memory", "512M"}).integer("--max-memory") == int64_t(512) << 20);
+    CHECK(parse({"--max-memory=4G"}).integer("--max-memory") == int64_t(4) << 30);
+    CHECK_THROWS_WITH(parse({"--max-memory", "lots"}),
+                      "--max-memory wants a size from 16 MiB to 1024 GiB (a number of bytes, or "
+                      "with K, M, G: 512M, 4G), not 'lots'");
+    CHECK_THROWS_AS(parse({"--max-memory", "1M"}), UsageError);  // below 16 MiB
+    CHECK_THROWS_AS(parse({"--max-memory", "2P"}), UsageError);
+    CHECK(vkt::help_text("10_gltf", Flags::frame_loop, options).find("--max-memory SIZE") !=
+          std::string::npos);
 }

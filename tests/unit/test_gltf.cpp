@@ -580,11 +580,12 @@ TEST_CASE("gltf: bad input gives one line naming the file and the fault", "[gltf
             fill(good,
                  {{R"("}])",
                    R"("}, {"byteLength": 4, "uri": "data:application/octet-stream;base64,AA"}])"}});
-        CHECK_THAT(error_of(write_file("short_data_uri.gltf", second)),
-                   ContainsSubstring("short_data_uri.gltf: buffer 1: data URI "
-                                     "\"data:application/octet-stream;base64,AA\" is invalid: "
-                                     "its base64 does not decode to the buffer's byteLength") &&
-                       !ContainsSubstring("not a glTF file"));
+        CHECK_THAT(
+            error_of(write_file("short_data_uri.gltf", second)),
+            ContainsSubstring("short_data_uri.gltf: buffer 1: data URI "
+                              "\"data:application/octet-stream;base64,AA\" is invalid: "
+                              "its base64 decodes to 1 byte, not the buffer's byteLength 4") &&
+                !ContainsSubstring("not a glTF file"));
         std::string image = good;
         image.pop_back();
         image +=

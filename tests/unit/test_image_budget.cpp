@@ -1,7 +1,7 @@
 // The memory an image may make a chapter spend (vkt/resources/image_io.hpp):
 // from its header alone, before anything is decoded, an image is refused if
-// it would cost more than image_memory_budget, or if the file is too small to
-// hold what its header claims (issue 25: a 69-byte PNG claiming 16384 x 16384
+// it would cost more than its budget (default_max_memory, or --max-memory), or if the file is too
+// small to hold what its header claims (issue 25: a 69-byte PNG claiming 16384 x 16384
 // allocated 1.15 GB and took 4 s before it failed).
 
 #include "vkt/core/check.hpp"
@@ -74,10 +74,10 @@ double peak_resident_mib() {
 }  // namespace
 
 TEST_CASE("image budget: pixels, a staging copy and two mip chains are counted", "[texture]") {
-    // 8192 x 8192 x 4 = 256 MiB; + 2 x 4/3 of it: 939 MiB, inside 1 GiB.
+    // 8192 x 8192 x 4 = 256 MiB; + 2 x 4/3 of it: 939 MiB, inside 2 GiB.
     CHECK(vkt::image_memory_cost(8192, 8192) == 268435456ull + 2 * 357913941ull);
-    CHECK(vkt::image_memory_cost(8192, 8192) <= vkt::image_memory_budget);
-    CHECK(vkt::image_memory_cost(16384, 16384) > 3 * vkt::image_memory_budget);
+    CHECK(vkt::image_memory_cost(8192, 8192) <= vkt::default_max_memory);
+    CHECK(vkt::image_memory_cost(16384, 16384) > vkt::default_max_memory);
     CHECK(vkt::image_memory_cost(1, 1) == 4 + 2 * 5);
 }
 
@@ -90,8 +90,8 @@ TEST_CASE(
     const double before = peak_resident_mib();
     CHECK_THAT(error_of(claim),
                ContainsSubstring("claim.png: cannot decode image: it is 16384x16384: decoded, "
-                                 "staged and mipmapped it would take 3755 MiB, past the 1024 MiB "
-                                 "one image may use"));
+                                 "staged and mipmapped it would take 3755 MiB, past the 2 GiB "
+                                 "limit (--max-memory)"));
     const double after = peak_resident_mib();
     std::printf("peak resident memory: %.1f MiB before the refusal, %.1f MiB after\n", before,
                 after);
@@ -101,7 +101,7 @@ TEST_CASE(
 
 TEST_CASE("image budget: a PNG too small for the pixels its header claims is refused",
           "[texture]") {
-    // 4096 x 4096 is inside the budget (235 MiB), but 69 bytes inflate to at
+    // 4096 x 4096 is inside the budget (235 MiB of 2 GiB), but 69 bytes inflate to at
     // most 71 KB, not the 64 MiB of its rows.
     CHECK_THAT(error_of(png_claiming(4096, 4096)),
                ContainsSubstring("claim.png: cannot decode image: its header claims 4096x4096 "

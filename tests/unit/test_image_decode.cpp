@@ -216,6 +216,66 @@ TEST_CASE("decode_image refuses a JPEG larger than max_image_side from its heade
                       "huge.jpg: cannot decode image: it is 20000x100, larger than 16384x16384");
 }
 
+// A JPEG whose SOF0 header is made to claim width x height.
+Bytes jpeg_claiming(Bytes file, uint32_t width, uint32_t height) {
+    // SOF0: FF C0, length (2), precision (1), height (2), width (2).
+    const size_t sof = find(file, {0xff, 0xc0});
+    file[sof + 5] = uint8_t(height >> 8);
+    file[sof + 6] = uint8_t(height);
+    file[sof + 7] = uint8_t(width >> 8);
+    file[sof + 8] = uint8_t(width);
+    return file;
+}
+
+TEST_CASE("decode_image refuses a JPEG too small for the pixels its header claims",
+          "[image_decode]") {
+    // A 16 x 16 grey JPEG is a few hundred bytes; claiming 4096 x 4096 (inside
+    // every budget: 235 MiB) it would need 262,144 blocks, at least 32 KiB.
+    const Bytes small = jpeg_of(16, 16, 1, gradient(16, 16, 1));
+    const Bytes claim = jpeg_claiming(small, 4096, 4096);
+    CHECK_THROWS_WITH(vkt::decode_image(claim, "claim.jpg"),
+                      "claim.jpg: cannot decode image: its header claims 4096x4096 pixels, "
+                      "which its " +
+                          std::to_string(claim.size()) +
+                          " bytes cannot hold (a Huffman-coded JPEG spends at least a bit on "
+                          "every 8x8 block of a scan)");
+    // Colour, subsampled 2 x 2 by libjpeg's defaults: the chroma's blocks
+    // (each covers 16 x 16 pixels) are the floor, 65,536 of them here.
+    const Bytes colour = jpeg_claiming(jpeg_of(16, 16, 3, gradient(16, 16, 3)), 4096, 4096);
+    CHECK_THROWS_WITH(vkt::decode_image(colour, "colour.jpg"),
+                      Catch::Matchers::ContainsSubstring(
+                          "which its " + std::to_string(colour.size()) + " bytes cannot hold"));
+    // A real picture passes the floor by far: 512 x 512 of one grey is
+    // 4,096 blocks of two short codes each.
+    const Bytes flat = jpeg_of(512, 512, 1, Bytes(512 * 512, 128));
+    CHECK(flat.size() * 8 >= 4096);
+    CHECK(vkt::decode_image(flat, "flat.jpg").width == 512);
+}
+
+TEST_CASE("decode_image charges a JPEG's cost to the budget before decoding", "[image_decode]") {
+    const Bytes file = jpeg_of(64, 64, 3, gradient(64, 64, 3));
+    // 64 x 64: 16 KiB of pixels, 11/3 of that in all (59 KiB).
+    vkt::MemoryBudget roomy(uint64_t(1) << 20);
+    CHECK(vkt::decode_image(file, "a.jpg", roomy).width == 64);
+    CHECK(roomy.used() == vkt::image_memory_cost(64, 64));
+    // A progressive JPEG is decoded whole into coefficients first: 2 bytes
+    // for each of its samples, 4096 of luma and 2 x 1024 of chroma here
+    // (libjpeg's defaults subsample chroma 2 x 2).
+    std::vector<jpeg_scan_info> scans = {{3, {0, 1, 2, 0}, 0, 0, 0, 0}};
+    for (int component = 0; component < 3; ++component)
+        scans.push_back({1, {component}, 1, 63, 0, 0});
+    const Bytes progressive = jpeg_of(64, 64, 3, gradient(64, 64, 3), scans);
+    vkt::MemoryBudget counted(uint64_t(1) << 20);
+    CHECK(vkt::decode_image(progressive, "p.jpg", counted).width == 64);
+    CHECK(counted.used() == vkt::image_memory_cost(64, 64) + (4096 + 2 * 1024) * 2);
+    // Too little room: refused from the header, nothing charged.
+    vkt::MemoryBudget tight(50 * 1024);
+    CHECK_THROWS_WITH(vkt::decode_image(file, "a.jpg", tight),
+                      "a.jpg: cannot decode image: it is 64x64: decoded, staged and mipmapped it "
+                      "would take 59 KiB, past the 50 KiB limit (--max-memory)");
+    CHECK(tight.used() == 0);
+}
+
 TEST_CASE("decode_image refuses a JPEG of too many progressive scans", "[image_decode]") {
     // The DC scan, then each AC coefficient of each component on its own:
     // 1 + 3 * 63 = 190 scans, a valid file, and each scan a pass over it all.

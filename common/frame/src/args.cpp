@@ -1,5 +1,7 @@
 #include "vkt/frame/args.hpp"
 
+#include "vkt/core/memory_budget.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -67,6 +69,15 @@ std::string check_option_value(const OptionSpec& spec, std::string_view text) {
                 if (choice == text) return given;
             throw UsageError(spec.name + " wants one of " + joined(spec.choices, ", ") + ", not '" +
                              given + "'");
+        case OptionType::bytes: {
+            const std::optional<uint64_t> value = parse_byte_count(text);
+            if (!value || double(*value) < spec.min || double(*value) > spec.max)
+                throw UsageError(
+                    spec.name + " wants a size from " + byte_count_text(uint64_t(spec.min)) +
+                    " to " + byte_count_text(uint64_t(spec.max)) +
+                    " (a number of bytes, or with K, M, G: 512M, 4G), not '" + given + "'");
+            return std::to_string(*value);
+        }
         case OptionType::text:
         default:
             if (text.empty()) throw UsageError(spec.name + " wants a value");
@@ -77,6 +88,7 @@ std::string check_option_value(const OptionSpec& spec, std::string_view text) {
 std::string option_value_name(const OptionSpec& spec) {
     if (!spec.value_name.empty()) return spec.value_name;
     if (spec.type == OptionType::choice) return joined(spec.choices, "|");
+    if (spec.type == OptionType::bytes) return "SIZE";
     return spec.type == OptionType::text ? "TEXT" : "N";
 }
 
@@ -211,6 +223,18 @@ Options parse_args(std::span<const char* const> args, Flags flags,
     return options;
 }
 
+OptionSpec max_memory_option() {
+    return {.name = "--max-memory",
+            .type = OptionType::bytes,
+            .value_name = "SIZE",
+            .help =
+                "the most memory the file may make this chapter use, decoded, staged and "
+                "on the GPU (512M, 4G)",
+            .default_value = "2G",
+            .min = double(uint64_t(16) << 20),
+            .max = double(uint64_t(1) << 40)};
+}
+
 std::string usage_line(std::string_view program, Flags flags,
                        std::span<const OptionSpec> chapter_options) {
     std::string line = "usage: " + std::string(program);
@@ -235,6 +259,9 @@ std::string help_text(std::string_view program, Flags flags,
             std::string right = spec.help;
             if (spec.type == OptionType::integer || spec.type == OptionType::number)
                 right += " (" + format_number(spec.min) + ".." + format_number(spec.max) + ")";
+            if (spec.type == OptionType::bytes)
+                right += " (" + byte_count_text(uint64_t(spec.min)) + ".." +
+                         byte_count_text(uint64_t(spec.max)) + ")";
             if (!spec.default_value.empty()) right += " [default: " + spec.default_value + "]";
             text += left;
             // The help in a column of its own: beside the flag, or below it.

@@ -17,6 +17,7 @@
 
 #include "vkt/core/check.hpp"
 #include "vkt/core/files.hpp"
+#include "vkt/core/memory_budget.hpp"
 
 #include <png.h>
 // jpeglib.h uses size_t and FILE without including their headers.
@@ -24,6 +25,7 @@
 #include <cstddef>
 #include <cstdio>
 
+#include <algorithm>
 #include <climits>
 #include <csetjmp>
 #include <cstring>
@@ -197,6 +199,49 @@ bool jpeg_header(JpegReader& r) {
     return true;
 }
 
+// The blocks of 8 x 8 samples component `c` has, as libjpeg-turbo counts
+// them (a component sampled at half the rate covers twice the pixels).
+uint64_t jpeg_component_blocks(const jpeg_decompress_struct& info, int c) {
+    const jpeg_component_info& component = info.comp_info[c];
+    const uint64_t block_width = 8 * uint64_t(info.max_h_samp_factor);  // in pixels
+    const uint64_t block_height = 8 * uint64_t(info.max_v_samp_factor);
+    const uint64_t across =
+        (uint64_t(info.image_width) * uint64_t(component.h_samp_factor) + block_width - 1) /
+        block_width;
+    const uint64_t down =
+        (uint64_t(info.image_height) * uint64_t(component.v_samp_factor) + block_height - 1) /
+        block_height;
+    return across * down;
+}
+
+// A Huffman-coded JPEG spends at least one bit on every block of a scan
+// (the shortest Huffman code, for "DC unchanged" or a refinement bit), and
+// a file whose scan ends early is refused (jpeg_message): so its bytes are
+// at least the blocks of its smallest component / 8. A header that claims
+// more is a lie, refused before anything is allocated. Arithmetic coding,
+// which libjpeg-turbo also decodes, can spend far less than a bit on a
+// block of one flat colour, so it has no such floor: only the budget
+// holds it.
+bool jpeg_plausible(const jpeg_decompress_struct& info, size_t file_size) {
+    if (info.arith_code) return true;
+    // The fewest blocks a scan can cover: those of the component sampled most
+    // coarsely (a JPEG's first scan may hold that component alone).
+    uint64_t fewest = UINT64_MAX;
+    for (int c = 0; c < info.num_components; ++c)
+        fewest = std::min(fewest, jpeg_component_blocks(info, c));
+    return fewest <= uint64_t(file_size) * 8;
+}
+
+// What libjpeg-turbo itself allocates beyond our pixels: a progressive (or
+// multi-scan) JPEG is decoded whole before its first row comes out, into
+// 64 coefficients of 2 bytes for every block of every component.
+uint64_t jpeg_coefficient_bytes(const jpeg_decompress_struct& info) {
+    if (!info.progressive_mode && info.comps_in_scan == info.num_components) return 0;
+    uint64_t blocks = 0;
+    for (int c = 0; c < info.num_components; ++c) blocks += jpeg_component_blocks(info, c);
+    return blocks * 64 * sizeof(JCOEF);
+}
+
 // The pixels, as RGBA straight from libjpeg-turbo (alpha 255); colour and
 // grey JPEGs both. CMYK ones are refused by libjpeg ("Unsupported color
 // conversion request").
@@ -256,28 +301,38 @@ ImageSize read_image_size(std::span<const uint8_t> bytes, const std::string& wha
 }
 
 RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what) {
+    MemoryBudget budget;
+    return decode_image(bytes, what, budget);
+}
+
+RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what,
+                       MemoryBudget& budget) {
     // A few hundred bytes may claim a picture of gigabytes, and the decoder
     // would allocate it all before finding the data missing (found by
     // tests/fuzz/fuzz_image.cpp). Refuse, from the header alone, what no
-    // texture of this tutorial could hold.
-    auto check_size = [&](uint32_t width, uint32_t height) {
+    // texture of this tutorial could hold, and what the budget has no room
+    // for; `decoder` is what the library allocates besides our pixels.
+    auto check_size = [&](uint32_t width, uint32_t height, uint64_t decoder) {
         const std::string size = std::to_string(width) + "x" + std::to_string(height);
         if (width > max_image_side || height > max_image_side)
             cannot_decode(what, "it is " + size + ", larger than " +
                                     std::to_string(max_image_side) + "x" +
                                     std::to_string(max_image_side));
-        if (image_memory_cost(width, height) > image_memory_budget) {
-            const uint64_t mib = (image_memory_cost(width, height) + (1 << 19)) >> 20;  // rounded
-            cannot_decode(what, "it is " + size + ": decoded, staged and mipmapped it would take " +
-                                    std::to_string(mib) + " MiB, past the " +
-                                    std::to_string(image_memory_budget >> 20) +
-                                    " MiB one image may use");
-        }
+        const uint64_t cost = image_memory_cost(width, height) + decoder;
+        if (cost > budget.limit() - budget.used())
+            cannot_decode(
+                what, "it is " + size + ": decoded, staged and mipmapped it would take " +
+                          byte_count_text(cost) + ", past the " + byte_count_text(budget.limit()) +
+                          " limit (--max-memory)" +
+                          (budget.used() == 0 ? std::string()
+                                              : " with the " + byte_count_text(budget.used()) +
+                                                    " the file needs besides"));
+        budget.charge(cost, what);
     };
     if (kind_of(bytes, what) == Kind::png) {
         PngReader reader(bytes);
         if (!png_header(reader)) cannot_decode(what, reader.error);
-        check_size(reader.width, reader.height);
+        check_size(reader.width, reader.height, 0);
         if (!png_plausible(reader, bytes.size()))
             cannot_decode(what, "its header claims " + std::to_string(reader.width) + "x" +
                                     std::to_string(reader.height) + " pixels, which its " +
@@ -289,7 +344,14 @@ RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what) 
     }
     JpegReader reader(bytes);
     if (!jpeg_header(reader)) cannot_decode(what, reader.errors.text);
-    check_size(reader.info.image_width, reader.info.image_height);
+    check_size(reader.info.image_width, reader.info.image_height,
+               jpeg_coefficient_bytes(reader.info));
+    if (!jpeg_plausible(reader.info, bytes.size()))
+        cannot_decode(what, "its header claims " + std::to_string(reader.info.image_width) + "x" +
+                                std::to_string(reader.info.image_height) + " pixels, which its " +
+                                std::to_string(bytes.size()) +
+                                " bytes cannot hold (a Huffman-coded JPEG spends at least a bit "
+                                "on every 8x8 block of a scan)");
     if (!jpeg_pixels(reader)) cannot_decode(what, reader.errors.text);
     return {reader.info.output_width, reader.info.output_height, std::move(reader.pixels)};
 }
@@ -300,9 +362,15 @@ uint64_t image_memory_cost(uint32_t width, uint32_t height) {
 }
 
 RgbaImage load_image_file(const std::filesystem::path& path) {
-    std::vector<char> file = read_file(path);  // throws "cannot open FILE"
+    MemoryBudget budget;
+    return load_image_file(path, budget);
+}
+
+RgbaImage load_image_file(const std::filesystem::path& path, MemoryBudget& budget) {
+    budget.charge(readable_file_size(path), path.string());  // the file's bytes, read
+    std::vector<char> file = read_file(path);                // throws "cannot open FILE"
     return decode_image(std::span(reinterpret_cast<const uint8_t*>(file.data()), file.size()),
-                        path.string());
+                        path.string(), budget);
 }
 
 }  // namespace vkt

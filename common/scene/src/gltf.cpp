@@ -27,10 +27,11 @@ namespace {
 
 class Loader {
 public:
-    explicit Loader(std::filesystem::path path) : path_(std::move(path)) {}
+    Loader(std::filesystem::path path, uint64_t max_memory)
+        : path_(std::move(path)), budget_(max_memory) {}
 
     GltfScene load() {
-        model_ = gltf_detail::parse_gltf_file(path_);
+        model_ = gltf_detail::parse_gltf_file(path_, budget_);
         check_extensions();
         load_materials();
         walk_nodes();
@@ -142,9 +143,9 @@ private:
         if (source.bufferView >= 0) {
             std::span<const uint8_t> bytes =
                 data_.view_bytes(source.bufferView, "image " + std::to_string(index));
-            decoded = decode_image(bytes, what);
+            decoded = decode_image(bytes, what, budget_);
         } else if (!source.image.empty()) {
-            decoded = decode_image(source.image, what);
+            decoded = decode_image(source.image, what, budget_);
         } else if (!source.uri.empty() && source.uri.rfind("data:", 0) != 0) {
             // The file was not there, or empty: a file refused (outside the
             // folder, too large) has already failed in parse_gltf_file.
@@ -247,6 +248,13 @@ private:
             return std::nullopt;
         }
 
+        // What the scene will hold for this primitive, each vertex and index
+        // three times: in GltfScene, in a staging buffer, in the GPU's (the
+        // machine's memory, on lavapipe). Without normals every corner of
+        // every triangle becomes a vertex of its own.
+        const uint64_t kept = (normals.empty() ? indices.size() : count) * sizeof(GltfVertex) +
+                              indices.size() * sizeof(uint32_t);
+        budget_.charge(3 * kept, path_.string() + ": " + what + ": its vertices and indices");
         std::vector<GltfVertex> vertices(count);
         for (size_t v = 0; v < count; ++v) {
             vertices[v].position = {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]};
@@ -381,8 +389,9 @@ private:
     }
 
     std::filesystem::path path_;
+    MemoryBudget budget_;
     tinygltf::Model model_;
-    gltf_detail::Accessors data_{model_, path_};
+    gltf_detail::Accessors data_{model_, path_, budget_};
     GltfScene scene_;
     std::map<int, std::vector<uint32_t>> mesh_primitives_;
     std::map<int, int32_t> image_slots_;
@@ -425,8 +434,8 @@ glm::mat4 gltf_node_matrix(const std::vector<double>& matrix,
     return t * r * s;
 }
 
-GltfScene load_gltf(const std::filesystem::path& path) {
-    return Loader(path).load();
+GltfScene load_gltf(const std::filesystem::path& path, uint64_t max_memory) {
+    return Loader(path, max_memory).load();
 }
 
 }  // namespace vkt

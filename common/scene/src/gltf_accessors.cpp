@@ -180,6 +180,10 @@ std::vector<float> Accessors::read_floats(int index, const std::string& what,
     std::vector<float> out;
     if (a.count > (size_t(1) << 28))
         fail(name + ": count " + std::to_string(a.count) + " is too large");
+    // An accessor without a view is all zeros: a few bytes of JSON may ask for
+    // 2^28 elements, so its floats are charged before they exist.
+    budget_.charge(uint64_t(a.count) * uint64_t(components) * sizeof(float),
+                   path_.string() + ": " + name + ", read as floats");
     out.assign(a.count * size_t(components), 0.0f);
     const size_t element_size = size_t(components) * size_t(component_size);
     // One element's components, from `element`, into out[i].
@@ -228,6 +232,7 @@ std::vector<uint32_t> Accessors::read_indices(int index, const std::string& what
              "UNSIGNED_SHORT or UNSIGNED_INT)");
     if (a.count > (size_t(1) << 28))
         fail(name + ": count " + std::to_string(a.count) + " is too large");
+    budget_.charge(uint64_t(a.count) * sizeof(uint32_t), path_.string() + ": " + name + ", read");
     std::vector<uint32_t> out(a.count, 0);
     if (a.bufferView < 0) return out;
     const size_t size = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(ct)));

@@ -11,24 +11,42 @@
 //   - the first refusal is the error, naming the model and the URI, even
 //     where tinygltf would only have warned (it does for images).
 //
-// Data URIs are not files: tinygltf decodes those it knows (base64 buffers
-// and PNG, JPEG, BMP, GIF images), compares a buffer's decoded length with
-// its byteLength, and our 1 GiB cap on the .gltf keeps its int lengths from
-// overflowing. A data: URI of any other kind would reach us as a file name,
-// and is refused by name.
+// Data URIs are not files. tinygltf would decode those it knows (base64
+// buffers and PNG, JPEG, BMP, GIF images) from a copy of a copy of the
+// JSON's string: a 50 MB data: URI cost 388 MB at the peak (issue 25). So
+// in a .gltf the loader decodes them itself, once, straight from the file's
+// bytes, and hands tinygltf a JSON whose data: URIs are replaced by the
+// names "vkt-data-uri-N", which the callbacks below answer with the decoded
+// bytes (moved, not copied). tinygltf checks those as it checks any file;
+// a buffer's byteLength is checked here first, to say what is wrong in
+// words about the data: URI. A data: URI of any other kind would reach us
+// as a file name, and is refused by name; one in a .glb's JSON (rare) is
+// left to tinygltf, and the budget counts its copies.
+//
+// Every large allocation is charged to the load's MemoryBudget before it is
+// made: the file, each decoded data: URI, the JSON as a JSON library builds
+// it (json_value_bytes a value, and its strings' copies), each file a URI
+// names, a .glb's BIN chunk copied into its buffer.
 
 #include "gltf_internal.hpp"
 
 #include "vkt/core/check.hpp"
 #include "vkt/core/files.hpp"
 
+#include <algorithm>
+#include <array>
+#include <charconv>
 #include <cstring>
 #include <exception>
 #include <optional>
+#include <string_view>
 
 namespace vkt::gltf_detail {
 
 namespace {
+
+// The name a data: URI decoded here goes by (see the top of this file).
+constexpr std::string_view data_uri_stem = "vkt-data-uri-";
 
 // What the callbacks share: where the model's folder is, and why a file was
 // refused.
@@ -37,6 +55,24 @@ struct FileAccess {
     std::string prefix;   // folder as tinygltf joins it to a URI: ".../folder/"
     std::string refusal;  // the first refusal, "URI "../x" leads out of ..."
     std::string uri;      // the URI last asked for, as tinygltf %-decoded it
+    MemoryBudget* budget = nullptr;
+    // The data: URIs decoded here, each handed to tinygltf (moved) when it
+    // asks for the file data_uri_name(N).
+    std::vector<std::vector<unsigned char>> decoded;
+
+    // The decoded bytes tinygltf asks for under a name of ours, or null
+    // where `joined` is another file.
+    std::vector<unsigned char>* data_uri(const std::string& joined) {
+        if (decoded.empty() || joined.compare(0, prefix.size(), prefix) != 0) return nullptr;
+        const std::string_view name = std::string_view(joined).substr(prefix.size());
+        if (!name.starts_with(data_uri_stem)) return nullptr;
+        size_t n = 0;
+        const std::string_view digits = name.substr(data_uri_stem.size());
+        const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
+        if (error != std::errc{} || end != digits.data() + digits.size() || n >= decoded.size())
+            return nullptr;
+        return &decoded[n];
+    }
 
     void refuse(const std::string& why) {
         if (refusal.empty()) refusal = why;
@@ -69,6 +105,7 @@ std::string no_expansion(const std::string& path, void*) {
 }
 
 bool file_exists(const std::string& path, void* user) {
+    if (static_cast<FileAccess*>(user)->data_uri(path)) return true;
     const std::optional<std::filesystem::path> file = static_cast<FileAccess*>(user)->inside(path);
     std::error_code error;
     return file && std::filesystem::exists(*file, error);  // a directory, too: read_file says so
@@ -94,17 +131,28 @@ bool with_file(FileAccess* access, std::string* err, const std::string& path, Us
 
 bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                      void* user) {
-    return with_file(static_cast<FileAccess*>(user), err, path,
-                     [&](const std::filesystem::path& file) {
-                         const std::vector<char> bytes = read_file(file);  // regular, 1 GiB at most
-                         out->assign(bytes.begin(), bytes.end());
-                     });
+    auto* access = static_cast<FileAccess*>(user);
+    if (std::vector<unsigned char>* decoded = access->data_uri(path)) {
+        out->swap(*decoded);  // charged when it was decoded
+        return true;
+    }
+    return with_file(access, err, path, [&](const std::filesystem::path& file) {
+        // Its bytes, then tinygltf's copy of them (read_file's vector is freed
+        // at once, but the budget counts every allocation of the load).
+        access->budget->charge(2 * readable_file_size(file), "");
+        const std::vector<char> bytes = read_file(file);  // regular, 1 GiB at most
+        out->assign(bytes.begin(), bytes.end());
+    });
 }
 
 #if VKT_TINYGLTF_FILE_SIZE_CALLBACK
 // tinygltf 2.8 and later ask a file's size before they read it: the same
 // rules, the same refusals, nothing read.
 bool file_size(size_t* size, std::string* err, const std::string& path, void* user) {
+    if (std::vector<unsigned char>* decoded = static_cast<FileAccess*>(user)->data_uri(path)) {
+        *size = decoded->size();
+        return true;
+    }
     return with_file(static_cast<FileAccess*>(user), err, path,
                      [&](const std::filesystem::path& file) {
                          *size = static_cast<size_t>(readable_file_size(file));
@@ -120,6 +168,10 @@ bool file_size(size_t* size, std::string* err, const std::string& path, void* us
 // handed the decoded name to FileExists, where the same check refused it.
 bool decode_uri(const std::string& uri, std::string* out, void* user) {
     auto* access = static_cast<FileAccess*>(user);
+    if (!access->decoded.empty() && uri.starts_with(data_uri_stem)) {
+        *out = uri;  // a data: URI decoded here: data_uri() answers for it
+        return true;
+    }
     if (!tinygltf::URIDecode(uri, out, nullptr)) return false;
     try {
         (void)resolve_inside(access->folder, *out);
@@ -147,6 +199,97 @@ bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::stri
     return true;
 }
 
+// The data: URIs tinygltf decodes, by what they begin with (tinygltf 2.7 to 2.9).
+constexpr std::array<std::string_view, 7> base64_uri_prefixes = {
+    "data:application/octet-stream;base64,",
+    "data:application/gltf-buffer;base64,",
+    "data:image/png;base64,",
+    "data:image/jpeg;base64,",
+    "data:image/bmp;base64,",
+    "data:image/gif;base64,",
+    "data:text/plain;base64,"};
+
+int base64_value(char c) {
+    if (c >= 'A' && c <= 'Z') return c - 'A';
+    if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+    if (c >= '0' && c <= '9') return c - '0' + 52;
+    if (c == '+') return 62;
+    if (c == '/') return 63;
+    return -1;
+}
+
+// Base64 as tinygltf decodes it: up to the first character outside the
+// alphabet ('=' included), a last group of 2 or 3 characters giving 1 or 2
+// bytes, so that a file decodes here exactly as it did there.
+std::vector<unsigned char> decode_base64(std::string_view text) {
+    size_t length = 0;
+    while (length < text.size() && base64_value(text[length]) >= 0) ++length;
+    std::vector<unsigned char> out;
+    out.reserve(length / 4 * 3 + 2);
+    uint32_t bits = 0;
+    int held = 0;
+    for (size_t i = 0; i < length; ++i) {
+        bits = (bits << 6 | uint32_t(base64_value(text[i]))) & 0xFFFFFFu;
+        held += 6;
+        if (held >= 8) {
+            held -= 8;
+            out.push_back(uint8_t(bits >> held));
+        }
+    }
+    return out;
+}
+
+// A data: URI decoded here, and where its element is.
+struct DecodedUri {
+    bool image;
+    size_t index;
+    std::string_view prefix;  // "data:image/png;base64,": what its "uri" becomes again
+};
+
+// Decodes a .gltf's base64 data: URIs into access.decoded (charged to the
+// budget first) and returns its JSON with each URI replaced by its name,
+// data_uri_stem + N; the file as it is where there is none (or where its
+// text already holds that stem, so that no name of ours could be mistaken).
+std::vector<char> decode_data_uris(std::vector<char> file, FileAccess& access,
+                                   std::vector<DecodedUri>& uris, const std::string& path) {
+    const std::string_view json(file.data(), file.size());
+    if (json.starts_with("glTF") || json.find(data_uri_stem) != std::string_view::npos) return file;
+    std::vector<char> out;
+    size_t copied = 0;  // json[0, copied) is in `out`
+    for (const JsonDataUri& found : json_data_uris(json)) {
+        const std::string_view text = json.substr(found.begin, found.end - found.begin);
+        const auto prefix = std::find_if(base64_uri_prefixes.begin(), base64_uri_prefixes.end(),
+                                         [&](std::string_view p) { return text.starts_with(p); });
+        if (prefix == base64_uri_prefixes.end()) continue;  // refused by name later
+        const std::string what =
+            path + ": " + (found.image ? "image " : "buffer ") + std::to_string(found.index) +
+            quoted_name(json_element_name(json, found.image ? "images" : "buffers", found.index));
+        const std::string_view payload = text.substr(prefix->size());
+        // An image's bytes are copied once more, into tinygltf's Image.
+        access.budget->charge((found.image ? 2 : 1) * (payload.size() / 4 * 3 + 2),
+                              what + ": its data: URI, decoded");
+        std::vector<unsigned char> bytes = decode_base64(payload);
+        if (bytes.empty())
+            throw Error(what + ": its data URI is invalid: its base64 decodes to no bytes");
+        if (!found.image && found.byte_length >= 0 && bytes.size() != uint64_t(found.byte_length))
+            throw Error(what + ": data URI \"" + printable(text, 60) +
+                        "\" is invalid: its base64 decodes to " + std::to_string(bytes.size()) +
+                        (bytes.size() == 1 ? " byte" : " bytes") +
+                        ", not the buffer's byteLength " + std::to_string(found.byte_length));
+        if (out.empty()) out.reserve(json.size() / 64 + 4096);
+        out.insert(out.end(), json.begin() + ptrdiff_t(copied),
+                   json.begin() + ptrdiff_t(found.begin));
+        const std::string name = std::string(data_uri_stem) + std::to_string(access.decoded.size());
+        out.insert(out.end(), name.begin(), name.end());
+        copied = found.end;
+        access.decoded.push_back(std::move(bytes));
+        uris.push_back({found.image, found.index, *prefix});
+    }
+    if (uris.empty()) return file;
+    out.insert(out.end(), json.begin() + ptrdiff_t(copied), json.end());
+    return out;
+}
+
 }  // namespace
 
 void use_fs_callbacks(tinygltf::TinyGLTF& gltf, const tinygltf::FsCallbacks& callbacks) {
@@ -163,9 +306,11 @@ void use_fs_callbacks(tinygltf::TinyGLTF& gltf, const tinygltf::FsCallbacks& cal
 #endif
 }
 
-tinygltf::Model parse_gltf_file(const std::filesystem::path& path) {
+tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget& budget) {
     auto fail = [&](const std::string& what) { throw Error(path.string() + ": " + what); };
-    std::vector<char> file = read_file(path);  // "cannot open FILE", directories, 1 GiB
+    // "cannot open FILE", directories, 1 GiB: before anything is charged.
+    budget.charge(readable_file_size(path), path.string() + ": the file itself");
+    std::vector<char> file = read_file(path);
     if (file.empty()) fail("not a glTF file: it is empty");
     // The JSON's nesting and a .glb's chunks, before tinygltf trusts them (gltf_guard.cpp).
     if (const std::optional<std::string> unsafe = check_gltf_bytes(file)) fail(*unsafe);
@@ -174,6 +319,22 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path) {
     access.folder = std::filesystem::absolute(path).parent_path();
     const std::string base_dir = access.folder.string();
     access.prefix = base_dir.ends_with('/') ? base_dir : base_dir + "/";
+    access.budget = &budget;
+    // A .gltf's data: URIs decoded here; `file` is then the JSON without them
+    // (the file's own bytes are freed).
+    std::vector<DecodedUri> decoded_uris;
+    file = decode_data_uris(std::move(file), access, decoded_uris, path.string());
+    // What tinygltf builds from the JSON: its values, and copies of its
+    // strings. A data: URI left to tinygltf (in a .glb's JSON) is the worst
+    // string: nlohmann's copy, tinygltf's, the substring it decodes, then
+    // the decoded bytes twice (3/4 each): 4.5 times its text, so 5.
+    const std::string_view json = gltf_json_text(file);
+    const uint64_t values = json_value_count(json);
+    budget.charge(
+        values * json_value_bytes + 5 * uint64_t(json.size()),
+        path.string() + ": its JSON, parsed (" + std::to_string(values) + " values at most)");
+    // tinygltf copies a .glb's BIN chunk into its buffer.
+    budget.charge(file.size() - json.size(), path.string() + ": its BIN chunk, copied");
     tinygltf::TinyGLTF gltf;
     // Named, not in order: tinygltf 2.8 added a member in the middle.
     tinygltf::FsCallbacks callbacks{};
@@ -215,6 +376,16 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path) {
     // Even where tinygltf only warned (it does for images), a refusal fails.
     if (!ok || !access.refusal.empty())
         fail(explain_load_failure({err, access.refusal}, model, file));
+    // A data: URI decoded here is a data: URI again (without its text, which
+    // no one reads): gltf.cpp tells an image's file from its data by it.
+    for (size_t n = 0; n < decoded_uris.size(); ++n) {
+        const DecodedUri& d = decoded_uris[n];
+        std::string* uri =
+            d.image ? (d.index < model.images.size() ? &model.images[d.index].uri : nullptr)
+                    : (d.index < model.buffers.size() ? &model.buffers[d.index].uri : nullptr);
+        if (uri && *uri == std::string(data_uri_stem) + std::to_string(n))
+            *uri = std::string(d.prefix);
+    }
     return model;
 }
 

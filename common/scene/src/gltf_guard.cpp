@@ -267,6 +267,84 @@ std::optional<size_t> json_array_size(std::string_view json, std::string_view me
     return reader.count_elements();
 }
 
+std::vector<JsonDataUri> json_data_uris(std::string_view json) {
+    std::vector<JsonDataUri> found;
+    Reader root{json};
+    if (!root.take('{') || root.take('}')) return found;
+    // Every member of the root: a "buffers" given twice is looked at twice.
+    for (bool more = true; more; more = root.take(',')) {
+        const std::optional<std::string_view> key = root.raw_string();
+        if (!key || !root.take(':')) return found;
+        const bool buffers = *key == "buffers", images = *key == "images";
+        if (!buffers && !images) {
+            if (!root.skip_value()) return found;
+            continue;
+        }
+        Reader array = root;
+        if (!root.skip_value()) return found;
+        if (!array.take('[') || array.take(']')) continue;
+        for (size_t index = 0;; ++index) {
+            Reader element = array;
+            if (!array.skip_value()) break;
+            JsonDataUri uri{.image = images, .index = index};
+            bool has_uri = false;
+            if (element.take('{') && !element.take('}')) {
+                for (bool member = true; member; member = element.take(',')) {
+                    const std::optional<std::string_view> name = element.raw_string();
+                    if (!name || !element.take(':')) break;
+                    element.skip_space();
+                    const size_t start = element.at;
+                    if (*name == "uri" && !element.done() && element.text[start] == '"') {
+                        const std::optional<std::string_view> value = element.raw_string();
+                        if (!value) break;
+                        has_uri = value->starts_with("data:") &&
+                                  value->find('\\') == std::string_view::npos;
+                        uri.begin = start + 1;
+                        uri.end = start + 1 + value->size();
+                        continue;
+                    }
+                    if (*name == "byteLength") {
+                        size_t at = start;
+                        int64_t value = 0;
+                        while (at < json.size() && json[at] >= '0' && json[at] <= '9' &&
+                               value < (int64_t(1) << 40))
+                            value = value * 10 + (json[at++] - '0');
+                        const bool whole =
+                            at > start && at < json.size() &&
+                            (json[at] == ',' || json[at] == '}' || json[at] == ' ' ||
+                             json[at] == '\n' || json[at] == '\r' || json[at] == '\t');
+                        uri.byte_length = whole ? value : -1;
+                    }
+                    if (!element.skip_value()) break;
+                }
+            }
+            if (has_uri) found.push_back(uri);
+            if (!array.take(',')) break;
+        }
+    }
+    return found;
+}
+
+size_t json_value_count(std::string_view json) {
+    size_t count = 1;
+    bool in_string = false, escaped = false;
+    for (const char c : json) {
+        if (in_string) {
+            if (escaped)
+                escaped = false;
+            else if (c == '\\')
+                escaped = true;
+            else if (c == '"')
+                in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == ',' || c == '[' || c == '{' || c == ':') {
+            ++count;
+        }
+    }
+    return count;
+}
+
 std::string json_element_name(std::string_view json, std::string_view member, size_t index) {
     Reader reader{json};
     if (!reader.find_member(member) || !reader.find_element(index) || !reader.find_member("name"))

@@ -16,6 +16,7 @@
 //                       primitives, the node tree, flattened into GltfScene
 
 #include "vkt/core/files.hpp"
+#include "vkt/core/memory_budget.hpp"
 #include "vkt/scene/gltf_guard.hpp"
 
 #include <tiny_gltf.h>
@@ -32,8 +33,15 @@ namespace vkt::gltf_detail {
 // are kept as their file's bytes (Image::image), not decoded. Throws Error
 // "PATH: what is wrong", one line, for a file that is missing, too large, not
 // glTF, names a file outside its folder (or the folder itself), or holds a
-// data: URI that does not decode.
-tinygltf::Model parse_gltf_file(const std::filesystem::path& path);
+// data: URI that does not decode. Every large allocation it makes is
+// charged to `budget` first (the file, its JSON as parsed, each data: URI
+// decoded, each file a URI names), and refused by it past the limit.
+tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget& budget);
+
+// What a JSON value may cost once parsed, at most: nlohmann::json's 16 bytes,
+// its place in an array or an object's tree, and tinygltf's own Value, into
+// which it converts every value of an "extras" or "extensions".
+inline constexpr uint64_t json_value_bytes = 64 + sizeof(tinygltf::Value);
 
 // What went wrong in tinygltf's load: its error text, and our file access's
 // first refusal (empty if none).
@@ -73,8 +81,9 @@ struct AllowedFormat {
 // ("mesh 0 primitive 1 NORMAL").
 class Accessors {
 public:
-    Accessors(const tinygltf::Model& model, std::filesystem::path path)
-        : model_(model), path_(std::move(path)) {}
+    // `budget` is charged for every array read_floats and read_indices make.
+    Accessors(const tinygltf::Model& model, std::filesystem::path path, MemoryBudget& budget)
+        : model_(model), path_(std::move(path)), budget_(budget) {}
 
     // The bytes of buffer view `index`, checked against its buffer.
     std::span<const uint8_t> view_bytes(int index, const std::string& what) const;
@@ -98,6 +107,7 @@ private:
 
     const tinygltf::Model& model_;
     std::filesystem::path path_;
+    MemoryBudget& budget_;
 };
 
 }  // namespace vkt::gltf_detail

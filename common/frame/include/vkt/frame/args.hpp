@@ -21,6 +21,8 @@ enum class OptionType {
     number,   // a real number within [min, max]
     choice,   // one of `choices`
     text,     // any non-empty text (a file name, say)
+    bytes,    // a size: 512M, 2G (vkt::parse_byte_count), within [min, max] bytes;
+              // Options::integer gives it in bytes
 };
 
 struct OptionSpec {
@@ -75,6 +77,12 @@ public:
 // chapter_options are the chapter's own flags; their defaults are filled in.
 Options parse_args(std::span<const char* const> args, Flags flags = Flags::frame_loop,
                    std::span<const OptionSpec> chapter_options = {});
+
+// --max-memory SIZE, for the chapters that load a file the reader chooses
+// (09's texture, 10's model): the most memory the file may make the chapter
+// spend, decoded, staged and on the GPU (vkt/core/memory_budget.hpp). One
+// definition, so that both chapters take and explain it alike.
+OptionSpec max_memory_option();
 
 std::string usage_line(std::string_view program, Flags flags = Flags::frame_loop,
                        std::span<const OptionSpec> chapter_options = {});

@@ -3,6 +3,8 @@
 // textures, chapter 10's glTF images), screenshots (--screenshot), the golden
 // image tests, and the difference image a failing test leaves behind.
 
+#include "vkt/core/memory_budget.hpp"
+
 #include <cstdint>
 #include <filesystem>
 #include <span>
@@ -19,17 +21,25 @@ struct RgbaImage {
 // Decodes a PNG (with libpng) or JPEG (with libjpeg-turbo) into 8-bit RGBA;
 // `what` names the bytes in the message: "WHAT: cannot decode image: <reason>",
 // the reason being "not a PNG or JPEG file", the decoder's own words (a bad
-// checksum, a file that ends early, ...) or the size check below. Grey,
+// checksum, a file that ends early, ...) or the size checks below. Grey,
 // palette and RGB images arrive as RGBA, alpha 255 where the file has none;
 // 16-bit PNG channels keep their high byte. No gamma is applied: the bytes
 // are the file's. From its header, before anything is decoded, an image is
-// refused if it is wider or taller than max_image_side, if it would cost more
-// than image_memory_budget (image_memory_cost), or (a PNG) if the file is too
-// small to hold the pixels its header claims.
+// refused if it is wider or taller than max_image_side, if what it would
+// cost (image_memory_cost, plus a progressive JPEG's coefficients) does not
+// fit what is left of `budget`, or if the file is too small to hold the
+// pixels its header claims (a PNG: its rows / 1032, deflate's best; a
+// Huffman-coded JPEG: a bit for every 8x8 block of its smallest component).
+// What it will cost is charged to `budget` before the pixels are allocated.
+RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what,
+                       MemoryBudget& budget);
+// The same with a budget of its own, of default_max_memory (2 GiB).
 RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what);
 
 // The same for a file: "cannot open FILE" (vkt::read_file) when it cannot be
-// read, then decode_image's messages, naming the file.
+// read, then decode_image's messages, naming the file. The file's bytes are
+// charged to the budget too.
+RgbaImage load_image_file(const std::filesystem::path& path, MemoryBudget& budget);
 RgbaImage load_image_file(const std::filesystem::path& path);
 
 // The largest side decode_image accepts: the most maxImageDimension2D that
@@ -39,12 +49,11 @@ constexpr uint32_t max_image_side = 16384;
 // What an image of width x height costs a chapter at its peak, in bytes: the
 // decoded RGBA pixels, then a staging copy and the GPU image (memory of the
 // machine's on lavapipe), each with every mip level (a chain adds a third:
-// x 4/3). So width x height x 4 x (1 + 4/3 + 4/3), 11/3 of the pixels.
+// x 4/3). So width x height x 4 x (1 + 4/3 + 4/3), 11/3 of the pixels:
+// 8192 x 8192 costs 939 MiB and fits the default 2 GiB of --max-memory;
+// 16384 x 16384 costs 3755 MiB, which froze an 8 GB laptop where it should
+// have failed (issue 25).
 uint64_t image_memory_cost(uint32_t width, uint32_t height);
-// The most one image may cost: 1 GiB lets an 8192 x 8192 texture through
-// (939 MiB) and refuses 16384 x 16384 (3.7 GiB), which froze an 8 GB laptop
-// where it should have failed (issue 25).
-constexpr uint64_t image_memory_budget = uint64_t(1) << 30;
 
 // The size a PNG or JPEG says it has, from what comes before its pixel data
 // (PNG: the chunks up to the first IDAT's type; JPEG: the markers up to the

@@ -26,6 +26,7 @@
 // leads out of the model's folder, names a directory or a file past 1 GiB
 // (the model's own files are all it may read: see vkt::resolve_inside).
 
+#include "vkt/core/memory_budget.hpp"
 #include "vkt/resources/image_io.hpp"
 
 #include <glm/glm.hpp>
@@ -84,8 +85,13 @@ struct GltfScene {
 // Loads a .gltf or .glb file (told apart by the file's first four bytes, not
 // its name). Throws vkt::Error with one line, "FILE: what is wrong", when the
 // file is missing, is not glTF, or holds anything this loader cannot draw
-// safely (see the top of this header).
-GltfScene load_gltf(const std::filesystem::path& path);
+// safely (see the top of this header). Everything large the file makes it
+// allocate (the file, buffers, decoded data: URIs, images decoded, staged and
+// mipmapped, accessors read, the scene's vertices and indices with their
+// staging and GPU copies) is counted against `max_memory` before it is
+// allocated, and refused by name with the numbers past it (--max-memory;
+// vkt/core/memory_budget.hpp).
+GltfScene load_gltf(const std::filesystem::path& path, uint64_t max_memory = default_max_memory);
 
 // The local matrix of a node as glTF defines it: `matrix` (16 numbers, column
 // by column) if given, else T * R * S from translation (x, y, z), rotation (a

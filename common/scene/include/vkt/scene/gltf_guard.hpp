@@ -21,6 +21,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace vkt {
 
@@ -69,6 +70,25 @@ std::string_view gltf_json_text(std::span<const char> file);
 // nullopt where there is no such array or the JSON ends early. Expects JSON
 // whose depth check_json_depth accepted.
 std::optional<size_t> json_array_size(std::string_view json, std::string_view member);
+
+// A data: URI of a buffer or an image, where its text lies in the JSON.
+struct JsonDataUri {
+    bool image = false;        // of "images"[index], else of "buffers"[index]
+    size_t index = 0;          // the element
+    size_t begin = 0;          // the string's first character (after its quote)
+    size_t end = 0;            // one past its last (its closing quote)
+    int64_t byte_length = -1;  // a buffer's "byteLength" where it is a whole number, else -1
+};
+// Every "uri" that begins "data:" in the root's "buffers" and "images",
+// found by a loop over the bytes like the checks above (no recursion, no
+// JSON library). A URI with an escape (a backslash) in it is left out:
+// its text is not its value.
+std::vector<JsonDataUri> json_data_uris(std::string_view json);
+
+// At most how many values (numbers, strings, literals, arrays, objects) the
+// JSON holds: the separators and brackets outside strings, plus one. What a
+// JSON library builds grows with this count, not with the text's length.
+size_t json_value_count(std::string_view json);
 
 // The "name" of element `index` of the root's array `member`, its escapes
 // undone (\uXXXX is kept as written); empty where it has none.
