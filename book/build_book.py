@@ -40,7 +40,11 @@ DIR/images/NAME.svg. A diagram that fails to draw, or has no text, is an error.
 Each page gets the sidebar (sticky on a wide screen, with a search box at its
 top; on a phone a bar at the top of the page links to it), and the builder
 writes search-index.js, the text of every page by section, for the search in
-book/theme/search.js. The stylesheet is book/theme/style.css.
+book/theme/search.js: each section's words sorted by where they stand (its
+heading; what the chapter's recap, whose entries link to their sections, says
+it teaches; its prose; its code; the comments in that code, without their
+`//`), so that the search ranks where a word is taught above where it is
+mentioned. The stylesheet is book/theme/style.css.
 
 Needs the standard library, python3-markdown and python3-pygments (Debian 12:
 markdown 3.4, pygments 2.14), and Graphviz's dot for the .dot diagrams.
@@ -564,35 +568,128 @@ def polish(body: str) -> str:
     return body
 
 
-def search_sections(page: Page) -> list[tuple[str, str, str]]:
-    """The page cut at its headings: (anchor, heading, plain text) for each part."""
-    heading_re = re.compile(r'<h([1-4])\b[^>]*\bid="([^"]*)"[^>]*>(.*?)</h\1>', re.S)
+# What a word's place on a page says about it, for the search: a section's
+# heading, what the recap's list of new calls says is taught there, its prose,
+# its code, and the comments inside that code (weakest: a passing remark).
+COMMENT_CLASSES = ("c", "c1", "cm", "ch", "cs")
+COMMENT_SPAN_RE = re.compile(r'<span class="(?:%s)">(.*?)</span>' % "|".join(COMMENT_CLASSES), re.S)
+# In a code block the highlighter did not colour (no language): `// ...` to the end of the line.
+PLAIN_COMMENT_RE = re.compile(r"(?:^|(?<=\s))//[^\n]*", re.M)
+CAPTION_RE = re.compile(r'<p class="source">.*?</p>', re.S)
+FILES_LIST_RE = re.compile(r'<ul class="chapter-files">.*?</ul>', re.S)
+HEADING_RE = re.compile(r'<h([1-4])\b[^>]*\bid="([^"]*)"[^>]*>(.*?)</h\1>', re.S)
+LOCAL_LINK_RE = re.compile(r'<a\b[^>]*\bhref="#([^"]+)"[^>]*>(.*?)</a>', re.S)
 
-    def plain(fragment: str) -> str:
-        # Block tags part words; inline ones (a highlighter's <span>s) do not.
-        spaced = re.sub(r"</?(?:p|br|li|ul|ol|div|h\d|pre|table|tr|td|th|blockquote)\b[^>]*>", " ", fragment)
-        return re.sub(r"\s+", " ", html.unescape(re.sub(r"<[^>]+>", "", spaced))).strip()
-    sections = []
-    matches = list(heading_re.finditer(page.body))
+
+def plain(fragment: str) -> str:
+    """HTML to plain text: block tags part words, inline ones (a highlighter's <span>s) do not."""
+    spaced = re.sub(r"</?(?:p|br|li|ul|ol|div|h\d|pre|table|tr|td|th|blockquote)\b[^>]*>", " ", fragment)
+    return re.sub(r"\s+", " ", html.unescape(re.sub(r"<[^>]+>", "", spaced))).strip()
+
+
+def comment_text(comment: str) -> str:
+    """A comment's words without its `//`, `/*`, `*/` or `#`."""
+    text = re.sub(r"^\s*(?://+|/\*+|\*+/?|#+)\s?", "", comment, flags=re.M)
+    return text.replace("*/", " ")
+
+
+@dataclass
+class SearchSection:
+    anchor: str
+    heading: str
+    prose: list[str] = field(default_factory=list)
+    code: list[str] = field(default_factory=list)
+    comments: list[str] = field(default_factory=list)
+    recap: list[str] = field(default_factory=list)
+
+
+def split_by_kind(fragment: str, section: SearchSection) -> None:
+    """Sorts a section's HTML into prose, code (captions and file lists included) and code comments."""
+    prose_parts, at = [], 0
+    blocks = list(re.finditer(r'<div class="highlight">.*?</pre>\s*</div>|<pre\b.*?</pre>', fragment, re.S))
+    for block in blocks:
+        prose_parts.append(fragment[at:block.start()])
+        at = block.end()
+        code = block.group(0)
+        if '<span class="' in code:
+            comments = [comment_text(html.unescape(re.sub(r"<[^>]+>", "", c)))
+                        for c in COMMENT_SPAN_RE.findall(code)]
+            section.code.append(plain(COMMENT_SPAN_RE.sub(" ", code)))
+        else:
+            text = html.unescape(re.sub(r"<[^>]+>", "", code))
+            comments = [comment_text(c) for c in PLAIN_COMMENT_RE.findall(text)]
+            section.code.append(re.sub(r"\s+", " ", PLAIN_COMMENT_RE.sub(" ", text)).strip())
+        section.comments.append(re.sub(r"\s+", " ", " ".join(comments)).strip())
+    prose = "".join(prose_parts) + fragment[at:]
+    for extra in (CAPTION_RE, FILES_LIST_RE):
+        section.code += [plain(m) for m in extra.findall(prose)]
+        prose = extra.sub(" ", prose)
+    section.prose.append(plain(prose))
+
+
+def recap_items(fragment: str) -> tuple[list[tuple[str, str]], str]:
+    """The recap's entries: (anchor, words) for each link into the page (a link's own
+    words, and the rest of its list item or paragraph for the item's first link),
+    and what links nowhere (left as the recap's own prose)."""
+    found: list[tuple[str, str]] = []
+    rest: list[str] = []
+    for item in re.findall(r"<li\b[^>]*>(.*?)</li>|<p\b[^>]*>(.*?)</p>", fragment, re.S):
+        item = item[0] or item[1]
+        links = LOCAL_LINK_RE.findall(item)
+        if not links:
+            rest.append(item)
+            continue
+        for anchor, text in links:
+            found.append((html.unescape(anchor), plain(text)))
+        found.append((html.unescape(links[0][0]), plain(LOCAL_LINK_RE.sub(" ", item))))
+    return found, " ".join(rest)
+
+
+def search_sections(page: Page) -> list[SearchSection]:
+    """The page cut at its headings, each part's words sorted by where they stand.
+    A chapter's recap is not a section of its own: its entries go to the sections
+    they link to, as what those sections teach."""
+    body = page.body
+    sections: list[SearchSection] = []
+    matches = list(HEADING_RE.finditer(body))
+    pieces = []
     if not matches or matches[0].start() > 0:
-        end = matches[0].start() if matches else len(page.body)
-        sections.append(("", page.title, plain(page.body[:end])))
+        pieces.append(("", page.title, body[:matches[0].start() if matches else len(body)]))
     for i, match in enumerate(matches):
-        end = matches[i + 1].start() if i + 1 < len(matches) else len(page.body)
-        sections.append((html.unescape(match.group(2)), plain(match.group(3)), plain(page.body[match.end():end])))
-    return [section for section in sections if section[2] or section[1]]
+        end = matches[i + 1].start() if i + 1 < len(matches) else len(body)
+        pieces.append((html.unescape(match.group(2)), plain(match.group(3)), body[match.end():end]))
+    recap: list[tuple[str, str]] = []
+    for anchor, heading, fragment in pieces:
+        section = SearchSection(anchor, heading)
+        if page.md_name[:2].isdigit() and heading == "Recap":
+            items, fragment = recap_items(fragment)
+            recap += items
+        split_by_kind(fragment, section)
+        sections.append(section)
+    by_anchor = {s.anchor: s for s in sections}
+    for anchor, words in recap:
+        if anchor in by_anchor:
+            by_anchor[anchor].recap.append(words)
+    return [s for s in sections if s.heading or any(s.prose) or s.code or s.recap]
 
 
 def search_index(pages: list[Page]) -> str:
     def kind(page: Page) -> str:
         if page.md_name == "index.md":
             return "index"
+        if page.md_name == "performance.md" or page.md_name.startswith("perf_"):
+            return "performance"
         return "chapter" if page.md_name[:2].isdigit() else "appendix"
+
+    def joined(parts: list[str]) -> str:
+        return " \u2022 ".join(p for p in parts if p.strip())
     data = {"pages": [[p.html_name, p.title, kind(p)] for p in pages], "sections": []}
     for number, page in enumerate(pages):
-        for anchor, heading, text in search_sections(page):
-            data["sections"].append([number, anchor, heading, text])
+        for s in search_sections(page):
+            data["sections"].append([number, s.anchor, s.heading, joined(s.recap), joined(s.prose),
+                                     joined(s.code), joined(s.comments)])
     return ("// The book's search index, written by book/build_book.py; read by search.js.\n"
+            "// Each section: [page, anchor, heading, recap, prose, code, code comments].\n"
             "window.BOOK_SEARCH_INDEX = " + json.dumps(data, ensure_ascii=False, separators=(",", ":")) + ";\n")
 
 
