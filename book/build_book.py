@@ -46,6 +46,11 @@ it teaches; its prose; its code; the comments in that code, without their
 `//`), so that the search ranks where a word is taught above where it is
 mentioned. The stylesheet is book/theme/style.css.
 
+Every SVG figure opens full size on a tap or click (book/theme/book.js), zoomed
+so that its smallest text is at least FIGURE_TEXT_PX pixels, and says so under
+it; every table scrolls sideways as a whole in a box of its own, with a line
+above it where it is wider than the column.
+
 Needs the standard library, python3-markdown and python3-pygments (Debian 12:
 markdown 3.4, pygments 2.14), and Graphviz's dot for the .dot diagrams.
 """
@@ -568,6 +573,81 @@ def polish(body: str) -> str:
     return body
 
 
+# Figures and tables that read at any width. An SVG figure shows shrunk to the
+# column; a tap or click opens it full size (book/theme/book.js), zoomed so its
+# smallest text is at least FIGURE_TEXT_PX pixels, and a line under it says so.
+FIGURE_TEXT_PX = 12
+FIGURE_HINT = "Tap or click the figure to open it full size."
+FIGURE_RE = re.compile(r'<a class="figure" href="images/([^"]+\.svg)">(<img\b[^>]*>)</a>')
+FONT_SIZE_RE = re.compile(r"font-size\s*:\s*([0-9.]+)(px|em|%)?|font\s*:[^;]*?([0-9.]+)(px|em|%)")
+
+
+def svg_text_metrics(svg: str) -> tuple[float, float] | None:
+    """An SVG's width in its own units (its viewBox, else its width) and the size of
+    its smallest text in the same units, following font sizes down the tree (an
+    attribute, a style's font-size or font, em and % of the parent's); None without
+    text or a width."""
+    try:
+        tree = ElementTree.fromstring(svg)
+    except ElementTree.ParseError:
+        return None
+    box = (tree.get("viewBox") or "").replace(",", " ").split()
+    try:
+        width = float(box[2]) if len(box) == 4 else float(re.match(r"[0-9.]+", tree.get("width", "")).group(0))
+    except (AttributeError, ValueError):
+        return None
+    smallest: list[float] = []
+
+    def size_of(element, inherited: float) -> float:
+        found = None
+        attribute = element.get("font-size")
+        if attribute:
+            found = re.match(r"\s*([0-9.]+)(px|em|%)?", attribute)
+            found = found and (found.group(1), found.group(2))
+        style = FONT_SIZE_RE.search(element.get("style", ""))
+        if style:
+            found = (style.group(1), style.group(2)) if style.group(1) else (style.group(3), style.group(4))
+        if not found:
+            return inherited
+        number, unit = float(found[0]), found[1]
+        return number * inherited if unit == "em" else number * inherited / 100 if unit == "%" else number
+
+    def walk(element, inherited: float) -> None:
+        size = size_of(element, inherited)
+        tag = element.tag.rsplit("}", 1)[-1]
+        if tag in ("text", "tspan") and (element.text or "").strip():
+            smallest.append(size)
+        for child in element:
+            walk(child, size)
+            if tag in ("text", "tspan") and (child.tail or "").strip():
+                smallest.append(size)
+    walk(tree, 16.0)
+    return (width, min(smallest)) if smallest and width > 0 else None
+
+
+def annotate_figures(body: str, svgs: dict[str, str]) -> str:
+    """Each SVG figure gets its width and smallest text (for the full-size view) and
+    the line under it that says it opens full size."""
+    def fix(match: re.Match) -> str:
+        metrics = svg_text_metrics(svgs.get(html.unescape(match.group(1)), ""))
+        if metrics is None:
+            return match.group(0)
+        width, text = metrics
+        return (f'<a class="figure" href="images/{match.group(1)}" data-width="{width:g}" '
+                f'data-min-text="{text:g}" data-text-px="{FIGURE_TEXT_PX}">{match.group(2)}</a>'
+                f'<span class="figure-hint">{FIGURE_HINT}</span>')
+    return FIGURE_RE.sub(fix, body)
+
+
+def wrap_tables(body: str) -> str:
+    """A table scrolls sideways as a whole inside its own box, never the page; a line
+    above it (shown by book/theme/book.js only where the table is wider than the
+    column) says so."""
+    return re.sub(r"(<table\b.*?</table>)",
+                  r'<div class="table-wrap"><p class="scroll-hint">Wider than the page: scroll the table '
+                  r'sideways &rarr;</p><div class="table-scroll" tabindex="0">\1</div></div>', body, flags=re.S)
+
+
 # What a word's place on a page says about it, for the search: a section's
 # heading, what the recap's list of new calls says is taught there, its prose,
 # its code, and the comments inside that code (weakest: a passing remark).
@@ -777,6 +857,7 @@ def document(title: str, book_title: str, prefix: str, side: str, content: str) 
 <link rel="stylesheet" href="{prefix}style.css">
 <link rel="stylesheet" href="{prefix}pygments.css">
 <script src="{prefix}search.js" defer></script>
+<script src="{prefix}book.js" defer></script>
 </head>
 <body>
 <header class="topbar">
@@ -911,6 +992,13 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
         except BookError as error:
             problems.append(str(error))
 
+    svgs = dict(assets.diagram_svgs)
+    for name, path in assets.images.items():
+        if name.endswith(".svg"):
+            svgs[name] = path.read_text(encoding="utf-8")
+    for page in pages:
+        page.body = wrap_tables(annotate_figures(page.body, svgs))
+
     if strict:
         problems += warnings
         warnings = []
@@ -922,9 +1010,10 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     out.mkdir(parents=True, exist_ok=True)
     shutil.copyfile(THEME / "style.css", out / "style.css")
     shutil.copyfile(THEME / "search.js", out / "search.js")
+    shutil.copyfile(THEME / "book.js", out / "book.js")
     (out / "pygments.css").write_text(pygments_css(), encoding="utf-8")
     (out / "search-index.js").write_text(search_index(pages), encoding="utf-8")
-    written += 4
+    written += 5
     for i, page in enumerate(pages):
         (out / page.html_name).write_text(render_page(pages, i), encoding="utf-8")
         written += 1

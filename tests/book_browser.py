@@ -232,6 +232,74 @@ PAGE_CHECK = r"""
 })()
 """
 
+# Figures: where each SVG figure shows, how wide at the default view and opened
+# full size (a click on it, book/theme/book.js), and whether the line under it
+# says that it opens. Tables: an identifier (inline code) broken over two lines,
+# and a table wider than its box without the line that says it scrolls.
+FIGURE_CHECK = r"""
+(async () => {
+  const figures = [];
+  for (const img of document.querySelectorAll('article img')) {
+    const src = img.getAttribute('src') || '';
+    if (!/\.svg$/.test(src)) continue;
+    const link = img.closest('a.figure');
+    const hint = link && link.nextElementSibling;
+    const said = !!(hint && hint.classList.contains('figure-hint') && hint.getBoundingClientRect().height > 0
+                    && /open it full size/.test(hint.textContent));
+    let opened = 0;
+    if (link) {
+      link.click();
+      const big = document.querySelector('.figure-layer .figure-pane img');
+      if (big) {
+        if (!big.complete) await new Promise(r => { big.onload = r; big.onerror = r; });
+        opened = big.getBoundingClientRect().width;
+      }
+      document.dispatchEvent(new KeyboardEvent('keydown', {key: 'Escape', bubbles: true}));
+      if (document.querySelector('.figure-layer')) opened = -1;  // did not close
+    }
+    figures.push({src, width: img.getBoundingClientRect().width, opened, said});
+  }
+  const broken = [];
+  for (const code of document.querySelectorAll('article table code')) {
+    const lines = new Set([...code.getClientRects()].map(r => Math.round(r.top)));
+    if (lines.size > 1) broken.push(code.textContent.slice(0, 40));
+  }
+  const unsaid = [];
+  for (const box of document.querySelectorAll('.table-scroll')) {
+    const hint = box.parentElement.querySelector('.scroll-hint');
+    const wide = box.scrollWidth > box.clientWidth + 1;
+    if (wide && !(hint && hint.getBoundingClientRect().height > 0)) {
+      unsaid.push((box.querySelector('th, td') || {}).textContent || '(a table)');
+    }
+  }
+  const loose = [...document.querySelectorAll('article table')].filter(t => !t.closest('.table-scroll')).length;
+  return {figures, broken, unsaid, loose};
+})()
+"""
+
+# In an SVG opened on its own: its rendered width and its smallest rendered text
+# (each text or tspan that holds characters: its computed font size times the
+# scale its transforms give it), so a figure W pixels wide shows that text at
+# smallest / width * W pixels.
+SVG_TEXT_CHECK = r"""
+(() => {
+  const root = document.documentElement;
+  let smallest = Infinity, which = '';
+  for (const el of document.querySelectorAll('text, tspan')) {
+    const own = [...el.childNodes].some(n => n.nodeType === 3 && n.textContent.trim());
+    if (!own || !el.getScreenCTM) continue;
+    const style = getComputedStyle(el);
+    if (style.display === 'none' || style.visibility === 'hidden') continue;
+    const m = el.getScreenCTM();
+    const px = parseFloat(style.fontSize) * Math.hypot(m.a, m.b);
+    if (px < smallest) { smallest = px; which = el.textContent.trim().slice(0, 30); }
+  }
+  return {width: root.getBoundingClientRect().width, smallest, which};
+})()
+"""
+# The smallest text a reader must read, in CSS pixels (the issue's bar).
+MIN_TEXT_PX = 11.0
+
 SEARCH_CHECK = r"""
 new Promise((resolve) => {
   const input = document.querySelector('form.search input');
@@ -254,6 +322,38 @@ new Promise((resolve) => {
   })();
 })
 """
+
+
+def check_figures(figures: list[tuple[str, int, dict]], svg_text: dict) -> tuple[list[str], str]:
+    """Every SVG figure's smallest text at least MIN_TEXT_PX at its default view, or, where
+    it is smaller there, once opened full size, with a line under the figure saying it
+    opens. Returns the problems and a note of which figures reach the bar only opened."""
+    problems, only_opened = [], []
+    at_default = 0
+    for page, width, figure in figures:
+        measured = svg_text.get(figure["src"])
+        if not measured or not measured["width"] or measured["smallest"] == float("inf"):
+            problems.append(f"{page} at {width} px: the figure {figure['src']} shows no text to measure")
+            continue
+        ratio = measured["smallest"] / measured["width"]
+        default = ratio * figure["width"]
+        if default >= MIN_TEXT_PX:
+            at_default += 1
+            continue
+        opened = ratio * figure["opened"]
+        where = (f"{page} at {width} px: the figure {figure['src']} shows its smallest text "
+                 f"('{measured['which']}') at {default:.1f} px")
+        if figure["opened"] < 0:
+            problems.append(f"{where}; opened full size, it does not close with Escape")
+        elif opened < MIN_TEXT_PX:
+            problems.append(f"{where}, and at {opened:.1f} px opened full size (the bar: {MIN_TEXT_PX:g} px)")
+        elif not figure["said"]:
+            problems.append(f"{where}, and nothing under it says it opens full size")
+        else:
+            only_opened.append(f"{figure['src'].split('/')[-1]} at {width} px: {default:.1f} -> {opened:.1f} px")
+    note = (f"{at_default} figure views read at {MIN_TEXT_PX:g} px or more as shown; {len(only_opened)} only "
+            f"opened full size ({'; '.join(sorted(set(only_opened)))})")
+    return problems, note
 
 
 def check_search(found: dict, query: str, page: str, section: str, book: Path, links) -> list[str]:
@@ -452,6 +552,8 @@ def main(argv: list[str]) -> int:
     pages = sorted(p.relative_to(book).as_posix() for p in book.rglob("*.html"))
     pages = [p for p in pages if re.search(args.pages, p)]
     problems: list[str] = []
+    figures: list[tuple[str, int, dict]] = []
+    figure_notes = ""
     links = LinkChecker(book)
     started = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="book-browser-") as temp:
@@ -479,11 +581,34 @@ def main(argv: list[str]) -> int:
                         problems.append(f"{page} at {width} px: scrolls sideways ({result['scrollWidth']} px "
                                         f"wide in a {result['width']} px window): {what}")
                     problems += problems_from_events(tab.events, page, width)
+                    shown = tab.evaluate(FIGURE_CHECK)
+                    for figure in shown["figures"]:
+                        figures.append((page, width, figure))
+                    for code in shown["broken"]:
+                        problems.append(f"{page} at {width} px: a table breaks the identifier '{code}' over lines")
+                    for cell in shown["unsaid"]:
+                        problems.append(f"{page} at {width} px: the table starting '{cell.strip()[:30]}' is wider "
+                                        "than its box and nothing says it scrolls")
+                    if shown["loose"]:
+                        problems.append(f"{page} at {width} px: {shown['loose']} table(s) outside a scrolling box")
                     if width == WIDTHS[0]:
                         for url in result["links"]:
                             problem = links.check(page, url)
                             if problem:
                                 problems.append(problem)
+
+            # Each SVG on its own, for its smallest text.
+            tab.call("Emulation.setDeviceMetricsOverride", width=1280, height=900, deviceScaleFactor=1,
+                     mobile=False)
+            svg_text = {}
+            for src in sorted({figure["src"] for _, _, figure in figures}):
+                target = book / urllib.parse.unquote(src)
+                tab.call("Page.navigate", url=target.as_uri())
+                tab.wait_for("Page.loadEventFired", time.monotonic() + args.timeout)
+                svg_text[src] = tab.evaluate(SVG_TEXT_CHECK)
+            tab.events.clear()
+            figure_problems, figure_notes = check_figures(figures, svg_text)
+            problems += figure_problems
 
             # The search: each query's teaching chapter and section first.
             tab.call("Emulation.setDeviceMetricsOverride", width=1280, height=900, deviceScaleFactor=1,
@@ -512,7 +637,7 @@ def main(argv: list[str]) -> int:
     print(f"book_browser.py: {len(pages)} pages at {' and '.join(map(str, WIDTHS))} px: every picture loaded, "
           f"nothing scrolls sideways, no console error, {len(links.checked)} links good; the search lists "
           f"the teaching chapter and section first for {len(SEARCH_QUERIES)} queries; every chart has axis "
-          f"labels and a legend ({seconds:.0f} s)")
+          f"labels and a legend; no table breaks an identifier; figure text: {figure_notes} ({seconds:.0f} s)")
     return 0
 
 
