@@ -58,6 +58,7 @@ markdown 3.4, pygments 2.14), and Graphviz's dot for the .dot diagrams.
 from __future__ import annotations
 
 import argparse
+import difflib
 import html
 import json
 import os
@@ -914,6 +915,128 @@ def render_source(root: Path, rel: str, pages: list[Page]) -> str:
 
 
 # --------------------------------------------------------------------------
+# What changed since the previous chapter
+# --------------------------------------------------------------------------
+
+# A chapter's own files, compared with the previous chapter's: its C++ (main.cpp
+# and local headers) and its shaders.
+CHANGE_SUFFIXES = (".cpp", ".hpp", ".vert", ".frag", ".comp", ".glsl")
+CHANGE_CONTEXT = 3  # unchanged lines shown around each change
+
+
+def chapter_files(root: Path, chapter: str) -> dict[str, str]:
+    """A chapter's files as {name shown: path relative to the root}: chapters/NN_name/*
+    and shaders/NN_name/*, matched with the previous chapter's by that name."""
+    found = {}
+    for folder, label in (("chapters", ""), ("shaders", "shaders/")):
+        base = root / folder / chapter
+        if base.is_dir():
+            for path in sorted(base.iterdir()):
+                if path.is_file() and path.suffix in CHANGE_SUFFIXES:
+                    found[label + path.name] = path.relative_to(root).as_posix()
+    return found
+
+
+def highlighted_lines(rel: str, text: str) -> list[str]:
+    """A file's lines as highlighted HTML, one string per line (the highlighter closes
+    its spans at each line end)."""
+    try:
+        lexer = get_lexer_for_filename(rel, stripnl=False)
+    except ClassNotFound:
+        lexer = get_lexer_by_name("glsl", stripnl=False) if rel.endswith((".vert", ".frag", ".comp", ".glsl")) \
+            else TextLexer(stripnl=False)
+    code = pygments.highlight(text, lexer, HtmlFormatter(nowrap=True))
+    lines = code.split("\n")
+    return lines[:len(text.splitlines())]
+
+
+@dataclass
+class ChapterChanges:
+    chapter: str          # "07_uniform_buffers"
+    previous: str         # "06_push_constants"
+    html: str             # the diffs
+    files: int            # files that differ, came or went
+    added: int
+    removed: int
+
+
+def file_diff(name: str, old_rel: str | None, new_rel: str | None, root: Path) -> tuple[str, int, int]:
+    """One file's changes as HTML (a table of numbered lines: context, removed, added)
+    and its counts of added and removed lines."""
+    old_text = (root / old_rel).read_text(encoding="utf-8") if old_rel else ""
+    new_text = (root / new_rel).read_text(encoding="utf-8") if new_rel else ""
+    old_lines, new_lines = old_text.splitlines(), new_text.splitlines()
+    old_html = highlighted_lines(old_rel, old_text) if old_rel else []
+    new_html = highlighted_lines(new_rel, new_text) if new_rel else []
+    matcher = difflib.SequenceMatcher(None, old_lines, new_lines, autojunk=False)
+    rows, added, removed = [], 0, 0
+
+    def row(kind: str, old_number, new_number, code: str) -> str:
+        sign = {"ctx": " ", "del": "-", "add": "+"}[kind]
+        return (f'<span class="d-{kind}"><span class="d-no">{old_number or ""}</span>'
+                f'<span class="d-no">{new_number or ""}</span><span class="d-sign">{sign}</span>{code}</span>')
+    for group in matcher.get_grouped_opcodes(CHANGE_CONTEXT):
+        first_old, first_new = group[0][1], group[0][3]
+        rows.append(f'<span class="d-hunk">@@ line {first_old + 1} of {old_rel or "(none)"}, '
+                    f'line {first_new + 1} of {new_rel or "(none)"} @@</span>')
+        for tag, i1, i2, j1, j2 in group:
+            if tag == "equal":
+                rows += [row("ctx", i + 1, j + 1, new_html[j]) for i, j in zip(range(i1, i2), range(j1, j2))]
+                continue
+            rows += [row("del", i + 1, None, old_html[i]) for i in range(i1, i2)]
+            rows += [row("add", None, j + 1, new_html[j]) for j in range(j1, j2)]
+            removed += i2 - i1
+            added += j2 - j1
+    if not rows:
+        return "", 0, 0
+    state = "new file" if not old_rel else "gone" if not new_rel else f"+{added} &minus;{removed}"
+    title = new_rel or old_rel
+    body = (f'<h2 id="{html.escape(re.sub(r"[^a-z0-9]+", "-", name.lower()).strip("-"))}">'
+            f'<code>{html.escape(title)}</code> <span class="d-count">{state}</span></h2>\n')
+    if not new_rel:
+        return body + f"<p>Not in this chapter: the previous chapter's own ({len(old_lines)} lines).</p>\n", 0, removed
+    return body + '<div class="highlight diff"><pre><code>' + "".join(rows) + "</code></pre></div>\n", added, removed
+
+
+def chapter_changes(root: Path, chapter: str, previous: str) -> ChapterChanges:
+    old, new = chapter_files(root, previous), chapter_files(root, chapter)
+    parts, files, added, removed = [], 0, 0, 0
+    names = sorted(set(old) | set(new), key=lambda n: (n.startswith("shaders/"), n != "main.cpp", n))
+    for name in names:
+        piece, plus, minus = file_diff(name, old.get(name), new.get(name), root)
+        if piece:
+            parts.append(piece)
+            files += 1
+            added += plus
+            removed += minus
+    return ChapterChanges(chapter, previous, "".join(parts), files, added, removed)
+
+
+def changes_page_name(chapter: str) -> str:
+    return f"changes_{chapter}.html"
+
+
+def changes_link(changes: ChapterChanges) -> str:
+    return (f'<p class="changes-link"><a href="{changes_page_name(changes.chapter)}">What changed since chapter '
+            f'{changes.previous[:2]}</a>: {changes.files} file{"s" if changes.files != 1 else ""}, '
+            f'+{changes.added} &minus;{changes.removed} lines in its own folders.</p>')
+
+
+def render_changes(changes: ChapterChanges, page: Page, previous: Page, pages: list[Page]) -> str:
+    title = f"Changes from chapter {changes.previous[:2]} to {changes.chapter[:2]}"
+    content = (f'<main class="changes"><article>\n<h1>{html.escape(title)}</h1>\n'
+               f'<p>Chapter <a href="{page.html_name}">{html.escape(page.title)}</a> against '
+               f'<a href="{previous.html_name}">{html.escape(previous.title)}</a>: each file of '
+               f'<code>chapters/{changes.chapter}/</code> and <code>shaders/{changes.chapter}/</code> beside the '
+               f'file of the same name in chapter {changes.previous[:2]}\'s folders, the lines that went in red '
+               f'(&minus;), those that came in green (+), {CHANGE_CONTEXT} unchanged lines around each change. '
+               f'What both chapters take from <code>common/</code> is not shown. {changes.files} '
+               f'file{"s" if changes.files != 1 else ""}, +{changes.added} &minus;{changes.removed} lines.</p>\n'
+               f'{changes.html}</article></main>')
+    return document(title, pages[0].title, "", sidebar(pages, None, ""), content)
+
+
+# --------------------------------------------------------------------------
 # The build
 # --------------------------------------------------------------------------
 
@@ -992,6 +1115,16 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
         except BookError as error:
             problems.append(str(error))
 
+    # Each chapter after the first: what changed since the one before, linked
+    # from the top of its page.
+    chapter_pages = [p for p in pages if p.md_name[:2].isdigit()]
+    changes: list[tuple[ChapterChanges, Page, Page]] = []
+    for previous, page in zip(chapter_pages, chapter_pages[1:]):
+        found = chapter_changes(root, page.md_name[:-3], previous.md_name[:-3])
+        if found.files:
+            changes.append((found, page, previous))
+            page.body = re.sub(r"(</h1>)", lambda m: m.group(1) + "\n" + changes_link(found), page.body, count=1)
+
     svgs = dict(assets.diagram_svgs)
     for name, path in assets.images.items():
         if name.endswith(".svg"):
@@ -1016,6 +1149,10 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     written += 5
     for i, page in enumerate(pages):
         (out / page.html_name).write_text(render_page(pages, i), encoding="utf-8")
+        written += 1
+    for found, page, previous in changes:
+        (out / changes_page_name(found.chapter)).write_text(render_changes(found, page, previous, pages),
+                                                           encoding="utf-8")
         written += 1
     if assets.images or assets.diagram_svgs:
         (out / "images").mkdir(exist_ok=True)

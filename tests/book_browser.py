@@ -356,6 +356,25 @@ def check_figures(figures: list[tuple[str, int, dict]], svg_text: dict) -> tuple
     return problems, note
 
 
+def check_changes(book: Path) -> list[str]:
+    """Every chapter after the first links, at its top, to its changes since the one
+    before (changes_NN_name.html), which shows its main.cpp against the previous one's."""
+    problems = []
+    chapters = sorted(p for p in book.glob("[0-9][0-9]_*.html"))
+    for page in chapters[1:]:
+        text = page.read_text(encoding="utf-8")
+        link = re.search(r'<p class="changes-link"><a href="(changes_[^"]+\.html)"', text)
+        if not link or text.find('class="changes-link"') > text.find("</h1>") + 200:
+            problems.append(f"{page.name}: no link to its changes since the previous chapter under its title")
+            continue
+        changes = book / link.group(1)
+        if not changes.is_file():
+            problems.append(f"{page.name}: its changes page {link.group(1)} does not exist")
+        elif f"chapters/{page.stem}/main.cpp" not in changes.read_text(encoding="utf-8"):
+            problems.append(f"{link.group(1)}: no diff of chapters/{page.stem}/main.cpp")
+    return problems
+
+
 def check_search(found: dict, query: str, page: str, section: str, book: Path, links) -> list[str]:
     """The first result of one query is `page`, linked at a section matching `section`
     that the page has; no snippet shows a code comment's raw `//`."""
@@ -627,6 +646,7 @@ def main(argv: list[str]) -> int:
                 stop_chromium(process)
 
     problems += check_charts(book)
+    problems += check_changes(book)
     for problem in dict.fromkeys(problems):
         print(f"book_browser.py: {problem}", file=sys.stderr)
     seconds = time.monotonic() - started
@@ -637,7 +657,7 @@ def main(argv: list[str]) -> int:
     print(f"book_browser.py: {len(pages)} pages at {' and '.join(map(str, WIDTHS))} px: every picture loaded, "
           f"nothing scrolls sideways, no console error, {len(links.checked)} links good; the search lists "
           f"the teaching chapter and section first for {len(SEARCH_QUERIES)} queries; every chart has axis "
-          f"labels and a legend; no table breaks an identifier; figure text: {figure_notes} ({seconds:.0f} s)")
+          f"labels and a legend; every chapter after the first links its changes page; no table breaks an identifier; figure text: {figure_notes} ({seconds:.0f} s)")
     return 0
 
 
