@@ -46,6 +46,11 @@ it teaches; its prose; its code; the comments in that code, without their
 `//`), so that the search ranks where a word is taught above where it is
 mentioned. The stylesheet is book/theme/style.css.
 
+The builder also writes book.html, every page in reading order on one page
+(ids prefixed with the page's name, links between pages made links within
+it), which tests/book_pdf.py prints to book.pdf with Chromium, a chapter to a
+new sheet.
+
 Every SVG figure opens full size on a tap or click (book/theme/book.js), zoomed
 so that its smallest text is at least FIGURE_TEXT_PX pixels, and says so under
 it; every table scrolls sideways as a whole in a box of its own, with a line
@@ -1037,6 +1042,64 @@ def render_changes(changes: ChapterChanges, page: Page, previous: Page, pages: l
 
 
 # --------------------------------------------------------------------------
+# The whole book on one page, for print (and the PDF)
+# --------------------------------------------------------------------------
+
+PRINT_PAGE = "book.html"
+ID_ATTR_RE = re.compile(r'\bid="([^"]*)"')
+HREF_RE = re.compile(r'<a\b([^>]*?)\bhref="([^"]*)"')
+
+
+def print_body(page: Page, page_names: set[str]) -> str:
+    """A page's HTML for the one-page book: its ids prefixed with its name, so that
+    no two pages' ids meet, and its links pointed at those ids (a link out of the
+    book's pages, to a source file or a picture, keeps its words and loses its
+    target: a printed page cannot follow it)."""
+    stem = page.html_name[:-5]
+    body = ID_ATTR_RE.sub(lambda m: f'id="{stem}--{m.group(1)}"', page.body)
+
+    def link(match: re.Match) -> str:
+        attrs, target = match.group(1), html.unescape(match.group(2))
+        if re.match(r"^[a-zA-Z][a-zA-Z0-9+.-]*:", target):
+            return match.group(0)
+        path, _, anchor = target.partition("#")
+        if not path:
+            return f'<a{attrs}href="#{html.escape(stem)}--{html.escape(anchor)}"'
+        if path in page_names:
+            other = path[:-5]
+            return f'<a{attrs}href="#{html.escape(other + "--" + anchor if anchor else other)}"'
+        return f"<a{attrs}"
+    return HREF_RE.sub(link, body)
+
+
+def render_print(pages: list[Page]) -> str:
+    names = {p.html_name for p in pages}
+    parts = []
+    for page in pages:
+        part = part_of(page.md_name)
+        parts.append(f'<section class="print-page" id="{page.html_name[:-5]}" data-part="{html.escape(part)}">\n'
+                     f'{print_body(page, names)}\n</section>')
+    title = pages[0].title
+    return f"""<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>{html.escape(title)}</title>
+<link rel="stylesheet" href="style.css">
+<link rel="stylesheet" href="pygments.css">
+<script src="book.js" defer></script>
+</head>
+<body class="print-book">
+<main><article>
+{"".join(parts)}
+</article></main>
+</body>
+</html>
+"""
+
+
+# --------------------------------------------------------------------------
 # The build
 # --------------------------------------------------------------------------
 
@@ -1150,6 +1213,8 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     for i, page in enumerate(pages):
         (out / page.html_name).write_text(render_page(pages, i), encoding="utf-8")
         written += 1
+    (out / PRINT_PAGE).write_text(render_print(pages), encoding="utf-8")
+    written += 1
     for found, page, previous in changes:
         (out / changes_page_name(found.chapter)).write_text(render_changes(found, page, previous, pages),
                                                            encoding="utf-8")
