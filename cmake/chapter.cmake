@@ -1,10 +1,15 @@
-# vkt_add_chapter(<NN_name> [SHADERS files...] [SHARED_SHADERS files...])
+# vkt_add_chapter(<NN_name> [OVERLAY] [SHADERS files...] [SHARED_SHADERS files...])
 # One executable per chapter, linked to the helper library. SHADERS live in
 # shaders/<NN_name>/; SHARED_SHADERS (paths under shaders/common/) are what an
 # earlier chapter taught and a later one reuses. Both compile into the
 # chapter's own SPIR-V folder, so no chapter loads another chapter's files.
+# OVERLAY: the chapter has the on-screen overlay (ChapterSpec::overlay,
+# chapter 21), whose shaders it then carries too.
 function(vkt_add_chapter name)
-  cmake_parse_arguments(ARG "" "" "SHADERS;SHARED_SHADERS" ${ARGN})
+  cmake_parse_arguments(ARG "OVERLAY" "" "SHADERS;SHARED_SHADERS" ${ARGN})
+  if(ARG_OVERLAY)
+    list(APPEND ARG_SHARED_SHADERS overlay/overlay.vert overlay/overlay.frag)
+  endif()
   add_executable(${name} main.cpp)
   target_link_libraries(${name} PRIVATE vkt vkt_warnings)
   add_dependencies(${name} vkt_assets)

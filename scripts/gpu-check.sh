@@ -80,4 +80,6 @@ fi
 [ -x "$bin/18_ndim_cpu" ] && sweep 18_ndim_cpu benchmarks/18_ndim_cpu.sh "$bin"
 [ -x "$bin/19_ndim_gpu" ] && sweep 19_ndim_gpu benchmarks/19_ndim_gpu.sh "$bin" 1 offscreen
 [ -x "$bin/20_ndim_compute" ] && sweep 20_ndim_compute benchmarks/20_ndim_compute.sh "$bin" 1 offscreen
+[ -x "$bin/21_multisampling" ] && sweep 21_multisampling benchmarks/21_multisampling.sh "$bin"
+[ -x "$bin/22_shadows" ] && sweep 22_shadows benchmarks/22_shadows.sh "$bin"
 exit $status

@@ -30,6 +30,7 @@ apt_common=(
   build-essential cmake ninja-build pkg-config
   libvulkan-dev vulkan-validationlayers glslang-tools vulkan-tools
   libglfw3-dev libglm-dev libtinygltf-dev libpng-dev libjpeg-dev libstb-dev libx11-dev
+  libimgui-dev
   xvfb xauth xdotool openbox wmctrl stress-ng
   python3 python3-markdown python3-pygments
   python3-matplotlib python3-pil fonts-dejavu-core graphviz shellcheck clang clang-tidy
@@ -55,7 +56,7 @@ fedora_packages=(
   gcc-c++ cmake ninja-build pkgconf-pkg-config
   vulkan-loader-devel vulkan-headers vulkan-validation-layers glslang vulkan-tools
   mesa-vulkan-drivers glfw-devel glm-devel tinygltf-devel libpng-devel libjpeg-turbo-devel
-  stb-devel catch-devel libX11-devel
+  stb-devel catch-devel libX11-devel imgui-devel
   xorg-x11-server-Xvfb xorg-x11-xauth xdotool openbox wmctrl stress-ng
   python3 python3-markdown python3-pygments python3-matplotlib graphviz chromium
   ShellCheck clang clang-tools-extra compiler-rt json-devel gdb
@@ -63,7 +64,7 @@ fedora_packages=(
 arch_packages=(
   base-devel cmake ninja pkgconf
   vulkan-icd-loader vulkan-headers vulkan-validation-layers glslang vulkan-tools
-  vulkan-swrast glfw glm tinygltf libpng libjpeg-turbo stb catch2 libx11
+  vulkan-swrast glfw glm tinygltf libpng libjpeg-turbo stb catch2 libx11 imgui
   xorg-server-xvfb xorg-xauth xdotool openbox wmctrl stress-ng
   python python-markdown python-pygments python-matplotlib graphviz chromium
   shellcheck clang compiler-rt nlohmann-json gdb

@@ -3,8 +3,9 @@
 //
 //   vkt_chapter_check --exe PATH --out DIR --name NAME [--golden PNG [--exact]]
 //                     [--exit N] [--expect REGEX]... [--pixel X,Y,R,G,B[,TOL]]...
+//                     [--between X,Y,W,H,R,G,B,R,G,B,MIN,MAX]...
 //                     [--isolate DIR] -- ARGS...
-//   vkt_chapter_check --png FILE [--pixel X,Y,R,G,B[,TOL]]...
+//   vkt_chapter_check --png FILE [--pixel X,Y,R,G,B[,TOL]]... [--between ...]...
 //
 // It runs PATH ARGS (with --screenshot DIR/NAME.png added when --golden or a
 // --pixel is given and ARGS names no screenshot of its own), keeps its stdout
@@ -12,6 +13,10 @@
 // is N (default 0); with exit 0 and --validation in ARGS, stderr says
 // "validation: 0 warnings, 0 errors"; every REGEX matches stdout or stderr;
 // every --pixel of the screenshot has that colour (within TOL, default 1);
+// in each --between rectangle (W x H pixels from X,Y), where both colours
+// must appear (within 2), from MIN to MAX pixels lie strictly between them
+// (every channel within the two colours' range, give or take 2, and more
+// than 2 from each colour in some channel: an edge's blend, chapter 21);
 // and the screenshot is within vkt::Tolerance of the golden image (with
 // --exact: equal to it in every pixel, for two ways of drawing that must
 // agree to the bit). The --png form checks the pixels of an existing picture.
@@ -165,6 +170,52 @@ int check_pixels(const vkt::RgbaImage& actual, const std::vector<std::string>& p
     return 0;
 }
 
+// Each spec is "x,y,w,h,r,g,b,r,g,b,min,max": see --between above.
+int check_blends(const vkt::RgbaImage& actual, const std::vector<std::string>& specs) {
+    for (const auto& spec : specs) {
+        unsigned x0, y0, w, h, a[3], b[3], least, most;
+        const int fields =
+            std::sscanf(spec.c_str(), "%u,%u,%u,%u,%u,%u,%u,%u,%u,%u,%u,%u", &x0, &y0, &w, &h,
+                        &a[0], &a[1], &a[2], &b[0], &b[1], &b[2], &least, &most);
+        if (fields != 12 || x0 + w > actual.width || y0 + h > actual.height)
+            return fail("bad --between " + spec + " for a " + std::to_string(actual.width) + "x" +
+                        std::to_string(actual.height) + " picture");
+        constexpr int slack = 2;
+        auto near = [](const uint8_t* p, const unsigned* c) {
+            for (int k = 0; k < 3; ++k)
+                if (std::abs(int(p[k]) - int(c[k])) > slack) return false;
+            return true;
+        };
+        unsigned blends = 0, as_a = 0, as_b = 0;
+        for (unsigned y = y0; y < y0 + h; ++y)
+            for (unsigned x = x0; x < x0 + w; ++x) {
+                const uint8_t* p = &actual.pixels[(size_t{y} * actual.width + x) * 4];
+                if (near(p, a)) {
+                    ++as_a;
+                    continue;
+                }
+                if (near(p, b)) {
+                    ++as_b;
+                    continue;
+                }
+                bool inside = true;
+                for (int k = 0; k < 3; ++k)
+                    inside = inside && int(p[k]) >= int(std::min(a[k], b[k])) - slack &&
+                             int(p[k]) <= int(std::max(a[k], b[k])) + slack;
+                blends += inside ? 1 : 0;
+            }
+        std::printf("--between %s: %u pixels of the first colour, %u of the second, %u between\n",
+                    spec.c_str(), as_a, as_b, blends);
+        if (as_a == 0 || as_b == 0)
+            return fail("--between " + spec + ": the rectangle does not hold both colours");
+        if (blends < least || blends > most)
+            return fail("--between " + spec + ": " + std::to_string(blends) +
+                        " pixels lie between the two colours, expected " + std::to_string(least) +
+                        " to " + std::to_string(most));
+    }
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -173,7 +224,7 @@ int main(int argc, char** argv) {
     int expected_exit = 0;
     fs::path isolate, png_only;
     bool exact = false;
-    std::vector<std::string> expects, pixels, chapter_args;
+    std::vector<std::string> expects, pixels, blends, chapter_args;
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
         auto next = [&]() -> std::string {
@@ -196,6 +247,8 @@ int main(int argc, char** argv) {
             png_only = next();
         else if (arg == "--pixel")
             pixels.push_back(next());
+        else if (arg == "--between")
+            blends.push_back(next());
         else if (arg == "--isolate")
             isolate = next();
         else if (arg == "--exact")
@@ -207,7 +260,9 @@ int main(int argc, char** argv) {
             return fail("unknown checker argument " + arg);
     }
     if (!png_only.empty()) {  // no run: only check the pixels of an existing picture
-        if (int failed = check_pixels(vkt::read_png(png_only), pixels)) return failed;
+        const vkt::RgbaImage picture = vkt::read_png(png_only);
+        if (int failed = check_pixels(picture, pixels)) return failed;
+        if (int failed = check_blends(picture, blends)) return failed;
         std::printf("PASS\n");
         return 0;
     }
@@ -235,7 +290,8 @@ int main(int argc, char** argv) {
         std::find(chapter_args.begin(), chapter_args.end(), "--screenshot") != chapter_args.end();
     if (!golden.empty() && own_screenshot)
         return fail("--golden takes the checker's own screenshot: leave --screenshot out of ARGS");
-    const bool picture = !golden.empty() || (!pixels.empty() && !own_screenshot);
+    const bool checks = !pixels.empty() || !blends.empty();
+    const bool picture = !golden.empty() || (checks && !own_screenshot);
     if (picture) {
         args.push_back("--screenshot");
         args.push_back(screenshot.string());
@@ -266,19 +322,22 @@ int main(int argc, char** argv) {
             !std::regex_search(err, std::regex(pattern)))
             return fail("no output matches /" + pattern + "/");
 
-    if (!pixels.empty() && own_screenshot)
+    if (checks && own_screenshot)
         return fail(
-            "--pixel needs the checker's own screenshot; check a picture the chapter "
+            "--pixel and --between need the checker's own screenshot; check a picture the chapter "
             "wrote itself with --png FILE");
     if (picture && golden.empty()) {
         if (!fs::exists(screenshot)) return fail("the chapter wrote no screenshot");
-        if (int failed = check_pixels(vkt::read_png(screenshot), pixels)) return failed;
+        const vkt::RgbaImage actual = vkt::read_png(screenshot);
+        if (int failed = check_pixels(actual, pixels)) return failed;
+        if (int failed = check_blends(actual, blends)) return failed;
     }
     if (!golden.empty()) {
         if (!fs::exists(screenshot)) return fail("the chapter wrote no screenshot");
         // The hand-worked pixels come first: not even blessing may contradict them.
         const vkt::RgbaImage actual = vkt::read_png(screenshot);
         if (int failed = check_pixels(actual, pixels)) return failed;
+        if (int failed = check_blends(actual, blends)) return failed;
         if (const char* bless = std::getenv("VKT_BLESS"); bless && std::string(bless) == "1") {
             fs::create_directories(golden.parent_path());
             fs::copy_file(screenshot, golden, fs::copy_options::overwrite_existing);

@@ -1,6 +1,7 @@
 // Chapter 17: tiled deferred shading.
 //
-// Chapter 16's scene and G-buffer, under thousands of moving point lights.
+// Chapter 16's scene and G-buffer, under thousands of moving point lights,
+// which a compute pass moves each frame (light_motion.hpp).
 // Chapter 16's lighting pass tests every light at every pixel; here a compute
 // pass first cuts the screen into 16 x 16 pixel tiles, finds each tile's depth
 // range, and keeps for each tile only the lights whose spheres may touch the
@@ -9,7 +10,10 @@
 //   --shade fragment: the compute pass writes the lists to a buffer and a
 //                     full-screen triangle lights the pixels (three passes);
 //   --shade compute:  one dispatch culls and lights, the list never leaving
-//                     shared memory; the result is copied to the target.
+//                     shared memory; the result is copied to the target;
+//   --shade lists:    as fragment, but the lighting is a compute pass, one
+//                     invocation per pixel (the experiment of the
+//                     performance part: what the fragment launch costs).
 //
 // Which lights a tile tests is the second choice:
 //
@@ -23,11 +27,12 @@
 // bins compares the binned lists and pictures with the tiled ones.
 //
 // Where the parts live: chapter 16's G-buffer pass in vkt/scene/gbuffer_pass.hpp;
-// the binning in bin_pass.hpp; the tile pass (cull, or cull and shade) in
-// tile_pass.hpp; the fragment lighting pass in lighting_pass.hpp; the checks
-// in verify_brute.hpp and verify_bins.hpp; the frame's data and the frame here.
+// the lights' motion in light_motion.hpp; the binning in bin_pass.hpp; the tile pass (cull, or cull
+// and shade) in tile_pass.hpp; the fragment lighting pass in lighting_pass.hpp; the checks in
+// verify_brute.hpp and verify_bins.hpp; the frame's data and the frame here.
 
 #include "bin_pass.hpp"
+#include "light_motion.hpp"
 #include "lighting_pass.hpp"
 #include "tile_pass.hpp"
 #include "verify_bins.hpp"
@@ -40,6 +45,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -61,11 +67,11 @@ public:
         : gpu_(context.gpu()),
           device_(context.device),
           compute_(context.options.text("--shade") == "compute"),
+          lists_(context.options.text("--shade") == "lists"),
           binned_(context.options.text("--cull") == "binned"),
           verify_(context.options.has("--verify") ? context.options.text("--verify") : ""),
           view_(context.options.text("--view") == "heat" ? view_heat : view_lit),
           light_count_(uint32_t(context.options.integer("--lights"))),
-          verify_frame_(context.options.frames.value_or(1) - 1),
           frame_layout_(create_frame_layout(device_)),
           screen_layout_(create_screen_layout(device_)),
           layout_(create_layout(device_, frame_layout_, screen_layout_)),
@@ -79,10 +85,12 @@ public:
           lighting_(context, layout_, verify_.empty() ? VK_FORMAT_UNDEFINED : verify_format),
           moving_(light_count_) {
         std::fprintf(stderr, "17_tiled_deferred: %u light%s, shade %s, view %s, cull %s\n",
-                     light_count_, light_count_ == 1 ? "" : "s", compute_ ? "compute" : "fragment",
+                     light_count_, light_count_ == 1 ? "" : "s",
+                     context.options.text("--shade").c_str(),
                      context.options.text("--view").c_str(), binned_ ? "binned" : "tiled");
         create_frame_data(context.frames_in_flight,
                           context.properties.limits.maxStorageBufferRange);
+        motion_.emplace(context, moving_, lights_);
         resize(context.extent);
     }
 
@@ -116,10 +124,15 @@ public:
     // [frame]
     void record(const vkt::Frame& frame) override {
         read_stats(frame.slot);  // the last use of this slot is finished
-        update(frame.slot, frame.extent, float(frame.time));
-        if (!verify_.empty() && frame.index == verify_frame_) verify(frame.slot, frame.extent);
+        const float t = float(frame.time);
+        update(frame.slot, frame.extent, t);
+        last_ = {frame.slot, frame.extent, t};  // what verify() checks
         const VkCommandBuffer cmd = frame.cmd;
         const ch17::PassSets sets = pass_sets(frame.slot);
+        {
+            auto scope = frame.gpu_scope("move");  // every light to where it is at t
+            motion_->record(cmd, frame.slot, t);
+        }
         {
             auto scope = frame.gpu_scope("gbuffer");
             gbuffer_.record(cmd, sets.frame_set, frame.extent, objects_);
@@ -139,6 +152,15 @@ public:
             {
                 auto scope = frame.gpu_scope("cull");
                 tiles_.cull(cmd, sets, frame.extent, view_, binned_);
+            }
+            if (lists_) {
+                {
+                    auto scope = frame.gpu_scope("lighting");  // in compute
+                    lighting_.dispatch(cmd, sets, frame.extent, tiles_, view_);
+                }
+                auto scope = frame.gpu_scope("copy");
+                tiles_.copy_to_target(cmd, frame.target, frame.extent);
+                return;
             }
             auto scope = frame.gpu_scope("lighting");
             lighting_.draw(cmd, sets, frame.extent, frame.target_view, ch17::LightingPass::tiled,
@@ -205,7 +227,11 @@ private:
         for (uint32_t i = 0; i < slots; ++i) {
             uniforms_.push_back(vkt::create_host_buffer(gpu_, sizeof(FrameUniforms),
                                                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT));
-            lights_.push_back(create_lights_buffer(lights_size, i == 0));
+            // Written by the motion pass, read by the others; --verify copies it out.
+            lights_.push_back(vkt::create_buffer(
+                gpu_.physical, device_, lights_size,
+                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT));
             stats_.push_back(vkt::create_host_buffer(gpu_, sizeof(TileStats),
                                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
             std::memset(stats_[i].mapped, 0, sizeof(TileStats));
@@ -221,40 +247,16 @@ private:
         screen_set_ = vkt::allocate_descriptor_set(device_, pool_, screen_layout_);
     }
 
-    // [lights-memory]
-    // A million lights are 32 MiB a frame, read by every pass. Where the device
-    // has memory of its own that the CPU can map (DEVICE_LOCAL and
-    // HOST_VISIBLE: all of it with a resizable BAR), the CPU writes the lights
-    // there and the passes read them at the GPU memory's speed; elsewhere they
-    // stay in chapter 07's host memory and cross the bus. On lavapipe all
-    // memory is both.
-    vkt::Buffer create_lights_buffer(VkDeviceSize size, bool say) const {
-        const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-        try {
-            vkt::Buffer buffer = vkt::create_buffer(gpu_.physical, device_, size, usage,
-                                                    VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT |
-                                                        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
-                                                        VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-            if (say) std::fprintf(stderr, "17_tiled_deferred: lights in device-local memory\n");
-            return buffer;
-        } catch (const vkt::Error&) {  // no such memory type, or too little of it
-            if (say) std::fprintf(stderr, "17_tiled_deferred: lights in host memory\n");
-            return vkt::create_host_buffer(gpu_, size, usage);
-        }
-    }
-    // [/lights-memory]
-
     ch17::PassSets pass_sets(uint32_t slot) const {
         return {layout_, frame_sets_[slot], screen_set_, stats_[slot].buffer};
     }
 
-    // Chapter 16's frame: the same camera, materials, shapes and lights; the
-    // lights (make_lights') written by MovingLights, fast enough for a million.
+    // Chapter 16's frame: the same camera, materials and shapes; the lights
+    // are the motion pass's.
     void update(uint32_t slot, VkExtent2D extent, float t) {
         const FrameUniforms frame =
             frame_uniforms(float(extent.width) / float(extent.height), light_count_);
         std::memcpy(uniforms_[slot].mapped, &frame, sizeof frame);
-        moving_.write(t, static_cast<vkt::PointLight*>(lights_[slot].mapped));
         objects_ = make_objects(t);
     }
 
@@ -287,17 +289,27 @@ private:
     }
 
     // [verify]
-    // --verify brute (verify_brute.hpp): this frame once more, into float
-    // images: chapter 16's lighting pass over every light, the tiled fragment
-    // pass and the tiled compute pass (culling as --cull says), from one
-    // G-buffer. --verify bins (verify_bins.hpp): the lists and pictures of
-    // --cull tiled and --cull binned, from one G-buffer.
-    void verify(uint32_t slot, VkExtent2D e) {
+    // Once the runner's loop is over and the GPU idle, on the last frame's
+    // scene. Both checks first compare the lights the GPU moved to that
+    // frame's time with the CPU's (light_motion.hpp). --verify brute
+    // (verify_brute.hpp): the frame once more, into float images: chapter
+    // 16's lighting pass over every light, the tiled fragment pass and the
+    // tiled compute pass (culling as --cull says), from one G-buffer.
+    // --verify bins (verify_bins.hpp): the lists and pictures of --cull
+    // tiled and --cull binned, from one G-buffer.
+    void verify() override {
+        if (verify_.empty()) return;
+        const uint32_t slot = last_.slot;
+        const VkExtent2D e = last_.extent;
+        const float t = last_.time;
+        count_stats(slot);  // the last frame's counts, before the checks count their own
+        motion_->verify(slot, t, moving_);
         const ch17::PassSets sets = pass_sets(slot);
         const LightingPush everything{view_lit, 0, light_count_, 1.0f};
         const int32_t lit = view_lit;
         using Lighting = ch17::LightingPass;
         auto gbuffer_and_bins = [&](VkCommandBuffer cmd) {
+            motion_->record(cmd, slot, t);
             gbuffer_.record(cmd, sets.frame_set, e, objects_);
             bins_.record(cmd, sets);  // whichever --cull: --verify bins needs both
         };
@@ -327,11 +339,15 @@ private:
 
     vkt::Gpu gpu_;
     VkDevice device_;
-    bool compute_, binned_;
+    bool compute_, lists_, binned_;
     std::string verify_;  // "", "brute" or "bins"
     int32_t view_;
     uint32_t light_count_;
-    uint64_t verify_frame_;
+    struct {
+        uint32_t slot = 0;
+        VkExtent2D extent{};
+        float time = 0.0f;
+    } last_;  // the last frame recorded
     // Declared in the order they are made: each part needs those above it.
     vkt::DescriptorSetLayout frame_layout_, screen_layout_;
     vkt::PipelineLayout layout_;
@@ -340,9 +356,10 @@ private:
     ch17::TilePass tiles_;
     ch17::BinPass bins_;
     ch17::LightingPass lighting_;
-    MovingLights moving_;
+    MovingLights moving_;  // the lights' homes and paths; the CPU reference
     vkt::DescriptorPool pool_;
     std::vector<vkt::Buffer> uniforms_, lights_, stats_;  // [slot]
+    std::optional<ch17::LightMotion> motion_;             // made once lights_ is
     std::vector<bool> stats_pending_;                     // [slot]
     std::vector<VkDescriptorSet> frame_sets_;             // [slot]
     VkDescriptorSet screen_set_ = VK_NULL_HANDLE;
@@ -361,16 +378,17 @@ int main(int argc, char** argv) {
     // size for Vulkan 1.3 as LocalSizeId, which needs it.
     spec.requirements.features = {VKT_FEATURE_12(separateDepthStencilLayouts),
                                   VKT_FEATURE_13(maintenance4)};
-    // --shade compute copies its shaded image into the frame.
+    // --shade compute and lists copy their shaded image into the frame.
     spec.transfers_into_target = true;
     spec.options = {
         {.name = "--shade",
          .type = vkt::OptionType::choice,
          .value_name = "PASS",
-         .help = "fragment (a compute pass writes light lists, a fragment pass lights) or "
-                 "compute (one dispatch culls and lights)",
+         .help = "fragment (a compute pass writes light lists, a fragment pass lights), "
+                 "compute (one dispatch culls and lights) or lists (as fragment, the lighting "
+                 "in compute)",
          .default_value = "fragment",
-         .choices = {"fragment", "compute"}},
+         .choices = {"fragment", "compute", "lists"}},
         {.name = "--cull",
          .type = vkt::OptionType::choice,
          .value_name = "HOW",

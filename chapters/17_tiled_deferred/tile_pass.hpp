@@ -120,7 +120,8 @@ public:
     // [cull]
     // One workgroup per tile writes the tile's list. The buffers are shared by
     // the frames in flight: wait for the last frame's lighting pass to finish
-    // reading them; afterwards, make the lists visible to this frame's.
+    // reading them; afterwards, make the lists visible to this frame's (a
+    // fragment pass, or with --shade lists a compute pass).
     void cull(VkCommandBuffer cmd, const PassSets& sets, VkExtent2D extent, int32_t view,
               bool binned) const {
         tiles_to_write(cmd);
@@ -129,10 +130,11 @@ public:
         vkCmdDispatch(cmd, grid.x, grid.y, 1);
         const VkBuffer buffers[] = {counts_.buffer, lists_.buffer};
         for (VkBuffer buffer : buffers)
-            vkt::buffer_barrier(cmd, buffer, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                                VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+            vkt::buffer_barrier(
+                cmd, buffer, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
         stats_to_host(cmd, sets.stats);
     }
     // [/cull]
@@ -143,20 +145,28 @@ public:
     // copy to have read it; afterwards, make the writes visible to the copy.
     void shade(VkCommandBuffer cmd, const PassSets& sets, VkExtent2D extent, int32_t view,
                bool binned) const {
-        vkt::image_barrier(cmd, shaded_.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
-                           VK_PIPELINE_STAGE_2_BLIT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                           VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        image_to_write(cmd);
         tiles_to_write(cmd);  // the same shader: it could write the lists
         sets.bind(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, shade_[binned], &view, sizeof view);
         const vkt::TileGrid grid = vkt::tile_grid(extent.width, extent.height, tile_size);
         vkCmdDispatch(cmd, grid.x, grid.y, 1);
+        image_to_copy(cmd);
+        stats_to_host(cmd, sets.stats);
+    }
+
+    // Before a dispatch writes the float image, and after (also --shade lists').
+    void image_to_write(VkCommandBuffer cmd) const {
+        vkt::image_barrier(cmd, shaded_.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+                           VK_PIPELINE_STAGE_2_BLIT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                           VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    }
+    void image_to_copy(VkCommandBuffer cmd) const {
         vkt::image_barrier(
             cmd, shaded_.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
             VK_PIPELINE_STAGE_2_BLIT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
             VK_ACCESS_2_TRANSFER_READ_BIT);
-        stats_to_host(cmd, sets.stats);
     }
 
     // The blit converts the linear floats to the target's _SRGB format; the

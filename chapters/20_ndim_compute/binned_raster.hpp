@@ -4,8 +4,8 @@
 // (the transform pass's, transform_boxes.comp) is cut into tiles small enough for one workgroup's
 // shared memory (bin.comp: a count, a prefix sum, a scatter); one workgroup per tile draws the
 // object's lines into shared memory and merges the tile into the image with one atomic per pixel
-// reached (tiles.comp). It draws into ComputeRaster's pixel buffer with its palette (bindings 5 and
-// 6) and keeps its own buffers in bindings 7 to 9.
+// reached (tiles.comp). It draws into ComputeRaster's pixel buffer with its palette (that pass's
+// set 1) and owns set 2 of the chapter's layout (layouts.hpp): its own buffers.
 
 #include "compute_raster.hpp"
 #include "vkt/core/check.hpp"
@@ -39,25 +39,28 @@ inline void compute_barrier(VkCommandBuffer cmd) {
 
 class BinnedRaster {
 public:
+    enum Binding : uint32_t { object_lines_binding, boxes_binding, tiles_binding, binding_count };
+
     // [subgroups]
     // The transform pass merges the boxes with subgroupMin and subgroupMax
     // (transform_boxes.comp). Vulkan 1.1 promises subgroups in compute
     // shaders, but of their operations only the basic ones; min and max are
     // "arithmetic", which nearly every device has, lavapipe included.
-    static void check_device(const vkt::Context& context) {
+    static bool available(const vkt::Context& context) {
         VkPhysicalDeviceSubgroupProperties subgroups{
             .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
         VkPhysicalDeviceProperties2 properties{
             .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, .pNext = &subgroups};
         vkGetPhysicalDeviceProperties2(context.physical, &properties);
-        const char* flag = "VK_SUBGROUP_FEATURE_ARITHMETIC_BIT";
-        if (!(subgroups.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) ||
-            !(subgroups.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT) ||
-            vkt::hidden_by_tests(flag))
-            throw vkt::Error(std::string("--raster binned needs subgroup arithmetic in "
-                                         "compute shaders (") +
-                             flag + "), which " + properties.properties.deviceName +
-                             " lacks: use --raster compute");
+        return (subgroups.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) &&
+               (subgroups.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT) &&
+               !vkt::hidden_by_tests("VK_SUBGROUP_FEATURE_ARITHMETIC_BIT");
+    }
+    static void check_device(const vkt::Context& context) {
+        if (!available(context))
+            throw vkt::Error(std::string("--raster binned needs subgroup arithmetic in compute "
+                                         "shaders (VK_SUBGROUP_FEATURE_ARITHMETIC_BIT), which ") +
+                             context.properties.deviceName + " lacks: use --raster compute");
     }
     // [/subgroups]
 
@@ -68,10 +71,11 @@ public:
     // memory allows (88x88 pixels in 32 KiB, 104x104 in 48 KiB), so that
     // one holds a small object whole; the tuning says how many invocations
     // share out an object's lines (tuning.hpp).
-    BinnedRaster(const vkt::Context& context, const Tuning& tuning, VkPipelineLayout layout,
-                 std::span<const VkDescriptorSet> sets, std::span<const uint32_t> line_counts)
+    BinnedRaster(const vkt::Context& context, const Tuning& tuning, const Layouts& layouts,
+                 std::span<const uint32_t> line_counts)
         : gpu_(context.gpu()),
           device_(context.device),
+          layout_(layouts.pipeline),
           object_count_(uint32_t(line_counts.size())) {
         std::vector<uint32_t> lines;  // (first, count) per object
         uint32_t first = 0;
@@ -85,12 +89,14 @@ public:
             context.physical, device_, VkDeviceSize(object_count_) * 16,
             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
             VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        for (VkDescriptorSet set : sets) {
-            vkt::write_buffer_descriptor(device_, set, 7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                         object_lines_.buffer, 0, VK_WHOLE_SIZE);
-            vkt::write_buffer_descriptor(device_, set, 8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                         boxes_.buffer, 0, VK_WHOLE_SIZE);
-        }
+        pool_ = storage_pool(device_, 1, binding_count);
+        set_ = vkt::allocate_descriptor_set(device_, pool_, layouts.bins);
+        vkt::write_buffer_descriptor(device_, set_, object_lines_binding,
+                                     VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object_lines_.buffer, 0,
+                                     VK_WHOLE_SIZE);
+        vkt::write_buffer_descriptor(device_, set_, boxes_binding,
+                                     VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, boxes_.buffer, 0,
+                                     VK_WHOLE_SIZE);
         const VkPhysicalDeviceLimits& limits = context.properties.limits;
         piece_ = uint32_t(std::sqrt(double(limits.maxComputeSharedMemorySize) / 4)) / 8 * 8;
         struct Constants {
@@ -105,34 +111,37 @@ public:
         const VkSpecializationInfo piece_and_group{2, entries, sizeof(Constants), &constants};
         const auto load = [&](const char* name, const VkSpecializationInfo* specialization) {
             vkt::ShaderModule shader = vkt::load_shader(device_, context.chapter, name);
-            return vkt::create_compute_pipeline(device_, shader, layout, specialization);
+            return vkt::create_compute_pipeline(device_, shader, layout_, specialization);
         };
         bin_ = load("bin.comp", &piece);
         tiles_pass_ = load("tiles.comp", &piece_and_group);
-        resize(context.extent, sets);
+        resize(context.extent);
     }
     // [/binned-setup]
 
     // [work-list]
     // The tile pass's dispatch and count, then an (object, piece) pair per
     // tile: room for every object to cover the whole image.
-    void resize(VkExtent2D extent, std::span<const VkDescriptorSet> sets) {
+    void resize(VkExtent2D extent) {
         const VkDeviceSize per_object =
             vkt::dispatch_count(extent.width, piece_) * vkt::dispatch_count(extent.height, piece_);
         tiles_ = vkt::create_buffer(
             gpu_.physical, device_, 16 + 8 * per_object * object_count_,
             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
             VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        for (VkDescriptorSet set : sets)
-            vkt::write_buffer_descriptor(device_, set, 9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                         tiles_.buffer, 0, VK_WHOLE_SIZE);
+        vkt::write_buffer_descriptor(device_, set_, tiles_binding,
+                                     VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, tiles_.buffer, 0,
+                                     VK_WHOLE_SIZE);
     }
     // [/work-list]
 
     // [binned-record]
-    // Before the transform pass: the boxes from zeros (after the previous
-    // frame's passes have read them), for its atomicMax to grow.
+    // Before the transform pass: set 2 bound for it and the passes after,
+    // and the boxes from zeros (after the previous frame's passes have read
+    // them), for its atomicMax to grow.
     void clear_boxes(VkCommandBuffer cmd) const {
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 2, 1, &set_, 0,
+                                nullptr);
         vkt::buffer_barrier(cmd, boxes_.buffer, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
                             VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
@@ -144,8 +153,8 @@ public:
     }
 
     // After it: the work list from the boxes (once the previous frame's
-    // indirect dispatch has read the list). The frame's set and push
-    // constants are bound already (by the transform pass).
+    // indirect dispatch has read the list). Sets 0 and 2 and the push
+    // constants are bound already.
     void bin(VkCommandBuffer cmd) const {
         compute_barrier(cmd);  // the transform pass's boxes
         vkt::buffer_barrier(cmd, tiles_.buffer, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
@@ -168,6 +177,7 @@ public:
                             VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
                             VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
         vkt::GpuScope scope(timer, cmd, slot, "tiles");
+        raster.bind_set(cmd);  // the ends, the pixels, the palette
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, tiles_pass_);
         vkCmdDispatchIndirect(cmd, tiles_.buffer, 0);
     }
@@ -222,6 +232,9 @@ public:
 private:
     vkt::Gpu gpu_;
     VkDevice device_;
+    VkPipelineLayout layout_;
+    vkt::DescriptorPool pool_;
+    VkDescriptorSet set_ = VK_NULL_HANDLE;  // set 2
     uint32_t object_count_ = 0;
     uint32_t piece_ = 64;  // the shaders' PIECE: a tile's largest side
     vkt::Buffer object_lines_, boxes_, tiles_;

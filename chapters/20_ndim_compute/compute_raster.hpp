@@ -6,9 +6,11 @@
 // colour target, or, where the target has a storage view, a compute pass
 // that stores it there (resolve_pass.hpp). The binned rasteriser
 // (binned_raster.hpp) draws into the same buffer with the same palette. It
-// reads the projected vertices and line ends that the transform pass and
-// main.cpp set up, through the same descriptor sets.
+// owns set 1 of the chapter's layout (layouts.hpp): the line ends (the
+// transform pass's index buffer), the pixels and the palette; the projected
+// vertices it reads through the transform pass's set 0.
 
+#include "layouts.hpp"
 #include "resolve_pass.hpp"
 #include "scene_state.hpp"
 
@@ -30,13 +32,18 @@ namespace ch20 {
 
 class ComputeRaster {
 public:
+    enum Binding : uint32_t { ends_binding, pixels_binding, palette_binding, binding_count };
+
     // [raster-pipeline]
     // The rasteriser writes the target's own pixel layout, so the palette
-    // (raster.comp) is built in the target's byte order; binding 6 of each
-    // set is the palette, binding 5 the pixels (resize).
-    ComputeRaster(const vkt::Context& context, const Tuning& tuning, VkPipelineLayout layout,
-                  std::span<const VkDescriptorSet> sets, uint32_t line_total)
-        : gpu_(context.gpu()), device_(context.device), line_total_(line_total) {
+    // (raster.comp) is built in the target's byte order. The set points at
+    // the line ends and the palette here, at the pixels in resize.
+    ComputeRaster(const vkt::Context& context, const Tuning& tuning, const Layouts& layouts,
+                  VkBuffer ends, uint32_t line_total)
+        : gpu_(context.gpu()),
+          device_(context.device),
+          layout_(layouts.pipeline),
+          line_total_(line_total) {
         if (context.color_format != VK_FORMAT_B8G8R8A8_SRGB &&
             context.color_format != VK_FORMAT_R8G8B8A8_SRGB)
             throw vkt::Error(
@@ -46,9 +53,13 @@ public:
         const std::vector<uint32_t> words = palette(bgra);
         palette_ = vkt::create_device_buffer(gpu_, words.data(), words.size() * sizeof(uint32_t),
                                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-        for (VkDescriptorSet set : sets)
-            vkt::write_buffer_descriptor(device_, set, 6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                         palette_.buffer, 0, VK_WHOLE_SIZE);
+        pool_ = storage_pool(device_, 1, binding_count);
+        set_ = vkt::allocate_descriptor_set(device_, pool_, layouts.raster);
+        vkt::write_buffer_descriptor(device_, set_, ends_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                     ends, 0, VK_WHOLE_SIZE);
+        vkt::write_buffer_descriptor(device_, set_, palette_binding,
+                                     VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, palette_.buffer, 0,
+                                     VK_WHOLE_SIZE);
         // The background, as the target stores it: (0.006, 0.006, 0.012)
         // sRGB-encoded is (18, 18, 29), level 0 below every line's.
         background_ = bgra ? 29u | 18u << 8 | 18u << 16 : 18u | 18u << 8 | 29u << 16;
@@ -65,7 +76,7 @@ public:
                                          .dataSize = sizeof(lanes_),
                                          .pData = &lanes_};
         vkt::ShaderModule raster = vkt::load_shader(device_, context.chapter, "raster.comp");
-        pipeline_ = vkt::create_compute_pipeline(device_, raster, layout, &lanes);
+        pipeline_ = vkt::create_compute_pipeline(device_, raster, layout_, &lanes);
         max_groups_x_ = context.properties.limits.maxComputeWorkGroupCount[0];
         max_storage_range_ = context.properties.limits.maxStorageBufferRange;
         // The resolve pass where the runner gives the target a storage view
@@ -76,7 +87,7 @@ public:
         if ((to_target == "store" || (to_target == "auto" && tuning.store_to_target)) &&
             ResolvePass::available(context))
             resolve_.emplace(context);
-        resize(context.extent, sets);
+        resize(context.extent);
     }
     // [/raster-pipeline]
 
@@ -86,7 +97,7 @@ public:
     // (TRANSFER_DST) and copied to the colour target (TRANSFER_SRC). It
     // follows the window's size, and starts out filled: the frame's first
     // rasteriser then finds the background already (clear).
-    void resize(VkExtent2D extent, std::span<const VkDescriptorSet> sets) {
+    void resize(VkExtent2D extent) {
         // One descriptor sees the whole buffer, so it must fit in one
         // storage-buffer range (at least 128 MiB: 5,792x5,792 pixels).
         const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
@@ -101,9 +112,9 @@ public:
                                          VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                                          VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                      VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        for (VkDescriptorSet set : sets)
-            vkt::write_buffer_descriptor(device_, set, 5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                         pixels_.buffer, 0, VK_WHOLE_SIZE);
+        vkt::write_buffer_descriptor(device_, set_, pixels_binding,
+                                     VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pixels_.buffer, 0,
+                                     VK_WHOLE_SIZE);
         if (resolve_) resolve_->use_pixels(pixels_.buffer);
         vkt::one_time_submit(gpu_, [&](VkCommandBuffer cmd) {
             vkCmdFillBuffer(cmd, pixels_.buffer, 0, VK_WHOLE_SIZE, background_);
@@ -120,9 +131,8 @@ public:
     // The words filled with the background, then every line rasterised into
     // them. Where the last frame's resolve pass (or resize) left the
     // background behind, only wait for it; else fill (after the previous
-    // frame's copy has read them). The frame's descriptor set is bound
-    // already (by the transform pass, same layout); `projected` is what that
-    // pass wrote.
+    // frame's copy has read them). The transform pass has bound set 0 and
+    // the push constants already (same layout); `projected` is what it wrote.
     void clear(VkCommandBuffer cmd, vkt::GpuTimer* timer = nullptr, uint32_t slot = 0) {
         const VkAccessFlags2 read_write =
             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
@@ -155,10 +165,17 @@ public:
         // out in rows of at most max_groups_x_.
         const uint64_t groups = vkt::dispatch_count(uint64_t(line_total_) * lanes_, group);
         const uint64_t rows = vkt::dispatch_count(groups, max_groups_x_);
+        bind_set(cmd);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
         vkCmdDispatch(cmd, uint32_t(rows == 1 ? groups : max_groups_x_), uint32_t(rows), 1);
     }
     // [/compute-raster]
+
+    // Set 1, for this pass and the binned rasteriser's tile pass.
+    void bind_set(VkCommandBuffer cmd) const {
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 1, 1, &set_, 0,
+                                nullptr);
+    }
 
     // [copy-to-target]
     // The words are the target's pixels already: a buffer-to-image copy
@@ -206,7 +223,10 @@ public:
 private:
     vkt::Gpu gpu_;
     VkDevice device_;
+    VkPipelineLayout layout_;
     uint32_t line_total_;
+    vkt::DescriptorPool pool_;
+    VkDescriptorSet set_ = VK_NULL_HANDLE;  // set 1
     vkt::Buffer palette_, pixels_;
     vkt::Pipeline pipeline_;
     uint32_t max_groups_x_ = 65535;       // maxComputeWorkGroupCount[0]

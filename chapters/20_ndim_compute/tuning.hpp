@@ -47,6 +47,20 @@ struct Tuning {
         return t;
     }
 
+    // [auto-raster]
+    // --raster auto (the default): the rasteriser that drew the chapter's
+    // scenes fastest on each kind of device (the performance part has the
+    // measurements). On a CPU device the compute rasteriser, in every scene:
+    // the graphics pipeline's lines and the binned tiles both cost more
+    // there. On a GPU the binned one from 100,000 lines on (250 8-cubes and
+    // more), where a tile gathers enough lines to pay for the binning; below
+    // that, and where the device cannot bin, the compute one.
+    std::string auto_raster(uint64_t lines, bool can_bin) const {
+        if (cpu_device) return "compute";
+        return can_bin && lines >= 100000 ? "binned" : "compute";
+    }
+    // [/auto-raster]
+
     std::string describe() const {
         return std::string("tuned for a ") + (cpu_device ? "CPU device" : "GPU") +
                ": transform groups of " + std::to_string(transform_group) + " x " +

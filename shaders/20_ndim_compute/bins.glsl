@@ -5,12 +5,13 @@
 // Per object: its lines in the line list (built once), and its box on the
 // screen in pixels (the transform pass, each frame), stored as (0xffff - lo.x,
 // 0xffff - lo.y, hi.x, hi.y) so that every part grows with the box and
-// atomicMax merges boxes, from all zeros: an empty box.
-layout(std430, set = 0, binding = 7) readonly buffer ObjectLines { uvec2 object_lines[]; };
-layout(std430, set = 0, binding = 8) buffer Boxes { uvec4 boxes[]; };
+// atomicMax merges boxes, from all zeros: an empty box. Set 2, BinnedRaster's:
+// object_lines_binding, boxes_binding, tiles_binding.
+layout(std430, set = 2, binding = 0) readonly buffer ObjectLines { uvec2 object_lines[]; };
+layout(std430, set = 2, binding = 1) buffer Boxes { uvec4 boxes[]; };
 // The work list (bin.comp): one tile per entry, a piece of at most PIECE x
 // PIECE pixels of one object's box, and the tile pass's indirect dispatch.
-layout(std430, set = 0, binding = 9) buffer Tiles {
+layout(std430, set = 2, binding = 2) buffer Tiles {
     uvec3 tile_groups;  // VkDispatchIndirectCommand
     uint tile_count;
     uvec2 tiles[];      // (object, piece)

@@ -14,13 +14,15 @@ layout(local_size_x = 64) in;
 // How many invocations share a line (1 to 32, a power of two): chosen when
 // the pipeline is built, from the number of lines.
 layout(constant_id = 0) const uint LANES = 1;
+// The transform pass's output, through its set (TransformPass::projected_binding).
 layout(std430, set = 0, binding = 3) readonly buffer In { Projected projected[]; };
-layout(std430, set = 0, binding = 4) readonly buffer Lines { uint ends[]; };
-layout(std430, set = 0, binding = 5) buffer Pixels { uint pixels[]; };
+// Set 1, ComputeRaster's: ends_binding, pixels_binding, palette_binding.
+layout(std430, set = 1, binding = 0) readonly buffer Lines { uint ends[]; };
+layout(std430, set = 1, binding = 1) buffer Pixels { uint pixels[]; };
 // The colour is chapter 18's depth colour, a function of the depth alone, so
 // each of the 255 depth levels has one word, built once on the CPU: the
 // colour sRGB-encoded in the target's byte order, the level in the top byte.
-layout(std430, set = 0, binding = 6) readonly buffer Palette { uint palette[256]; };
+layout(std430, set = 1, binding = 2) readonly buffer Palette { uint palette[256]; };
 #include "walk.glsl"
 
 // [lanes]

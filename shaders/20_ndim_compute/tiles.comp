@@ -13,10 +13,12 @@
 layout(local_size_x_id = 1) in;
 // The largest tile's side in pixels.
 layout(constant_id = 0) const uint PIECE = 64;
+// The transform pass's output, through its set (TransformPass::projected_binding).
 layout(std430, set = 0, binding = 3) readonly buffer In { Projected projected[]; };
-layout(std430, set = 0, binding = 4) readonly buffer Lines { uint ends[]; };
-layout(std430, set = 0, binding = 5) buffer Pixels { uint pixels[]; };
-layout(std430, set = 0, binding = 6) readonly buffer Palette { uint palette[256]; };
+// Set 1, ComputeRaster's: ends_binding, pixels_binding, palette_binding.
+layout(std430, set = 1, binding = 0) readonly buffer Lines { uint ends[]; };
+layout(std430, set = 1, binding = 1) buffer Pixels { uint pixels[]; };
+layout(std430, set = 1, binding = 2) readonly buffer Palette { uint palette[256]; };
 #include "bins.glsl"
 #include "walk.glsl"
 

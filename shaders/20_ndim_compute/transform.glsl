@@ -2,7 +2,7 @@
 // transform_boxes.comp for --raster binned, which also merges each object's
 // box on the screen (BOXES). Two modules rather than one with a switch: a
 // pipeline may only use descriptors that are written, and the box buffer
-// (binding 8) exists only with --raster binned.
+// (set 2, BinnedRaster's) exists only with --raster binned.
 #include "ndim.glsl"
 
 // The workgroup's size, chosen by main.cpp: 128 on a GPU, 64 on a CPU device.
@@ -19,10 +19,12 @@ struct Object {
     uint first_out;     // its first vertex in `projected`
     float inv_radius;   // 1 / the mesh's radius: scales the depth colour
 };
+// Set 0, TransformPass's (transform_pass.hpp): coords_binding, objects_binding,
+// poses_binding, projected_binding.
 layout(std430, set = 0, binding = 0) readonly buffer Coords { float coords[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Objects { Object objects[]; };
-// Per object, N * N + N floats written by the CPU each frame: the matrix
-// M = R * diag(scale), row-major, then the position.
+// Per object, N * N + N floats written by the pose pass each frame
+// (pose.comp): the matrix M = R * diag(scale), row-major, then the position.
 layout(std430, set = 0, binding = 2) readonly buffer Poses { float poses[]; };
 layout(std430, set = 0, binding = 3) writeonly buffer Out { Projected projected[]; };
 #ifdef BOXES

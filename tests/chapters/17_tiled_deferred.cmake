@@ -31,7 +31,7 @@ if(XVFB_RUN)
 endif()
 
 # --cull tiled, every tile testing every light: the same picture, both ways.
-foreach(shade fragment compute)
+foreach(shade fragment compute lists)
   vkt_chapter_test(chapter.17_tiled_deferred.cull_tiled_${shade} 17_tiled_deferred
     GOLDEN ${VKT_17_PIXEL} ARGS ${headless} --cull tiled --shade ${shade}
     EXPECT "shade ${shade}, view lit, cull tiled")
@@ -39,7 +39,7 @@ endforeach()
 
 # With chapter 16's 32 lights the scene is chapter 16's: both tiled paths
 # against chapter 16's golden image (the golden tests' tolerance).
-foreach(shade fragment compute)
+foreach(shade fragment compute lists)
   set(test chapter.17_tiled_deferred.matches_16_${shade})
   add_test(NAME ${test} COMMAND vkt_chapter_check --exe $<TARGET_FILE:17_tiled_deferred>
     --out ${VKT_TEST_OUTPUT} --name ${test} --golden ${VKT_GOLDEN_DIR}/16_deferred.png
@@ -53,7 +53,7 @@ endforeach()
 # pixel: the top-left tile holds no geometry, so it kept 0 lights: the ramp's
 # (0, 0, 0.5), shown 75% over a black albedo as (0, 0, 0.375), sRGB-encoded
 # (0, 0, 164); its border pixel (0, 0) is half that, 0.1875, encoded 121.
-foreach(shade fragment compute)
+foreach(shade fragment compute lists)
   set(test chapter.17_tiled_deferred.view_heat_${shade})
   add_test(NAME ${test} COMMAND vkt_chapter_check --exe $<TARGET_FILE:17_tiled_deferred>
     --out ${VKT_TEST_OUTPUT} --name ${test} --golden ${VKT_GOLDEN_DIR}/17_tiled_deferred_heat.png
@@ -71,7 +71,8 @@ endforeach()
 # the tile (partial tiles on the right and bottom), and with 16,384 lights.
 vkt_chapter_test(chapter.17_tiled_deferred.verify_brute 17_tiled_deferred
   ARGS ${headless} --verify brute
-  EXPECT "verify brute: tiled fragment vs brute force, largest difference"
+  EXPECT "verify motion: 1024 lights at t = [0-9.]+, largest position difference from the CPU"
+  "verify brute: tiled fragment vs brute force, largest difference"
   "verify brute: tiled compute vs brute force" "tiles overflowed 0")
 vkt_chapter_test(chapter.17_tiled_deferred.verify_brute_odd_size 17_tiled_deferred
   ARGS --offscreen --validation --frames 3 --size 250x130 --verify brute --shade compute
@@ -98,7 +99,8 @@ vkt_chapter_test(chapter.17_tiled_deferred.verify_bins_many 17_tiled_deferred
   --lights 65536 EXPECT "65536 lights, .*lists that differ: 0")
 vkt_chapter_test(chapter.17_tiled_deferred.verify_bins_million 17_tiled_deferred
   ARGS --offscreen --no-validation --frames 1 --size 256x144 --verify bins
-  --lights 1048576 EXPECT "1048576 lights, .*lists that differ: 0; overflowed \\(counts compared\\): [0-9]+")
+  --lights 1048576 EXPECT "verify motion: 1048576 lights"
+  "1048576 lights, .*lists that differ: 0; overflowed \\(counts compared\\): [0-9]+")
 # Binning's own overflow: a budget too small for the bins. The fill drops what
 # does not fit; the run says so, the bins grow for the next frames, and
 # --verify bins refuses a frame that dropped candidates.
@@ -123,15 +125,15 @@ vkt_chapter_test(chapter.17_tiled_deferred.overflow_fails_verify 17_tiled_deferr
 # --benchmark times the passes as named GPU scopes.
 vkt_chapter_test(chapter.17_tiled_deferred.benchmark 17_tiled_deferred
   ARGS --offscreen --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark
-  EXPECT "\"gpu_scopes_ms\": \\{\"gbuffer\": \\{\"min\": [0-9.]+.*\"bin\": \\{.*\"cull\": \\{.*\"lighting\": \\{")
+  EXPECT "\"gpu_scopes_ms\": \\{\"move\": \\{\"min\": [0-9.]+.*\"gbuffer\": \\{.*\"bin\": \\{.*\"cull\": \\{.*\"lighting\": \\{")
 vkt_chapter_test(chapter.17_tiled_deferred.benchmark_compute 17_tiled_deferred
   ARGS --offscreen --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark
   --shade compute
-  EXPECT "\"gpu_scopes_ms\": \\{\"gbuffer\": \\{\"min\": [0-9.]+.*\"bin\": \\{.*\"shade\": \\{.*\"copy\": \\{")
+  EXPECT "\"gpu_scopes_ms\": \\{\"move\": \\{\"min\": [0-9.]+.*\"gbuffer\": \\{.*\"bin\": \\{.*\"shade\": \\{.*\"copy\": \\{")
 vkt_chapter_test(chapter.17_tiled_deferred.benchmark_tiled 17_tiled_deferred
   ARGS --offscreen --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark
   --shade compute --cull tiled
-  EXPECT "\"gpu_scopes_ms\": \\{\"gbuffer\": \\{\"min\": [0-9.]+, [^}]*\\}, \"shade\": \\{.*\"copy\": \\{")
+  EXPECT "\"gpu_scopes_ms\": \\{\"move\": \\{[^}]*\\}, \"gbuffer\": \\{\"min\": [0-9.]+, [^}]*\\}, \"shade\": \\{.*\"copy\": \\{")
 vkt_chapter_test(chapter.17_tiled_deferred.help 17_tiled_deferred EXIT 0 ARGS --help
   EXPECT "usage: 17_tiled_deferred" "--shade PASS" "--cull HOW" "--view VIEW" "--lights N"
   "--bin-budget N" "--verify CHECK")
@@ -145,7 +147,7 @@ vkt_chapter_test(bad_input.17_tiled_deferred.too_many_lights 17_tiled_deferred E
 vkt_chapter_test(bad_input.17_tiled_deferred.bad_cull 17_tiled_deferred EXIT 2
   ARGS --cull clustered EXPECT "--cull wants one of binned, tiled, not 'clustered'")
 vkt_chapter_test(bad_input.17_tiled_deferred.bad_shade 17_tiled_deferred EXIT 2
-  ARGS --shade raster EXPECT "--shade wants one of fragment, compute, not 'raster'")
+  ARGS --shade raster EXPECT "--shade wants one of fragment, compute, lists, not 'raster'")
 vkt_chapter_test(bad_input.17_tiled_deferred.bad_view 17_tiled_deferred EXIT 2
   ARGS --view normal EXPECT "--view wants one of lit, heat, not 'normal'")
 vkt_chapter_test(bad_input.17_tiled_deferred.bad_verify 17_tiled_deferred EXIT 2

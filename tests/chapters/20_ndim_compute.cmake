@@ -3,18 +3,36 @@
 #
 # The golden picture: the default scene (a tesseract and a 24-cell) after 10
 # frames, the same poses as chapter 18 (headless time is frame index / 60).
+# The graphics pipeline's lines (--raster graphics; the default, auto, picks
+# the compute rasteriser on lavapipe, tested below).
 vkt_chapter_test(chapter.20_ndim_compute 20_ndim_compute GOLDEN BLESS
-  PIXEL 0,0,18,18,29 319,239,18,18,29 ARGS ${headless}
+  PIXEL 0,0,18,18,29 319,239,18,18,29 ARGS ${headless} --raster graphics
   EXPECT "20_ndim_compute: default scene, n = 4, 2 objects, 40 vertices, 128 lines per frame, raster graphics")
-vkt_chapter_test(chapter.20_ndim_compute.offscreen 20_ndim_compute GOLDEN ARGS ${offscreen})
-vkt_chapter_window_test(20_ndim_compute)
+vkt_chapter_test(chapter.20_ndim_compute.offscreen 20_ndim_compute GOLDEN
+  ARGS ${offscreen} --raster graphics)
+vkt_chapter_window_test(20_ndim_compute ARGS --raster graphics)
+# --raster auto, the default (tuning.hpp): on a CPU device the compute
+# rasteriser, whatever the scene; its picture exactly.
+foreach(scene default many)
+  set(test chapter.20_ndim_compute.auto_${scene})
+  set(golden)
+  if(scene STREQUAL "default")
+    set(golden --golden ${VKT_GOLDEN_DIR}/20_ndim_compute_compute_raster.png --exact)
+  endif()
+  add_test(NAME ${test} COMMAND vkt_chapter_check --exe $<TARGET_FILE:20_ndim_compute>
+    --out ${VKT_TEST_OUTPUT} --name ${test} ${golden}
+    --expect "${scene} scene, .* lines per frame, raster compute \\(auto\\)"
+    -- ${headless} --scene ${scene})
+  set_tests_properties(${test} PROPERTIES
+    ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD};VKT_BLESS=0" LABELS chapter)
+endforeach()
 
 # The same picture as chapter 18's golden image (within vkt::Tolerance): the
 # compute pass and one indexed draw give what the CPU path gave. VKT_BLESS=0:
 # blessing never rewrites chapter 18's image from here.
 add_test(NAME chapter.20_ndim_compute.same_as_18 COMMAND vkt_chapter_check
   --exe $<TARGET_FILE:20_ndim_compute> --out ${VKT_TEST_OUTPUT} --name chapter.20_ndim_compute.same_as_18
-  --golden ${VKT_GOLDEN_DIR}/18_ndim_cpu.png -- ${headless})
+  --golden ${VKT_GOLDEN_DIR}/18_ndim_cpu.png -- ${headless} --raster graphics)
 set_tests_properties(chapter.20_ndim_compute.same_as_18 PROPERTIES
   ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD};VKT_BLESS=0" LABELS chapter)
 
@@ -144,11 +162,16 @@ vkt_chapter_test(chapter.20_ndim_compute.verify_many 20_ndim_compute
   ARGS ${offscreen} --scene many --dim 6 --verify cpu
   EXPECT "many scene, n = 6, 250 objects, 16000 vertices, 48000 lines per frame" "verify: 16000 vertices"
   "${VKT_20_VERIFY}")
+# --verify cpu with --raster binned: its transform pass also writes the
+# boxes (set 2), which the check must bind too.
+vkt_chapter_test(chapter.20_ndim_compute.verify_binned 20_ndim_compute
+  ARGS ${offscreen} --scene many --dim 6 --verify cpu --raster binned
+  EXPECT "raster binned" "${VKT_20_VERIFY}")
 vkt_chapter_test(chapter.20_ndim_compute.verify_ortho 20_ndim_compute
   ARGS ${headless} --scene many --dim 5 --projection orthographic --verify cpu --raster compute
   EXPECT "${VKT_20_VERIFY}")
 vkt_chapter_test(chapter.20_ndim_compute.help 20_ndim_compute EXIT 0 ARGS --help
-  EXPECT "usage: 20_ndim_compute" "--raster graphics\\|compute\\|binned" "--verify cpu\\|raster")
+  EXPECT "usage: 20_ndim_compute" "--raster auto\\|graphics\\|compute\\|binned" "--verify cpu\\|raster")
 
 # Bad input: a dimension outside 3..12, a scene or a rasteriser that does
 # not exist, --dim on the 4D scene, a target too big for the pixel buffer.
@@ -159,7 +182,7 @@ endforeach()
 vkt_chapter_test(bad_input.20_ndim_compute.scene 20_ndim_compute EXIT 2 ARGS --scene hypersphere
   EXPECT "--scene wants one of default, cube, many, not 'hypersphere'")
 vkt_chapter_test(bad_input.20_ndim_compute.raster 20_ndim_compute EXIT 2 ARGS --raster magic
-  EXPECT "--raster wants one of graphics, compute, binned, not 'magic'")
+  EXPECT "--raster wants one of auto, graphics, compute, binned, not 'magic'")
 vkt_chapter_test(bad_input.20_ndim_compute.verify_raster_alone 20_ndim_compute EXIT 2
   ARGS --headless --frames 1 --verify raster
   EXPECT "--verify raster compares --raster binned with --raster compute: use it with --raster binned")

@@ -97,3 +97,33 @@ TEST_CASE("shift is either shift key", "[input]") {
     events.key(vkt::key::right_shift, true);
     CHECK(events.take().shift());
 }
+
+TEST_CASE("the pointer: where the cursor is, and a click between two frames", "[input]") {
+    vkt::InputAccumulator input;
+    input.cursor_inside(true);
+    input.cursor(120.5, 40.0);
+    input.button(0, true);
+    input.button(0, false);  // down and up before the frame: a click all the same
+    input.button(7, true);   // buttons past the middle one are ignored
+    const vkt::Input first = input.take();
+    CHECK(first.cursor_inside);
+    CHECK(first.cursor_x == 120.5);
+    CHECK(first.cursor_y == 40.0);
+    CHECK_FALSE(first.buttons[0]);
+    CHECK(first.buttons_pressed[0]);
+    CHECK(first.mouse_dx == 0);  // not captured: a position, not a movement
+    const vkt::Input second = input.take();
+    CHECK_FALSE(second.buttons_pressed[0]);
+    CHECK(second.cursor_x == 120.5);  // the cursor stays where it was
+    // Held across frames, pressed only in the first; a click given back counts again.
+    input.button(1, true);
+    const vkt::Input third = input.take();
+    CHECK(third.buttons[1]);
+    CHECK(third.buttons_pressed[1]);
+    input.give_back(third);
+    const vkt::Input fourth = input.take();
+    CHECK(fourth.buttons_pressed[1]);
+    CHECK(fourth.buttons[1]);
+    input.cursor_inside(false);
+    CHECK_FALSE(input.take().cursor_inside);
+}

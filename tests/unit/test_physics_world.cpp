@@ -79,27 +79,30 @@ TEST_CASE("energy never rises by more than 1% over a second in a closed box", "[
     }
 }
 
-TEST_CASE("a box spinning in free flight never gains energy", "[physics]") {
-    // No gravity, no contacts: only the gyroscopic term acts. A 2 x 4 x 6 box
-    // spun about an axis near its intermediate one tumbles (the tennis racket
-    // effect); the implicit step keeps it from gaining energy.
+TEST_CASE("a box spinning in free flight keeps its energy", "[physics]") {
+    // No gravity, no contacts, no damping: only the gyroscopic term acts. A
+    // 2 x 4 x 6 box spun at 10 rad/s about an axis near its intermediate one
+    // tumbles (the tennis racket effect). The implicit step alone would lose
+    // 56% of the energy in 20 s at this speed; scaled back after each step it
+    // keeps it, and the spin still turns over as it should.
     Settings settings;
     settings.gravity = glm::vec3(0.0f);
+    settings.solver.angular_damping = 0.0f;
     World world(settings);
     world.add_box({0, 0, 0}, {1, 2, 3}, 500.0f, glm::quat(1, 0, 0, 0), glm::vec3(0.0f),
-                  glm::vec3(0.05f, 4.0f, 0.05f));
+                  glm::vec3(0.05f, 10.0f, 0.05f));
     const double start = world.energy();
-    double most = start;
-    for (int i = 0; i < 120 * 10; ++i) {
+    double most = start, least = start, most_x = 0.0;
+    for (int i = 0; i < 120 * 20; ++i) {
         world.step();
         most = std::max(most, world.energy());
+        least = std::min(least, world.energy());
+        const Body& b = world.bodies()[0];
+        const glm::vec3 w_body = glm::inverse(b.orientation) * b.angular_velocity;
+        most_x = std::max(most_x, double(std::abs(w_body.x)));
     }
-    CHECK(most <= start * (1.0 + 1e-6));
-    // Damped, but only a little: within 10% after 10 s.
-    CHECK(world.energy() > 0.9 * start);
-    // And it did tumble: the spin axis left the body's y axis.
-    const Body& b = world.bodies()[0];
-    const glm::vec3 w_body = glm::inverse(b.orientation) * b.angular_velocity;
-    INFO("spin in the body frame: " << w_body.x << ", " << w_body.y << ", " << w_body.z);
-    CHECK(glm::length(w_body) > 0.0f);
+    CHECK(most <= start * 1.001);
+    CHECK(least >= start * 0.99);
+    // It did tumble: the spin moved to the body's x axis and back.
+    CHECK(most_x > 5.0);
 }

@@ -269,7 +269,8 @@ Device::Device(const DeviceCandidate& chosen, const DeviceRequirements& requirem
     for (const Feature& feature : base_features()) enabled_[feature] = VK_TRUE;
     for (const Feature& feature : requirements.features) enabled_[feature] = VK_TRUE;
     for (const Feature& feature : requirements.optional_features)
-        enabled_[feature] = available.has(feature) ? VK_TRUE : VK_FALSE;
+        enabled_[feature] =
+            available.has(feature) && !hidden_by_tests(feature.name) ? VK_TRUE : VK_FALSE;
     // On a portability driver (MoltenVK): VK_KHR_portability_subset, which must
     // be enabled where offered, and the parts of it the chapter uses.
     const std::vector<VkExtensionProperties> offered = extensions_of(physical_);

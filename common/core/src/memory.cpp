@@ -7,13 +7,20 @@
 
 namespace vkt {
 
-uint32_t find_memory_type(VkPhysicalDevice physical, uint32_t type_bits,
-                          VkMemoryPropertyFlags wanted) {
+uint32_t find_memory_type_or_none(VkPhysicalDevice physical, uint32_t type_bits,
+                                  VkMemoryPropertyFlags wanted) {
     VkPhysicalDeviceMemoryProperties memory;
     vkGetPhysicalDeviceMemoryProperties(physical, &memory);
     for (uint32_t i = 0; i < memory.memoryTypeCount; ++i)
         if ((type_bits & (1u << i)) && (memory.memoryTypes[i].propertyFlags & wanted) == wanted)
             return i;
+    return UINT32_MAX;
+}
+
+uint32_t find_memory_type(VkPhysicalDevice physical, uint32_t type_bits,
+                          VkMemoryPropertyFlags wanted) {
+    const uint32_t type = find_memory_type_or_none(physical, type_bits, wanted);
+    if (type != UINT32_MAX) return type;
     char flags[16];
     std::snprintf(flags, sizeof flags, "0x%x", wanted);
     throw Error(std::string("no memory type has the properties ") + flags);
@@ -60,14 +67,18 @@ Image create_image_2d(VkPhysicalDevice physical, VkDevice device, VkFormat forma
     return create_image_2d_mips(physical, device, format, extent, 1, usage, aspect);
 }
 
-Image create_image_2d_mips(VkPhysicalDevice physical, VkDevice device, VkFormat format,
-                           VkExtent2D extent, uint32_t mip_levels, VkImageUsageFlags usage,
-                           VkImageAspectFlags aspect) {
-    if (mip_levels == 0) throw Error("create_image_2d_mips: an image needs at least one mip level");
+namespace {
+
+// Every image of this file: create, ask its memory requirements, allocate
+// (lazily where `transient` and the device has such memory), bind, view.
+Image make_image(VkPhysicalDevice physical, VkDevice device, VkFormat format, VkExtent2D extent,
+                 uint32_t mip_levels, VkSampleCountFlagBits samples, bool transient,
+                 VkImageUsageFlags usage, VkImageAspectFlags aspect) {
     Image out;
     out.format = format;
     out.extent = extent;
     out.mip_levels = mip_levels;
+    out.samples = samples;
     VkImageCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
         .imageType = VK_IMAGE_TYPE_2D,
@@ -75,9 +86,9 @@ Image create_image_2d_mips(VkPhysicalDevice physical, VkDevice device, VkFormat 
         .extent = {extent.width, extent.height, 1},
         .mipLevels = mip_levels,
         .arrayLayers = 1,
-        .samples = VK_SAMPLE_COUNT_1_BIT,
+        .samples = samples,
         .tiling = VK_IMAGE_TILING_OPTIMAL,
-        .usage = usage,
+        .usage = transient ? usage | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT : usage,
         .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
         .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED,
     };
@@ -87,8 +98,14 @@ Image create_image_2d_mips(VkPhysicalDevice physical, VkDevice device, VkFormat 
 
     VkMemoryRequirements requirements;
     vkGetImageMemoryRequirements(device, image, &requirements);
+    out.bytes = requirements.size;
+    constexpr VkMemoryPropertyFlags local = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    constexpr VkMemoryPropertyFlags lazy = local | VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT;
+    out.lazily_allocated =
+        transient &&
+        find_memory_type_or_none(physical, requirements.memoryTypeBits, lazy) != UINT32_MAX;
     out.memory =
-        allocate_memory(physical, device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        allocate_memory(physical, device, requirements, out.lazily_allocated ? lazy : local);
     VKT_CHECK(vkBindImageMemory(device, image, out.memory, 0));
 
     VkImageViewCreateInfo view_info{
@@ -102,6 +119,22 @@ Image create_image_2d_mips(VkPhysicalDevice physical, VkDevice device, VkFormat 
     VKT_CHECK(vkCreateImageView(device, &view_info, nullptr, &view));
     out.view = ImageView(device, view);
     return out;
+}
+
+}  // namespace
+
+Image create_image_2d_mips(VkPhysicalDevice physical, VkDevice device, VkFormat format,
+                           VkExtent2D extent, uint32_t mip_levels, VkImageUsageFlags usage,
+                           VkImageAspectFlags aspect) {
+    if (mip_levels == 0) throw Error("create_image_2d_mips: an image needs at least one mip level");
+    return make_image(physical, device, format, extent, mip_levels, VK_SAMPLE_COUNT_1_BIT, false,
+                      usage, aspect);
+}
+
+Image create_attachment_image(VkPhysicalDevice physical, VkDevice device, VkFormat format,
+                              VkExtent2D extent, VkImageUsageFlags usage, VkImageAspectFlags aspect,
+                              VkSampleCountFlagBits samples, bool transient) {
+    return make_image(physical, device, format, extent, 1, samples, transient, usage, aspect);
 }
 
 }  // namespace vkt

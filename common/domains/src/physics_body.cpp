@@ -1,5 +1,7 @@
 #include "vkt/domains/physics_body.hpp"
 
+#include <cmath>
+
 namespace vkt::physics {
 
 glm::vec3 box_inverse_inertia(glm::vec3 h, float mass) {
@@ -27,23 +29,28 @@ glm::mat3 skew(glm::vec3 a) {
 }
 }  // namespace
 
-// [integrate-velocity]
-void integrate_velocity(Body& body, glm::vec3 gravity, float dt) {
-    body.velocity += gravity * dt;
+// [gyroscopic]
+void gyroscopic_step(Body& body, float dt) {
     // The gyroscopic term, in the body frame where the inertia I is diagonal:
     // Euler's equation without torque, I dw/dt = -w x (I w). One Newton step of
     // its implicit (backward Euler) form: f(w) = I (w - w0) + dt w x (I w) = 0,
-    // Jacobian J = I + dt (skew(w) I - skew(I w)). Implicit: it damps a little
-    // where an explicit step would add energy and blow up.
+    // Jacobian J = I + dt (skew(w) I - skew(I w)). Implicit: it cannot blow
+    // up where an explicit step would add energy.
     const glm::vec3 moments = 1.0f / body.inverse_inertia;
     const glm::mat3 inertia(glm::vec3(moments.x, 0, 0), glm::vec3(0, moments.y, 0),
                             glm::vec3(0, 0, moments.z));
-    const glm::vec3 w = glm::inverse(body.orientation) * body.angular_velocity;
-    const glm::vec3 f = dt * glm::cross(w, moments * w);
-    const glm::mat3 jacobian = inertia + dt * (skew(w) * inertia - skew(moments * w));
-    body.angular_velocity = body.orientation * (w - glm::inverse(jacobian) * f);
+    const glm::vec3 w0 = glm::inverse(body.orientation) * body.angular_velocity;
+    const glm::vec3 f = dt * glm::cross(w0, moments * w0);
+    const glm::mat3 jacobian = inertia + dt * (skew(w0) * inertia - skew(moments * w0));
+    glm::vec3 w = w0 - glm::inverse(jacobian) * f;
+    // But it damps: a fast spin about the middle axis would lose half its
+    // energy in 20 s. The term does no work (w . (w x I w) = 0), so the
+    // energy w . I w / 2 must stay: scale the new spin back to it.
+    const float before = glm::dot(w0, moments * w0), after = glm::dot(w, moments * w);
+    if (after > 0.0f) w *= std::sqrt(before / after);
+    body.angular_velocity = body.orientation * w;
 }
-// [/integrate-velocity]
+// [/gyroscopic]
 
 // [integrate-position]
 void integrate_position(Body& body, glm::vec3 velocity, glm::vec3 angular_velocity, float dt) {

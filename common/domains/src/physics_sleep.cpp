@@ -19,9 +19,10 @@ uint32_t Islands::update(std::span<Body> bodies, std::span<const Manifold> manif
     const auto n = uint32_t(bodies.size());
     for (Body& body : bodies) {
         if (!body.is_active()) continue;
-        const bool resting =
-            glm::dot(body.velocity, body.velocity) < s.linear * s.linear &&
-            glm::dot(body.angular_velocity, body.angular_velocity) < s.angular * s.angular;
+        // Judged by speed, not spin: a slowly turning big box moves its
+        // corners as fast as a quickly turning small one.
+        const float spin = glm::length(body.angular_velocity) * glm::length(body.half_extents);
+        const bool resting = std::max(glm::length(body.velocity), spin) < s.speed;
         body.sleep_time = resting ? body.sleep_time + dt : 0.0f;
     }
     // Union-find over the contacts between moving bodies. The lower root

@@ -13,12 +13,34 @@ void tangent_basis(glm::vec3 n, glm::vec3& t1, glm::vec3& t2) {
     t2 = glm::cross(n, t1);
 }
 
+// [soft]
+void soft_constraint(float hertz, float zeta, float h, float& bias_rate, float& mass_scale,
+                     float& impulse_scale) {
+    // A spring of angular frequency omega and damping ratio zeta on the
+    // overlap, stepped implicitly over h (book/14_physics.md derives it).
+    const float omega = 2.0f * 3.14159265f * hertz;
+    const float a1 = 2.0f * zeta + h * omega;
+    const float a2 = h * omega * a1;
+    const float a3 = 1.0f / (1.0f + a2);
+    bias_rate = omega / a1;
+    mass_scale = a2 * a3;
+    impulse_scale = a3;
+}
+// [/soft]
+
 // [prepare]
-void Solver::prepare(Manifold& m, const SolverSettings& s, float dt) {
-    Contact c{m.a, m.b, uint32_t(points_.size()), m.count, m.normal, {}, &m};
-    tangent_basis(m.normal, c.tangent[0], c.tangent[1]);
+void Solver::prepare(Manifold& m, const SolverSettings& s) {
     const State& a = states_[m.a];
     const State& b = states_[m.b];
+    Contact c{m.a,
+              m.b,
+              uint32_t(points_.size()),
+              m.count,
+              m.normal,
+              {},
+              a.inverse_mass == 0.0f || b.inverse_mass == 0.0f,
+              &m};
+    tangent_basis(m.normal, c.tangent[0], c.tangent[1]);
     const glm::mat3& ia = inverse_inertias_[m.a];
     const glm::mat3& ib = inverse_inertias_[m.b];
     // The effective mass along a direction d: 1 / the velocity change a unit
@@ -36,25 +58,20 @@ void Solver::prepare(Manifold& m, const SolverSettings& s, float dt) {
         const ContactPoint& cp = m.points[k];
         const glm::vec3 ra = cp.position - centres_[m.a];
         const glm::vec3 rb = cp.position - centres_[m.b];
-        // Restitution: a point closing faster than the threshold should part
-        // at e times that speed. A slower one stops; one still apart by a gap
-        // (negative depth, within the margin) may close it in this step.
-        const glm::vec3 relative = b.v + glm::cross(b.w, rb) - a.v - glm::cross(a.w, ra);
-        const float approach = glm::dot(relative, m.normal);
-        const bool bounce = approach < -s.restitution_threshold && cp.depth >= 0.0f;
         // Warm start: last step's impulses at this point (the world copied
-        // them in by feature id), unless it bounces now: pushing a bouncing
-        // pair apart with last step's resting impulse would add energy.
-        const bool warm = s.warm_start && !bounce;
+        // them in by feature id).
         Point p;
-        p.normal = row(ra, rb, m.normal, warm ? cp.normal_impulse : 0.0f);
+        p.normal = row(ra, rb, m.normal, s.warm_start ? cp.normal_impulse : 0.0f);
         for (int t = 0; t < 2; ++t)
             p.tangent[t] = row(ra, rb, c.tangent[t],
-                               warm ? glm::dot(cp.friction_impulse, c.tangent[t]) : 0.0f);
-        p.target = bounce ? -s.restitution * approach : std::min(cp.depth, 0.0f) / dt;
-        // Split impulses: the overlap beyond the slop, a share each step.
-        p.push_target = s.push / dt * std::max(cp.depth - s.slop, 0.0f);
-        p.push_impulse = 0.0f;
+                               s.warm_start ? glm::dot(cp.friction_impulse, c.tangent[t]) : 0.0f);
+        // Restitution is decided after the sub-steps from the normal velocity
+        // measured now, before anything has changed it: a point found while a
+        // gap remains bounces as well as one found overlapping.
+        const glm::vec3 relative = b.v + glm::cross(b.w, rb) - a.v - glm::cross(a.w, ra);
+        p.approach = glm::dot(relative, m.normal);
+        p.separation = -cp.depth;
+        p.most_impulse = 0.0f;
         points_.push_back(p);
     }
     contacts_.push_back(c);
@@ -83,157 +100,99 @@ void apply(State& a, State& b, const Row& row, glm::vec3 d, float impulse) {
 
 }  // namespace
 
-// The three below work on copies of the contact's two bodies, a and b, which
-// the loops load once per contact and store back after its last point.
-
-// [solve-friction]
-// Friction: the impulse along the contact plane that stops the sliding at
-// this point, but in total no larger than mu times the normal impulse. Both
-// directions are limited together, so the limit is a circle (Coulomb's cone),
-// not a square: a box slides as easily along a diagonal as along an axis.
-void Solver::solve_friction(const Contact& c, Point& p, float friction, State& a, State& b) {
-    const Row& r1 = p.tangent[0];
-    const Row& r2 = p.tangent[1];
-    glm::vec2 total(r1.impulse - r1.mass * velocity_along(a, b, r1, c.tangent[0]),
-                    r2.impulse - r2.mass * velocity_along(a, b, r2, c.tangent[1]));
-    const float limit = friction * p.normal.impulse;
-    const float length_squared = glm::dot(total, total);
-    if (length_squared > limit * limit) total *= limit / std::sqrt(length_squared);
-    // Both directions' changes as one impulse.
-    const float d1 = total.x - r1.impulse, d2 = total.y - r2.impulse;
-    p.tangent[0].impulse = total.x;
-    p.tangent[1].impulse = total.y;
-    const glm::vec3 impulse = d1 * c.tangent[0] + d2 * c.tangent[1];
-    a.v -= a.inverse_mass * impulse;
-    a.w -= d1 * r1.ia_ra_d + d2 * r2.ia_ra_d;
-    b.v += b.inverse_mass * impulse;
-    b.w += d1 * r1.ib_rb_d + d2 * r2.ib_rb_d;
-}
-// [/solve-friction]
-
-// [solve-normal]
-// The normal impulse: whatever brings the normal velocity at the point to its
-// target; the running total may only push (>= 0), never pull.
-void Solver::solve_normal(const Contact& c, Point& p, State& a, State& b) {
-    const float velocity = velocity_along(a, b, p.normal, c.normal);
-    const float total = std::max(p.normal.impulse + p.normal.mass * (p.target - velocity), 0.0f);
-    apply(a, b, p.normal, c.normal, total - p.normal.impulse);
-    p.normal.impulse = total;
-}
-// [/solve-normal]
-
-// [solve-push]
-// The same along the normal for the push velocities, which move the bodies
-// this step and are then forgotten: the overlap goes, no speed is added.
-void Solver::solve_push(const Contact& c, Point& p, State& a, State& b) {
-    const Row& row = p.normal;
-    const float velocity = glm::dot(b.push_v - a.push_v, c.normal) + glm::dot(b.push_w, row.rb_d) -
-                           glm::dot(a.push_w, row.ra_d);
-    const float total = std::max(p.push_impulse + row.mass * (p.push_target - velocity), 0.0f);
-    const float delta = total - p.push_impulse;
-    p.push_impulse = total;
-    a.push_v -= (a.inverse_mass * delta) * c.normal;
-    a.push_w -= delta * row.ia_ra_d;
-    b.push_v += (b.inverse_mass * delta) * c.normal;
-    b.push_w += delta * row.ib_rb_d;
-}
-// [/solve-push]
-
-// [shock]
-// The last pass, from the ground up (shock propagation). A contact whose
-// normal points up (within 60 degrees) is a support: the body below holds up
-// the body above. Each body's level is its distance, in supports, from
-// something static (breadth first); the supports are visited by the level of
-// the lower body, which then counts as static. A tower's bottom box is
-// stopped on the floor, the next on the stopped bottom box, and so on up:
-// what the passes before could not carry down a tall stack, this pass
-// settles. Its impulses change velocities only; the warm start keeps the
-// ordinary passes' (an infinitely heavy box below is this pass's fiction).
-void Solver::shock_pass(const SolverSettings& s, glm::vec3 up) {
-    const auto n = uint32_t(states_.size());
-    constexpr uint32_t unreached = 0xffffffffu;
-    // Which body of each contact holds up the other (or neither: 2).
-    auto lower = [&](const Contact& c) {
-        const float along = glm::dot(c.normal, up);  // the normal points from a to b
-        return along > 0.5f ? 0u : along < -0.5f ? 1u : 2u;
-    };
-    // The support graph as adjacency lists, from each body to the bodies it
-    // holds up (a counting sort by the lower body).
-    start_.assign(n + 1, 0);
-    for (const Contact& c : contacts_)
-        if (const uint32_t l = lower(c); l != 2) ++start_[(l == 0 ? c.a : c.b) + 1];
-    for (uint32_t i = 0; i < n; ++i) start_[i + 1] += start_[i];
-    neighbours_.resize(start_[n]);
-    cursor_.assign(start_.begin(), start_.end() - 1);
-    for (const Contact& c : contacts_)
-        if (const uint32_t l = lower(c); l != 2)
-            neighbours_[cursor_[l == 0 ? c.a : c.b]++] = l == 0 ? c.b : c.a;
-    // Levels: 0 for static (and sleeping) bodies, then breadth first.
-    level_.assign(n, unreached);
-    queue_.clear();
-    for (uint32_t i = 0; i < n; ++i)
-        if (states_[i].inverse_mass == 0.0f) level_[i] = 0, queue_.push_back(i);
-    for (std::size_t head = 0; head < queue_.size(); ++head) {
-        const uint32_t i = queue_[head];
-        for (uint32_t k = start_[i]; k < start_[i + 1]; ++k)
-            if (level_[neighbours_[k]] == unreached) {
-                level_[neighbours_[k]] = level_[i] + 1;
-                queue_.push_back(neighbours_[k]);
-            }
-    }
-    // The supports that lead up a level, by the lower body's level (ties by
-    // index); the others are left to the ordinary passes.
-    order_.clear();
-    for (uint32_t i = 0; i < contacts_.size(); ++i) {
-        const Contact& c = contacts_[i];
-        const uint32_t l = lower(c);
-        if (l == 2) continue;
-        const uint32_t below = l == 0 ? c.a : c.b, above = l == 0 ? c.b : c.a;
-        if (level_[below] != unreached && level_[below] < level_[above])
-            order_.push_back(uint64_t(level_[below]) << 32 | i);
-    }
-    std::sort(order_.begin(), order_.end());
-    // [/shock]
-
-    // [shock-solve]
-    saved_mass_.resize(n);
-    for (uint32_t i = 0; i < n; ++i) saved_mass_[i] = states_[i].inverse_mass;
-    for (uint64_t key : order_) {
-        const Contact& c = contacts_[uint32_t(key)];
-        const bool a_frozen = lower(c) == 0;
-        // The lower body is now static: no mass, no spin from any impulse.
-        states_[a_frozen ? c.a : c.b].inverse_mass = 0.0f;
-        const float moving_mass = states_[a_frozen ? c.b : c.a].inverse_mass;
-        Point local[4];
+// [solve-contacts]
+// One pass over every contact: the normal at each of its points, then
+// friction at each. `soft`: with the
+// spring that pushes overlap apart; without it (relaxing), the normal only
+// stops the approach, so the push's speed does not stay in the bodies.
+void Solver::solve_contacts(const SolverSettings& s, float h, bool soft) {
+    for (const Contact& c : contacts_) {
+        State a = states_[c.a], b = states_[c.b];  // copies, stored back below
+        const Softness& spring = c.static_other ? soft_static_ : soft_;
         for (uint32_t k = 0; k < c.count; ++k) {
-            local[k] = points_[c.first + k];
-            for (Row* r : {&local[k].normal, &local[k].tangent[0], &local[k].tangent[1]}) {
-                (a_frozen ? r->ia_ra_d : r->ib_rb_d) = glm::vec3(0.0f);
-                const float turning =
-                    a_frozen ? glm::dot(r->rb_d, r->ib_rb_d) : glm::dot(r->ra_d, r->ia_ra_d);
-                r->mass = 1.0f / (moving_mass + turning);
+            Point& p = points_[c.first + k];
+            // The separation now, to first order: the step's start plus how
+            // far the two bodies have moved and turned along the normal since.
+            Row& n = p.normal;
+            const float separation = p.separation + glm::dot(b.moved - a.moved, c.normal) +
+                                     glm::dot(b.turned, n.rb_d) - glm::dot(a.turned, n.ra_d);
+            float bias = 0.0f, mass_scale = 1.0f, impulse_scale = 0.0f;
+            if (separation > 0.0f) {
+                bias = separation / h;  // speculative: may close the gap, no more
+            } else if (soft) {
+                bias = std::max(spring.bias_rate * separation, -s.push_speed);
+                mass_scale = spring.mass_scale;
+                impulse_scale = spring.impulse_scale;
             }
+            // The normal impulse: soft, so it only moves the velocity part of
+            // the way to its target, and the running total only pushes.
+            const float velocity = velocity_along(a, b, n, c.normal);
+            const float change =
+                -n.mass * mass_scale * (velocity + bias) - impulse_scale * n.impulse;
+            const float normal = std::max(n.impulse + change, 0.0f);
+            apply(a, b, n, c.normal, normal - n.impulse);
+            n.impulse = normal;
+            p.most_impulse = std::max(p.most_impulse, normal);
         }
-        // One body against a fixed one: a small problem, solved to
-        // convergence by passes back and forth over its points.
-        State a = states_[c.a], b = states_[c.b];
-        const int passes = std::min(s.shock_iterations, 3 * int(c.count));
-        for (int iteration = 0; iteration < passes; ++iteration)
-            for (uint32_t k = 0; k < c.count; ++k) {
-                Point& p = local[iteration % 2 ? c.count - 1 - k : k];
-                solve_friction(c, p, s.friction, a, b);
-                solve_normal(c, p, a, b);
-            }
+        // Then friction, limited by the normal impulses just found.
+        for (uint32_t k = 0; k < c.count; ++k) {
+            Point& p = points_[c.first + k];
+            // Friction: the impulse along the contact plane that stops the
+            // sliding, no larger in total than mu times the normal impulse.
+            // Both directions together, so the limit is a circle (Coulomb's
+            // cone): a box slides as easily along a diagonal as along an axis.
+            Row& r1 = p.tangent[0];
+            Row& r2 = p.tangent[1];
+            glm::vec2 total(r1.impulse - r1.mass * velocity_along(a, b, r1, c.tangent[0]),
+                            r2.impulse - r2.mass * velocity_along(a, b, r2, c.tangent[1]));
+            const float limit = s.friction * p.normal.impulse;
+            const float length_squared = glm::dot(total, total);
+            if (length_squared > limit * limit) total *= limit / std::sqrt(length_squared);
+            const float d1 = total.x - r1.impulse, d2 = total.y - r2.impulse;
+            r1.impulse = total.x;
+            r2.impulse = total.y;
+            const glm::vec3 impulse = d1 * c.tangent[0] + d2 * c.tangent[1];
+            a.v -= a.inverse_mass * impulse;
+            a.w -= d1 * r1.ia_ra_d + d2 * r2.ia_ra_d;
+            b.v += b.inverse_mass * impulse;
+            b.w += d1 * r1.ib_rb_d + d2 * r2.ib_rb_d;
+        }
         states_[c.a] = a;
         states_[c.b] = b;
     }
-    for (uint32_t i = 0; i < n; ++i) states_[i].inverse_mass = saved_mass_[i];
-    // [/shock-solve]
 }
+// [/solve-contacts]
 
-// [solve]
-void Solver::solve(std::span<Body> bodies, std::span<Manifold> manifolds, const SolverSettings& s,
-                   float dt, glm::vec3 gravity) {
+// [restitution]
+constexpr int kRestitutionPasses = 4;
+// After the sub-steps: a point that was closing faster than the threshold
+// when the step began, and that did touch (a speculative point that never
+// got an impulse did not), leaves at e times that speed.
+void Solver::restitution(const SolverSettings& s) {
+    if (s.restitution == 0.0f) return;
+    // Several passes, as for any impulse: one pass over a face's four points
+    // would give the first point the most and set the box spinning.
+    for (int pass = 0; pass < kRestitutionPasses; ++pass)
+        for (const Contact& c : contacts_) {
+            State& a = states_[c.a];
+            State& b = states_[c.b];
+            for (uint32_t k = 0; k < c.count; ++k) {
+                Point& p = points_[c.first + k];
+                if (p.approach > -s.restitution_threshold || p.most_impulse == 0.0f) continue;
+                Row& n = p.normal;
+                const float velocity = velocity_along(a, b, n, c.normal);
+                const float change = -n.mass * (velocity + s.restitution * p.approach);
+                const float normal = std::max(n.impulse + change, 0.0f);
+                apply(a, b, n, c.normal, normal - n.impulse);
+                n.impulse = normal;
+            }
+        }
+}
+// [/restitution]
+
+// [step]
+void Solver::step(std::span<Body> bodies, std::span<Manifold> manifolds, const SolverSettings& s,
+                  float dt, glm::vec3 gravity) {
     const std::size_t n = bodies.size();
     states_.resize(n);
     centres_.resize(n);
@@ -250,41 +209,50 @@ void Solver::solve(std::span<Body> bodies, std::span<Manifold> manifolds, const 
     contacts_.clear();
     points_.clear();
     for (Manifold& m : manifolds)
-        if (bodies[m.a].is_active() || bodies[m.b].is_active()) prepare(m, s, dt);
+        if (bodies[m.a].is_active() || bodies[m.b].is_active()) prepare(m, s);
 
-    // Warm start: apply last step's impulses first. A stack's weight then need
-    // not be found again from nothing each step; it builds up over steps.
-    for (const Contact& c : contacts_)
-        for (uint32_t k = 0; k < c.count; ++k) {
-            const Point& p = points_[c.first + k];
-            State& a = states_[c.a];
-            State& b = states_[c.b];
-            apply(a, b, p.normal, c.normal, p.normal.impulse);
-            for (int t = 0; t < 2; ++t)
-                apply(a, b, p.tangent[t], c.tangent[t], p.tangent[t].impulse);
-        }
-    // Every point, several times over: each pass fixes what the last broke
-    // elsewhere. Friction before the normal, so that the normal impulse, which
-    // keeps the boxes apart, has the last word. Every other pass runs
-    // backwards, so that no contact is always solved first.
-    const std::size_t count = contacts_.size();
-    for (int iteration = 0; iteration < s.iterations; ++iteration) {
-        const bool backwards = iteration % 2 != 0;
-        const bool push = iteration < s.push_iterations;
-        for (std::size_t i = 0; i < count; ++i) {
-            const Contact& c = contacts_[backwards ? count - 1 - i : i];
-            State a = states_[c.a], b = states_[c.b];
-            for (uint32_t k = 0; k < c.count; ++k) {
-                Point& p = points_[c.first + (backwards ? c.count - 1 - k : k)];
-                solve_friction(c, p, s.friction, a, b);
-                solve_normal(c, p, a, b);
-                if (push) solve_push(c, p, a, b);
+    const int substeps = std::max(s.substeps, 1);
+    const float h = dt / float(substeps);
+    // The spring: no stiffer than a quarter of the sub-step rate (stiffer
+    // ones are not stable), twice as stiff against static bodies.
+    const float hertz = std::min(s.contact_hertz, 0.25f / h);
+    soft_constraint(hertz, s.damping_ratio, h, soft_.bias_rate, soft_.mass_scale,
+                    soft_.impulse_scale);
+    soft_constraint(std::min(2.0f * hertz, 0.25f / h), s.damping_ratio, h, soft_static_.bias_rate,
+                    soft_static_.mass_scale, soft_static_.impulse_scale);
+    const float damping = 1.0f / (1.0f + h * s.angular_damping);
+    for (int sub = 0; sub < substeps; ++sub) {
+        // Gravity and damping, for every moving body (woken ones included).
+        for (std::size_t i = 0; i < n; ++i)
+            if (states_[i].inverse_mass > 0.0f) {
+                states_[i].v += gravity * h;
+                states_[i].w *= damping;
             }
-            states_[c.a] = a;
-            states_[c.b] = b;
+        // Warm start: the impulses so far (last step's, then last sub-step's)
+        // first, so that a stack's weight need not be found again each time.
+        for (const Contact& c : contacts_)
+            for (uint32_t k = 0; k < c.count; ++k) {
+                const Point& p = points_[c.first + k];
+                State& a = states_[c.a];
+                State& b = states_[c.b];
+                apply(a, b, p.normal, c.normal, p.normal.impulse);
+                for (int t = 0; t < 2; ++t)
+                    apply(a, b, p.tangent[t], c.tangent[t], p.tangent[t].impulse);
+            }
+        for (int i = 0; i < s.iterations; ++i) solve_contacts(s, h, true);
+        // Move and turn with the solved velocities.
+        for (std::size_t i = 0; i < n; ++i) {
+            State& state = states_[i];
+            if (state.inverse_mass == 0.0f) continue;
+            integrate_position(bodies[i], state.v, state.w, h);
+            state.moved += state.v * h;
+            state.turned += state.w * h;
         }
+        for (int i = 0; i < s.relax_iterations; ++i)
+            solve_contacts(s, h, false);  // relax: the push's speed goes
     }
-    // Keep the impulses for next step's warm start (before the shock pass).
+    restitution(s);
+    // Keep the impulses for next step's warm start.
     for (const Contact& c : contacts_)
         for (uint32_t k = 0; k < c.count; ++k) {
             const Point& p = points_[c.first + k];
@@ -293,14 +261,12 @@ void Solver::solve(std::span<Body> bodies, std::span<Manifold> manifolds, const 
             cp.friction_impulse =
                 p.tangent[0].impulse * c.tangent[0] + p.tangent[1].impulse * c.tangent[1];
         }
-    if (s.shock_iterations > 0 && glm::dot(gravity, gravity) > 0.0f)
-        shock_pass(s, -glm::normalize(gravity));
     for (std::size_t i = 0; i < n; ++i)
         if (bodies[i].is_active()) {
             bodies[i].velocity = states_[i].v;
             bodies[i].angular_velocity = states_[i].w;
         }
 }
-// [/solve]
+// [/step]
 
 }  // namespace vkt::physics

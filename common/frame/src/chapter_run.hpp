@@ -16,6 +16,8 @@
 #include "vkt/frame/runner.hpp"
 #include "vkt/resources/readback.hpp"
 
+#include "overlay.hpp"
+
 #include <memory>
 #include <optional>
 #include <vector>
@@ -80,6 +82,7 @@ private:
     VkFormat storage_format_ = VK_FORMAT_UNDEFINED;  // Context::storage_format
     std::vector<FrameSlot> slots_;
     std::unique_ptr<Renderer> renderer_;
+    std::unique_ptr<Overlay> overlay_;   // in a window, for a chapter with ChapterSpec::overlay
     std::optional<uint32_t> last_slot_;  // the slot of the last frame submitted
 };
 

@@ -4,6 +4,7 @@
 // (runner.cpp, presentation.cpp) each write their loop inside it.
 
 #include "vkt/frame/harness.hpp"
+#include "vkt/frame/overlay.hpp"
 
 #include "guarded.hpp"
 
@@ -82,7 +83,10 @@ void Harness::open_presentation() {
     } else if (!options_.headless && has_display()) {
         try {
             window_ = std::make_unique<Window>(
-                spec_.title, VkExtent2D{options_.width, options_.height}, spec_.input);
+                spec_.title, VkExtent2D{options_.width, options_.height},
+                spec_.overlay && overlay_available() && spec_.input != InputUse::mouse_look
+                    ? InputUse::pointer
+                    : spec_.input);
             presentation_ = Presentation::window;
         } catch (const Error& e) {
             std::fprintf(stderr, "%s: %s; running headless\n", spec_.name.c_str(), e.what());

@@ -55,7 +55,7 @@ Destination ChapterRun::destination() const {
 }
 
 void ChapterRun::run(const RendererFactory& factory) {
-    renderer_ = factory(Context{
+    const Context context{
         .options = options_,
         .chapter = spec_.name,
         .instance = harness_.instance(),
@@ -69,9 +69,17 @@ void ChapterRun::run(const RendererFactory& factory) {
         .frames_in_flight = frames_in_flight,
         .properties = device_.properties(),
         .features = device_.features(),
-    });
+    };
+    renderer_ = factory(context);
 
     Window* window = harness_.window();
+    if (window && spec_.overlay) {
+        if (overlay_available())
+            overlay_ = std::make_unique<Overlay>(context);
+        else
+            std::fprintf(stderr, "%s: no overlay: this build has no Dear ImGui\n",
+                         spec_.name.c_str());
+    }
     for (uint64_t index = 0;;) {
         const Harness::Next next = harness_.next_frame(index);
         if (next == Harness::Next::stop) break;
@@ -126,6 +134,9 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
     // The chapter draws into the acquired swapchain image itself where it can,
     // else into our own image, which record() then copies into the swapchain's.
     const bool straight = drawn_into();
+    if (overlay_)  // the reader's changes, before the frame that shows them
+        overlay_->build(input, extent_, time,
+                        [&](OverlayPanel& panel) { renderer_->overlay(panel); });
     VKT_CHECK(vkResetCommandPool(device_, slot.pool, 0));
     record(slot, image_index,
            Frame{.cmd = slot.cmd,
@@ -223,11 +234,23 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
     }
 
     renderer_->record(frame);  // the chapter draws
-    const VkImageLayout left_in = renderer_->target_layout_after(frame);
-    const LastWrite last = last_write_in(left_in);
+    VkImageLayout left_in = renderer_->target_layout_after(frame);
+    LastWrite last = last_write_in(left_in);
 
     // GPU time ends here: what follows is presentation, not the chapter's cost.
     harness_.gpu_timer().end(cmd, frame.slot);
+
+    if (overlay_) {
+        // Over the finished frame, in the layout for drawing: its last write
+        // done and visible before the overlay's rendering loads its pixels.
+        image_barrier(
+            cmd, frame.target, left_in, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, last.stage,
+            last.access, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+            VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+        overlay_->record(cmd, frame.slot, frame.target_view, frame.extent);
+        left_in = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        last = last_write_in(left_in);
+    }
 
     // Our target: the chapter's writes must be finished and visible before we
     // copy or read it (and before the next frame's barrier, which waits for

@@ -79,10 +79,25 @@ Window::Window(const std::string& title, VkExtent2D size, InputUse use) : use_(u
     glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
         static_cast<Window*>(glfwGetWindowUserPointer(w))->input_.scroll(dy);
     });
-    if (use_ != InputUse::mouse_look) return;
     glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
         static_cast<Window*>(glfwGetWindowUserPointer(w))->input_.cursor(x, y);
     });
+    if (use_ == InputUse::pointer) {
+        glfwSetCursorEnterCallback(window_, [](GLFWwindow* w, int entered) {
+            static_cast<Window*>(glfwGetWindowUserPointer(w))->input_.cursor_inside(entered);
+        });
+        glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int) {
+            static_cast<Window*>(glfwGetWindowUserPointer(w))
+                ->input_.button(button, action == GLFW_PRESS);
+        });
+        // Where the cursor already is, for a window opened under it.
+        double x = 0, y = 0;
+        glfwGetCursorPos(window_, &x, &y);
+        input_.cursor(x, y);
+        input_.cursor_inside(glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_TRUE);
+        return;
+    }
+    if (use_ != InputUse::mouse_look) return;
     glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int, int action, int) {
         auto* self = static_cast<Window*>(glfwGetWindowUserPointer(w));
         if (action == GLFW_PRESS && !self->captured_) self->capture_cursor(true);

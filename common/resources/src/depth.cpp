@@ -52,9 +52,10 @@ bool has_stencil(VkFormat format) {
 }
 
 Image create_depth_image(VkPhysicalDevice physical, VkDevice device, VkFormat format,
-                         VkExtent2D extent) {
-    return create_image_2d(physical, device, format, extent,
-                           VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
+                         VkExtent2D extent, VkSampleCountFlagBits samples, bool transient) {
+    return create_attachment_image(physical, device, format, extent,
+                                   VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                                   VK_IMAGE_ASPECT_DEPTH_BIT, samples, transient);
 }
 
 void begin_depth_frame(VkCommandBuffer cmd, VkImage depth_image) {

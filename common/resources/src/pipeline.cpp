@@ -57,12 +57,26 @@ Pipeline create_graphics_pipeline(VkDevice device, const GraphicsPipelineDesc& d
         .polygonMode = desc.polygon_mode,
         .cullMode = desc.cull_mode,
         .frontFace = desc.front_face,
+        .depthBiasEnable =
+            desc.depth_bias_constant != 0.0f || desc.depth_bias_slope != 0.0f ? VK_TRUE : VK_FALSE,
+        .depthBiasConstantFactor = desc.depth_bias_constant,
+        .depthBiasSlopeFactor = desc.depth_bias_slope,
         .lineWidth = 1.0f,
     };
+    // [multisample]
+    // Chapter 21: how many samples the rasteriser covers per pixel, and
+    // whether the fragment shader runs once per pixel (its colour written to
+    // every covered sample) or for a fraction of the samples on their own.
     VkPipelineMultisampleStateCreateInfo multisample{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
-        .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT,
+        .rasterizationSamples = desc.samples,
+        .sampleShadingEnable = desc.min_sample_shading > 0.0f ? VK_TRUE : VK_FALSE,
+        .minSampleShading = desc.min_sample_shading,
+        .pSampleMask = nullptr,  // every sample may be written
+        .alphaToCoverageEnable = VK_FALSE,
+        .alphaToOneEnable = VK_FALSE,
     };
+    // [/multisample]
     const bool depth = desc.depth_format != VK_FORMAT_UNDEFINED;
     VkPipelineDepthStencilStateCreateInfo depth_stencil{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,

@@ -1,6 +1,6 @@
 // MovingLights: make_lights (deferred_scene.hpp), split at the time. The
-// formulas are make_lights' own, in the same order, so every float comes out
-// the same; test_tiles.cpp compares the two bit for bit.
+// formulas are make_lights' own, in the same order, so every float but the
+// phase comes out the same; test_tiles.cpp compares the two.
 
 #include "vkt/scene/moving_lights.hpp"
 
@@ -11,7 +11,7 @@
 
 namespace vkt::deferred {
 
-MovingLights::MovingLights(uint32_t count) : lights_(count), circling_(count) {
+MovingLights::MovingLights(uint32_t count) : lights_(count), paths_(count) {
     constexpr float pi = std::numbers::pi_v<float>;
     const float radius = std::min(6.0f, std::sqrt(4.0f * 144.0f / (pi * float(count))));
     for (uint32_t i = 0; i < count; ++i) {
@@ -20,8 +20,10 @@ MovingLights::MovingLights(uint32_t count) : lights_(count), circling_(count) {
         const float hue = std::fmod(0.7548777f * k, 1.0f), level = std::fmod(0.5698403f * k, 1.0f);
         const float r = 5.5f * std::sqrt((k + 0.5f) / float(count));
         const float angle = 2.399963f * k;
-        // make_lights' spin is (0.6 + 0.6 golden) (+-1) t + k, evaluated left to right.
-        circling_[i] = {(0.6f + 0.6f * golden) * (i % 2 ? 1.0f : -1.0f), k};
+        // make_lights' spin is (0.6 + 0.6 golden) (+-1) t + k; k is reduced
+        // modulo 2 pi in double precision, so the phase is exact to a float.
+        const double phase = std::fmod(double(i), 2.0 * std::numbers::pi);
+        paths_[i] = {(0.6f + 0.6f * golden) * (i % 2 ? 1.0f : -1.0f), float(phase)};
         const float height = std::min(0.15f, 0.5f * radius) + level * std::min(1.5f, 0.6f * radius);
         lights_[i] = {
             .position = glm::vec3(r * std::cos(angle), height, r * std::sin(angle)),
@@ -35,9 +37,9 @@ MovingLights::MovingLights(uint32_t count) : lights_(count), circling_(count) {
 void MovingLights::write(float t, vkt::PointLight* out) const {
     auto move = [&](uint32_t begin, uint32_t end) {
         for (uint32_t i = begin; i < end; ++i) {
-            const float spin = circling_[i].speed * t + circling_[i].phase;
+            const float spin = paths_[i].speed * t + paths_[i].phase;
             vkt::PointLight light = lights_[i];
-            light.position += 0.6f * glm::vec3(std::cos(spin), 0.0f, std::sin(spin));
+            light.position += path_radius * glm::vec3(std::cos(spin), 0.0f, std::sin(spin));
             out[i] = light;
         }
     };

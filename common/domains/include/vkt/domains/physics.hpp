@@ -2,13 +2,12 @@
 // Rigid boxes that turn, taught by chapter 14: the world that puts the parts
 // together. One call to World::step advances it by one fixed time step:
 //
-//   1. velocities: gravity and the gyroscopic term   (physics_body.hpp)
+//   1. the gyroscopic term                             (physics_body.hpp)
 //   2. broad phase: AABB pairs by sort-and-sweep      (physics_broadphase.hpp)
 //   3. narrow phase: SAT and clipping, feature ids    (physics_collision.hpp)
-//   4. sequential impulses, warm started, then a      (physics_solver.hpp)
-//      last pass from the ground up
-//   5. positions and orientations
-//   6. islands that fall asleep                       (physics_sleep.hpp)
+//   4. sub-steps: gravity, soft contacts, moving,     (physics_solver.hpp)
+//      relaxing; then restitution
+//   5. islands that fall asleep                       (physics_sleep.hpp)
 //
 // Plain C++ and glm: no Vulkan here. The same inputs give bit-equal results
 // (no threads, no unordered containers, every ordering broken by index).
@@ -32,7 +31,9 @@ struct Settings {
     glm::vec3 gravity{0.0f, -9.81f, 0.0f};
     // Boxes closer than this make contacts (with a negative depth: a gap the
     // solver lets close), so a resting box keeps its contacts even where
-    // rounding lifts it a hair off the box below.
+    // rounding lifts it a hair off the box below. Each pair's margin grows by
+    // how far the two could close on each other in one step (speculative
+    // contacts: a fast box meets a thin plate instead of passing it).
     float margin = 0.005f;
     BroadPhase broad_phase = BroadPhase::sweep_and_prune;
     SolverSettings solver;

@@ -1,9 +1,8 @@
 #pragma once
 // A rigid box that turns, taught by chapter 14: its state (where it is, how it
-// is turned, how fast it moves and spins), its mass and inertia, and the two
-// halves of a time step that move it: velocities first (gravity and the
-// gyroscopic term), positions and orientation last (with the velocities the
-// contact solver has corrected).
+// is turned, how fast it moves and spins), its mass and inertia, the
+// gyroscopic term that turns its spin axis, and the move with the velocities
+// the contact solver has corrected.
 //
 // Plain C++ and glm: no Vulkan here.
 
@@ -53,14 +52,14 @@ inline glm::mat3 rotation(const Body& body) {
 glm::mat3 world_inverse_inertia(const glm::mat3& rotation, glm::vec3 inverse_inertia);
 // [/world-inertia]
 
-// The first half of a step for a moving body: gravity changes the velocity,
-// and the gyroscopic term (a box spinning about anything but a principal axis
-// changes its spin axis by itself) changes the angular velocity, solved
-// implicitly so that it can only lose energy, never gain it.
-void integrate_velocity(Body& body, glm::vec3 gravity, float dt);
+// The gyroscopic term, once a step for a moving body: a box spinning about
+// anything but a principal axis changes its spin axis by itself. Solved
+// implicitly (stable), then scaled to keep the spin's energy (the term does
+// no work).
+void gyroscopic_step(Body& body, float dt);
 
-// The last half: move and turn with the given velocities (the solver's, which
-// may include its position-correcting "push"), then renormalise the
+// Move and turn with the given velocities (the solver's, once each
+// sub-step), then renormalise the
 // quaternion so that rounding never lets it drift away from unit length.
 void integrate_position(Body& body, glm::vec3 velocity, glm::vec3 angular_velocity, float dt);
 

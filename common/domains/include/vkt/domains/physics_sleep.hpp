@@ -20,9 +20,11 @@ namespace vkt::physics {
 
 struct SleepSettings {
     bool enabled = true;
-    float linear = 0.05f;   // m/s: slower than this counts as resting...
-    float angular = 0.05f;  // rad/s: ...and turning slower than this
-    float time = 0.5f;      // seconds an island's every body must rest before it sleeps
+    // m/s: a body rests while its centre and its corners move slower than
+    // this (a corner's speed from spin is at most |w| times the half diagonal,
+    // so a big box must turn more slowly than a small one to rest).
+    float speed = 0.05f;
+    float time = 0.5f;  // seconds an island's every body must rest before it sleeps
 };
 
 class Islands {

@@ -1,13 +1,13 @@
 #pragma once
-// The contact solver of chapter 14: sequential impulses at each contact point.
-// At every point of every manifold, in a fixed order, a fixed number of times:
-// two friction impulses along the contact plane (limited together by
-// Coulomb's cone), an impulse along the normal that stops the approach (or
-// bounces), and a separate "push" impulse that removes overlap without
-// adding speed (split impulses). Each point starts from its impulses of the
-// step before (warm starting), matched by feature id. A last pass from the
-// ground up (shock propagation) then settles stacks that the passes before
-// could not carry down.
+// The contact solver of chapter 14: sequential impulses at each contact point,
+// in sub-steps with soft contacts (the "soft step"). The step's contacts are
+// found once; the solver then cuts the step into a few sub-steps, and in each
+// one gives the moving bodies gravity, applies last sub-step's impulses
+// (warm starting), solves every point with a soft constraint (a stiff,
+// heavily damped spring that also pushes overlapping boxes apart), moves the
+// bodies, and solves every point once more without the spring (relaxing, so
+// the push adds no speed). After the last sub-step, points that were closing
+// fast when the step began are made to part at the set restitution.
 //
 // Plain C++ and glm: no Vulkan here.
 
@@ -19,37 +19,37 @@
 
 namespace vkt::physics {
 
+// [solver-settings]
 struct SolverSettings {
-    int iterations = 6;                  // passes over every contact point
-    int push_iterations = 3;             // the first of them that also push overlapping boxes apart
-    int shock_iterations = 12;           // most passes over a support in the last pass (0: none)
+    int substeps = 4;                    // sub-steps per step: gravity, solve, move, relax
+    int iterations = 2;                  // soft passes over every point per sub-step
+    int relax_iterations = 1;            // passes without the spring, after moving
+    float contact_hertz = 120.0f;        // the spring, Hz (x2 on static; at most sub-step rate / 4)
+    float damping_ratio = 10.0f;         // far past critical (1): the spring never rings
+    float push_speed = 3.0f;             // m/s: the spring pushes overlap apart no faster
     float restitution = 0.2f;            // 0: no bounce, 1: elastic
     float restitution_threshold = 1.0f;  // m/s: slower impacts do not bounce (rest, not jitter)
     float friction = 0.5f;               // Coulomb: |friction impulse| <= mu * normal impulse
-    float slop = 0.002f;                 // metres of overlap the push leaves alone
-    float push = 0.2f;                   // share of the overlap beyond the slop removed per step
+    float angular_damping = 0.05f;       // 1/s: spin loses this share of itself per second
     bool warm_start = true;
 };
+// [/solver-settings]
 
 class Solver {
 public:
-    // Solves every manifold with at least one moving body, changing those
-    // bodies' velocities, and the manifolds' points' impulses for the next
-    // step's warm start. Sleeping bodies count as static. Gravity says which
-    // way is up (for the last pass; none without gravity).
-    void solve(std::span<Body> bodies, std::span<Manifold> manifolds,
-               const SolverSettings& settings, float dt, glm::vec3 gravity);
-
-    // The velocity of the push (split impulses) that body i should move with
-    // this step, besides its real velocity. Zero for a body in no contact.
-    glm::vec3 push_velocity(uint32_t i) const { return states_[i].push_v; }
-    glm::vec3 push_angular_velocity(uint32_t i) const { return states_[i].push_w; }
+    // Advances every moving body by dt: gravity, the contacts of `manifolds`
+    // (those with at least one moving body), positions and orientations.
+    // Sleeping bodies count as static. Stores the points' impulses in the
+    // manifolds for next step's warm start.
+    void step(std::span<Body> bodies, std::span<Manifold> manifolds, const SolverSettings& settings,
+              float dt, glm::vec3 gravity);
 
 private:
-    // A body as the solver's loops see it: velocities, real and push, and the
-    // inverse mass (0 for static and sleeping bodies).
+    // A body as the solver's loops see it: its velocities, its inverse mass
+    // (0 for static and sleeping bodies), and how far it has moved and turned
+    // since the step began (the turn as a rotation vector, to first order).
     struct State {
-        glm::vec3 v, w, push_v, push_w;
+        glm::vec3 v, w, moved, turned;
         float inverse_mass;
     };
     // [row]
@@ -64,35 +64,41 @@ private:
     };
     struct Point {
         Row normal, tangent[2];
-        float target;       // the normal velocity wanted: 0 resting, > 0 bouncing, < 0 a gap
-        float push_target;  // the normal push velocity wanted: removes overlap
-        float push_impulse;
+        float separation;    // at the step's start: < 0 overlapping, > 0 a gap
+        float approach;      // normal velocity at the step's start: < 0 closing
+        float most_impulse;  // the largest normal impulse of the step: did it touch?
     };
     // [/row]
     struct Contact {
         uint32_t a, b, first, count;
         glm::vec3 normal, tangent[2];
+        bool static_other;  // one side cannot move: a stiffer spring
         Manifold* source;
     };
-    void prepare(Manifold& manifold, const SolverSettings& settings, float dt);
-    static void solve_friction(const Contact& c, Point& p, float friction, State& a, State& b);
-    static void solve_normal(const Contact& c, Point& p, State& a, State& b);
-    static void solve_push(const Contact& c, Point& p, State& a, State& b);
-    void shock_pass(const SolverSettings& settings, glm::vec3 up);
+    // The soft constraint for one sub-step h: how much of the overlap to
+    // turn into speed, and how soft the impulse is (Catto's soft step).
+    struct Softness {
+        float bias_rate, mass_scale, impulse_scale;
+    };
+    void prepare(Manifold& manifold, const SolverSettings& settings);
+    void solve_contacts(const SolverSettings& settings, float h, bool soft);
+    void restitution(const SolverSettings& settings);
 
     std::vector<State> states_;
-    std::vector<glm::vec3> centres_;
-    std::vector<glm::mat3> inverse_inertias_;  // world space
+    std::vector<glm::vec3> centres_;           // at the step's start
+    std::vector<glm::mat3> inverse_inertias_;  // world space, fixed for the step
     std::vector<Contact> contacts_;
     std::vector<Point> points_;
-    // The shock pass's scratch: levels, the contact graph, the visiting order.
-    std::vector<uint32_t> level_, start_, neighbours_, cursor_, queue_;
-    std::vector<uint64_t> order_;  // the lower body's level, then the contact's index
-    std::vector<float> saved_mass_;
+    Softness soft_{}, soft_static_{};
 };
 
 // Two directions along the contact plane, perpendicular to the unit normal n
 // and to each other: the friction axes.
 void tangent_basis(glm::vec3 n, glm::vec3& t1, glm::vec3& t2);
+
+// The soft constraint's three numbers for a spring of frequency `hertz` and
+// damping ratio `zeta`, solved implicitly over a sub-step h.
+void soft_constraint(float hertz, float zeta, float h, float& bias_rate, float& mass_scale,
+                     float& impulse_scale);
 
 }  // namespace vkt::physics

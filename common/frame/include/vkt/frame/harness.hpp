@@ -31,6 +31,10 @@ struct ChapterSpec {
     DeviceRequirements requirements;
     std::vector<OptionSpec> options;  // the chapter's own flags (--model, --lights, ...)
     InputUse input = InputUse::none;  // what input the chapter wants in a window (chapter 11)
+    // The on-screen overlay of the chapter's settings (Renderer::overlay,
+    // chapter 21), in a window only; its CMake call says OVERLAY too, for the
+    // overlay's shaders. The window then reports the pointer (InputUse::pointer).
+    bool overlay = false;
     // The chapter may write its frames from a compute shader: give our own
     // target a storage view (Frame::target_storage, chapter 20). Only where
     // asked for, since a storage usage can cost a colour target its

@@ -23,6 +23,8 @@ enum class InputUse {
     keys,        // keys and scroll
     mouse_look,  // keys, scroll, and mouse movement with the cursor captured:
                  // Escape first releases the cursor, a second Escape quits
+    pointer,     // keys, scroll, and the free cursor's position and buttons
+                 // (chapter 21's overlay is clicked with it)
 };
 
 struct Input {
@@ -31,6 +33,12 @@ struct Input {
     double mouse_dx = 0, mouse_dy = 0;  // pixels since the last frame (cursor captured only)
     double scroll = 0;                  // wheel steps since the last frame
     bool cursor_captured = false;
+    // InputUse::pointer: where the cursor is (window pixels from the top
+    // left, while it is inside), and the mouse buttons (left, right, middle)
+    // held now and pressed since the last frame.
+    double cursor_x = 0, cursor_y = 0;
+    bool cursor_inside = false;
+    std::bitset<3> buttons, buttons_pressed;
 
     bool down(int code) const { return code >= 0 && code < key::count && held[size_t(code)]; }
     bool went_down(int code) const {
@@ -45,6 +53,8 @@ class InputAccumulator {
 public:
     void key(int code, bool is_down);
     void cursor(double x, double y);  // absolute cursor position, as GLFW reports it
+    void cursor_inside(bool inside) { current_.cursor_inside = inside; }
+    void button(int index, bool is_down);  // 0 left, 1 right, 2 middle; others ignored
     void scroll(double steps) { current_.scroll += steps; }
     void set_captured(bool captured);
     Input take();

@@ -21,6 +21,7 @@
 #include "vkt/frame/gpu_timer.hpp"
 #include "vkt/frame/harness.hpp"
 #include "vkt/frame/input.hpp"
+#include "vkt/frame/overlay.hpp"
 #include "vkt/resources/upload.hpp"
 
 #include <functional>
@@ -96,6 +97,10 @@ public:
     }
     // The colour target changed size (the window was resized); the GPU is idle.
     virtual void resize(VkExtent2D) {}
+    // Chapter 21's overlay, in a window: the chapter's settings as widgets,
+    // each bound to a value it owns (vkt/frame/overlay.hpp). Called before
+    // record() each frame, so a change shows in that frame.
+    virtual void overlay(OverlayPanel&) {}
     // Once, after the last frame, the GPU idle: where a check that submits
     // GPU work of its own (--verify) runs, never inside record().
     virtual void verify() {}

@@ -1,6 +1,7 @@
 #pragma once
 // The depth buffer of chapter 08: choosing a depth format the device can
 // render to, creating the image, and the barrier that readies it each frame.
+// Chapter 21 makes it multisampled and transient.
 
 #include "vkt/core/memory.hpp"
 
@@ -26,9 +27,12 @@ bool has_stencil(VkFormat format);
 
 // A depth attachment of the colour target's size: usage DEPTH_STENCIL_ATTACHMENT,
 // device-local, its view with the DEPTH aspect. Recreate it when the target is
-// resized (Renderer::resize).
+// resized (Renderer::resize). Chapter 21: with `samples` per pixel, and
+// `transient` (TRANSIENT_ATTACHMENT, lazily allocated memory where the device
+// has it: see create_attachment_image), for depth that is never stored.
 Image create_depth_image(VkPhysicalDevice physical, VkDevice device, VkFormat format,
-                         VkExtent2D extent);
+                         VkExtent2D extent, VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT,
+                         bool transient = false);
 
 // The barrier at the start of each frame that draws with depth: the previous
 // contents are thrown away (old layout UNDEFINED; the frame clears depth), the

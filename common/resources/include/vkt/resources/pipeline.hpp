@@ -1,8 +1,9 @@
 #pragma once
 // A graphics pipeline in one call: the tidy form of chapter 04's pipeline,
-// with chapter 05's vertex input, chapter 06's push constants and chapter 08's
-// depth test as options. Later chapters name only what differs from the
-// defaults; a chapter that teaches a pipeline setting writes it out itself.
+// with chapter 05's vertex input, chapter 06's push constants, chapter 08's
+// depth test, chapter 21's multisampling and chapter 22's depth bias as
+// options. Later chapters name only what differs from
+// the defaults; a chapter that teaches a pipeline setting writes it out itself.
 
 #include "vkt/core/owned.hpp"
 
@@ -32,7 +33,18 @@ struct GraphicsPipelineDesc {
     VkFormat depth_format = VK_FORMAT_UNDEFINED;
     bool depth_write = true;
     VkCompareOp depth_compare = VK_COMPARE_OP_LESS;
+    // Chapter 22: where either is not 0, the depth written is pushed back by
+    // constant * the format's smallest step + slope * the triangle's depth
+    // slope (a shadow map's bias against acne).
+    float depth_bias_constant = 0.0f;
+    float depth_bias_slope = 0.0f;
     bool alpha_blend = false;  // source-over blending on every colour attachment
+    // Chapter 21: samples per pixel of every attachment the pipeline draws
+    // into; and, where above 0, sample shading: the fragment shader runs for
+    // at least this fraction of the samples separately (needs the device
+    // feature sampleRateShading).
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    float min_sample_shading = 0.0f;
     const VkSpecializationInfo* vertex_specialization = nullptr;
     const VkSpecializationInfo* fragment_specialization = nullptr;
 };

@@ -3,8 +3,9 @@
 // vkCmdBeginRendering (one colour target, cleared when rendering begins and
 // stored when it ends) with chapter 08's depth attachment (cleared to 1.0, the
 // far plane, so every first fragment is nearer; not stored, because nothing
-// reads depth after the frame). Chapters 04 and 08 write these structs out;
-// the chapters after them call this.
+// reads depth after the frame), and chapter 21's resolve of a multisampled
+// colour target into a single-sample one. Chapters 04, 08 and 21 write these
+// structs out; the chapters after them call this.
 
 #include <vulkan/vulkan.h>
 
@@ -12,8 +13,13 @@ namespace vkt {
 
 // Begins rendering into `colour` (COLOR_ATTACHMENT_OPTIMAL) over the whole
 // `extent`, cleared to `clear` (linear RGBA); with a `depth` view also into
-// that depth attachment (DEPTH_ATTACHMENT_OPTIMAL). End with vkCmdEndRendering.
+// that depth attachment (DEPTH_ATTACHMENT_OPTIMAL). With a `resolve` view
+// (chapter 21), `colour` and `depth` are multisampled: when rendering ends,
+// the average of each pixel's samples is written to `resolve`
+// (COLOR_ATTACHMENT_OPTIMAL, single-sample), and the samples themselves are
+// not stored. End with vkCmdEndRendering.
 void begin_rendering(VkCommandBuffer cmd, VkImageView colour, VkExtent2D extent,
-                     VkClearColorValue clear, VkImageView depth = VK_NULL_HANDLE);
+                     VkClearColorValue clear, VkImageView depth = VK_NULL_HANDLE,
+                     VkImageView resolve = VK_NULL_HANDLE);
 
 }  // namespace vkt

@@ -1,0 +1,67 @@
+# Chapter 21: a wheel of thin spokes and two quads that cut through each
+# other, drawn with 4 samples per pixel (the default) and resolved.
+#
+# Hand-worked pixels: the corners are background, the clear colour (0.02,
+# 0.02, 0.04) stored sRGB-encoded as (39, 39, 56).
+set(VKT_21_PIXEL PIXEL 0,0,39,39,56 319,239,39,39,56)
+# The edges, by pixel: a 50x40 rectangle left of the wheel's hub (x 10..59,
+# y 100..139 at 320x240) holds only spokes, (1.0, 0.92, 0.7) stored as
+# (255, 246, 218), and background. With one sample per pixel each pixel is
+# one or the other; resolved from 4 samples, the pixels the spokes' edges
+# cross take values between the two (lavapipe, frame 9: 114 of 2,000).
+set(VKT_21_SPOKES 10,100,50,40,39,39,56,255,246,218)
+vkt_chapter_test(chapter.21_multisampling 21_multisampling GOLDEN BLESS ${VKT_21_PIXEL}
+  BETWEEN ${VKT_21_SPOKES},20,2000 ARGS ${headless}
+  EXPECT "21_multisampling: 4x samples \\(the device offers [0-9, ]*4[0-9, ]*\\), sample shading off. multisampled colour and depth [0-9.]+ MiB, transient, (not )?lazily allocated")
+vkt_chapter_test(chapter.21_multisampling.offscreen 21_multisampling GOLDEN ${VKT_21_PIXEL}
+  BETWEEN ${VKT_21_SPOKES},20,2000 ARGS ${offscreen})
+vkt_chapter_window_test(21_multisampling PIXEL 0,0,39,39,56)
+# The check can fail: at 1x, asking for blended edge pixels names the count.
+vkt_chapter_test(chapter_check.between_can_fail 21_multisampling EXIT 0
+  BETWEEN ${VKT_21_SPOKES},1,2000 ARGS ${headless} --samples 1)
+set_tests_properties(chapter_check.between_can_fail PROPERTIES
+  PASS_REGULAR_EXPRESSION "FAIL: --between .*: 0 pixels lie between the two colours, expected 1 to 2000")
+
+# Sample shading: the striped quad's stripes are decided in the fragment
+# shader. Inside it (a 35x40 rectangle, x 250..284, y 90..129) multisampling
+# alone leaves every pixel light (89, 225, 231) or dark (44, 120, 124): the
+# shader ran once per pixel. With --sample-shading 1 it runs per sample and
+# most pixels blend (lavapipe: 672 of 1,400).
+set(VKT_21_STRIPES 250,90,35,40,89,225,231,44,120,124)
+vkt_chapter_test(chapter.21_multisampling.stripes_alias 21_multisampling
+  BETWEEN ${VKT_21_STRIPES},0,0 ARGS ${headless})
+# The 1x and sample-shading pictures have goldens of their own: the book's
+# zoomed comparison (book/diagrams/21_zoom.py) is drawn from these and the
+# default. VKT_BLESS=1 ctest -R '^chapter.21_multisampling' re-blesses all three.
+vkt_chapter_test(chapter.21_multisampling.one_sample 21_multisampling
+  GOLDEN_FILE 21_multisampling_1x.png LABELS bless ${VKT_21_PIXEL}
+  BETWEEN ${VKT_21_SPOKES},0,0 ARGS ${headless} --samples 1
+  EXPECT "21_multisampling: 1x samples .*sample shading off. depth [0-9.]+ MiB")
+vkt_chapter_test(chapter.21_multisampling.sample_shading 21_multisampling
+  GOLDEN_FILE 21_multisampling_sample_shading.png LABELS bless ${VKT_21_PIXEL}
+  BETWEEN ${VKT_21_SPOKES},20,2000 ${VKT_21_STRIPES},300,1400
+  ARGS ${headless} --sample-shading 1 EXPECT "4x samples .*sample shading on")
+vkt_chapter_test(chapter.21_multisampling.help 21_multisampling EXIT 0 ARGS --help
+  EXPECT "usage: 21_multisampling" "--samples N" "--sample-shading FRACTION")
+
+# Bad input. A count the command line does not know: exit 2. A count the
+# device does not offer (lavapipe offers 1 and 4): exit 1, naming the device
+# and what it offers.
+vkt_chapter_test(bad_input.21_multisampling.samples_3 21_multisampling EXIT 2 ARGS --samples 3
+  EXPECT "--samples wants one of 1, 2, 4, 8, not '3'")
+vkt_chapter_test(bad_input.21_multisampling.samples_64 21_multisampling EXIT 2 ARGS --samples 64
+  EXPECT "--samples wants one of 1, 2, 4, 8, not '64'")
+vkt_chapter_test(bad_input.21_multisampling.samples_8 21_multisampling EXIT 1
+  ARGS --headless --frames 1 --samples 8
+  EXPECT "21_multisampling: error: --samples 8: llvmpipe.* cannot render a colour and depth target with 8 samples per pixel \\(it offers 1, 4\\)")
+vkt_chapter_test(bad_input.21_multisampling.samples_2 21_multisampling EXIT 1
+  ARGS --headless --frames 1 --samples 2 EXPECT "--samples 2: .*\\(it offers 1, 4\\)")
+vkt_chapter_test(bad_input.21_multisampling.sample_shading_range 21_multisampling EXIT 2
+  ARGS --sample-shading 0.1 EXPECT "--sample-shading wants a number from 0.25 to 1, not '0.1'")
+vkt_chapter_test(bad_input.21_multisampling.sample_shading_word 21_multisampling EXIT 2
+  ARGS --sample-shading all EXPECT "--sample-shading wants a number")
+vkt_chapter_test(bad_input.21_multisampling.sample_shading_one_sample 21_multisampling EXIT 2
+  ARGS --samples 1 --sample-shading 1 EXPECT "--sample-shading needs --samples 2 or more")
+vkt_chapter_test(bad_input.21_multisampling.no_sample_rate_shading 21_multisampling EXIT 1
+  ARGS --headless --frames 1 --sample-shading 1 ENV VKT_HIDE_FEATURES=sampleRateShading
+  EXPECT "--sample-shading: .* lacks the sampleRateShading feature \\(hidden by VKT_HIDE_FEATURES\\)")

@@ -1,0 +1,56 @@
+# Chapter 22: a long floor with two rows of pillars, a sphere and a torus
+# under one directional light, shadowed through three cascades.
+#
+# Hand-worked pixels (tests/unit/test_cascades.cpp has the geometry): the
+# top-left corner is sky, the clear colour (0.45, 0.6, 0.8) stored
+# sRGB-encoded as (179, 203, 231). The light travels along (-0.6, -1, -0.45)
+# / 1.25, so the floor's Lambert term is 1 / 1.25 = 0.8.
+#  - Lit: the floor point (2, 0, 4), at pixel (272, 228) at 320x240: nothing
+#    lies between it and the light; floor colour (0.8, 0.8, 0.75) times
+#    0.2 + 0.8 * 0.8 = 0.84, stored (214, 214, 208).
+#  - In shadow: the floor point (2.1, 0, 1.325), at pixel (235, 166): the ray
+#    from it to the light passes through the centre of the right front pillar
+#    (3, 1.5, 2); floor colour times the ambient 0.2 alone, stored (111, 111, 108).
+set(VKT_22_PIXEL PIXEL 0,0,179,203,231 272,228,214,214,208,2 235,166,111,111,108,2)
+vkt_chapter_test(chapter.22_shadows 22_shadows GOLDEN BLESS ${VKT_22_PIXEL} ARGS ${headless}
+  EXPECT "22_shadows: 3 cascades of 1024x1024, splits at 8.5 20.3 60.0 60.0, bias 4.00 \\+ 4.00 x slope")
+vkt_chapter_test(chapter.22_shadows.offscreen 22_shadows GOLDEN ${VKT_22_PIXEL} ARGS ${offscreen})
+vkt_chapter_window_test(22_shadows PIXEL 0,0,179,203,231)
+# The cascade view: each cascade tinted; its own golden (LABELS bless).
+vkt_chapter_test(chapter.22_shadows.cascades 22_shadows GOLDEN_FILE 22_shadows_cascades.png
+  LABELS bless PIXEL 0,0,179,203,231 ARGS ${headless} --view cascades
+  EXPECT "cascades coloured")
+# One cascade and four: the same shadow and the same light at the two pixels.
+vkt_chapter_test(chapter.22_shadows.one_cascade 22_shadows ${VKT_22_PIXEL}
+  ARGS ${headless} --cascades 1 EXPECT "1 cascades of 1024x1024")
+vkt_chapter_test(chapter.22_shadows.four_cascades 22_shadows ${VKT_22_PIXEL}
+  ARGS ${headless} --cascades 4 EXPECT "4 cascades of 1024x1024")
+# Without the bias the lit floor shadows itself (acne): around the lit pixel
+# the floor becomes bands of part-shadow (lavapipe: 156 and 188 where 214 was
+# lit). The pixel must lie strictly between lit (214) and full shadow (111):
+# 163 +- 33 takes 130..196, neither.
+vkt_chapter_test(chapter.22_shadows.no_bias 22_shadows GOLDEN_FILE 22_shadows_acne.png
+  LABELS bless PIXEL 272,228,163,163,158,33
+  ARGS ${headless} --bias-constant 0 --bias-slope 0 EXPECT "bias 0.00 \\+ 0.00 x slope")
+# Far too much slope bias pushes the casters' depths so far from the light
+# that the shadows come loose from them (peter-panning): the floor point the
+# pillar shades, at (235, 166), is lit (214, 214, 208).
+vkt_chapter_test(chapter.22_shadows.peter_panning 22_shadows
+  GOLDEN_FILE 22_shadows_peter_panning.png LABELS bless PIXEL 235,166,214,214,208,2
+  ARGS ${headless} --bias-slope 150 EXPECT "bias 4.00 \\+ 150.00 x slope")
+vkt_chapter_test(chapter.22_shadows.help 22_shadows EXIT 0 ARGS --help
+  EXPECT "usage: 22_shadows" "--cascades N" "--view VIEW" "--bias-constant F" "--bias-slope F")
+
+# Bad input: one clear line and exit status 2.
+vkt_chapter_test(bad_input.22_shadows.no_cascades 22_shadows EXIT 2 ARGS --cascades 0
+  EXPECT "--cascades")
+vkt_chapter_test(bad_input.22_shadows.five_cascades 22_shadows EXIT 2 ARGS --cascades 5
+  EXPECT "--cascades")
+vkt_chapter_test(bad_input.22_shadows.bad_view 22_shadows EXIT 2 ARGS --view depth
+  EXPECT "--view wants one of lit, cascades, not 'depth'")
+vkt_chapter_test(bad_input.22_shadows.bad_bias_constant 22_shadows EXIT 2
+  ARGS --bias-constant -1 EXPECT "--bias-constant wants a number from 0 to 1000")
+vkt_chapter_test(bad_input.22_shadows.bad_bias_slope 22_shadows EXIT 2
+  ARGS --bias-slope steep EXPECT "--bias-slope wants a number")
+vkt_chapter_test(bad_input.22_shadows.too_much_slope 22_shadows EXIT 2
+  ARGS --bias-slope 201 EXPECT "--bias-slope wants a number from 0 to 200, not '201'")

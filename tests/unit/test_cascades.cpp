@@ -1,0 +1,101 @@
+// Chapter 22's cascades (chapters/22_shadows/cascades.hpp): the practical
+// split scheme against values worked out by hand, and the light's
+// orthographic box around each slice of the view; and the geometry behind
+// the chapter test's two hand-picked pixels.
+#include "../../chapters/22_shadows/cascades.hpp"
+#include "../../chapters/22_shadows/uniforms.hpp"
+#include "spirv_reflect.hpp"
+
+#include <catch2/catch_approx.hpp>
+#include <catch2/catch_test_macros.hpp>
+
+#include <cstddef>
+
+using Catch::Approx;
+
+TEST_CASE("cascade_splits: the practical scheme between uniform and logarithmic", "[cascades]") {
+    // n = 0.1, f = 60, three cascades, lambda = 0.6 (the chapter's): the
+    // logarithmic boundaries 0.1 * 600^(1/3) = 0.8434 and 600^(2/3) / 10 =
+    // 7.114, the uniform ones 20.067 and 40.033; blended 0.6 : 0.4, 8.53 and
+    // 20.28, as the chapter prints.
+    const std::vector<float> splits = cascade_splits(0.1f, 60.0f, 3, 0.6f);
+    REQUIRE(splits.size() == 4);
+    CHECK(splits[0] == Approx(0.1f));
+    CHECK(splits[1] == Approx(8.53f).margin(0.01));
+    CHECK(splits[2] == Approx(20.28f).margin(0.01));
+    CHECK(splits[3] == Approx(60.0f));
+    // lambda 0: uniform; lambda 1: each cascade the same ratio far / near.
+    CHECK(cascade_splits(1.0f, 9.0f, 2, 0.0f)[1] == Approx(5.0f));
+    CHECK(cascade_splits(1.0f, 9.0f, 2, 1.0f)[1] == Approx(3.0f));
+    CHECK(cascade_splits(1.0f, 9.0f, 1, 0.5f).size() == 2);
+}
+
+TEST_CASE("light_from_world puts a slice inside the map, depth growing away from the light",
+          "[cascades]") {
+    const Camera camera{.eye = {0, 3, 8},
+                        .forward = glm::normalize(glm::vec3(0, -0.25f, -1)),
+                        .up = glm::normalize(glm::vec3(0, 1, -0.25f)),
+                        .fov_y = glm::radians(50.0f),
+                        .aspect = 4.0f / 3.0f,
+                        .z_near = 0.1f,
+                        .z_far = 60.0f};
+    const glm::vec3 light = glm::normalize(glm::vec3(-0.6f, -1.0f, -0.45f));
+    const auto corners = slice_corners(camera, 8.53f, 20.28f);
+    // The slice's far corners are 20.28 / 8.53 times as far from the axis.
+    CHECK(glm::length(corners[4] - (camera.eye + 20.28f * camera.forward)) ==
+          Approx(20.28f / 8.53f * glm::length(corners[0] - (camera.eye + 8.53f * camera.forward))));
+    const glm::mat4 m = light_from_world(corners, light, 40.0f);
+    glm::vec3 centre(0.0f);
+    for (const glm::vec3& p : corners) {
+        centre += p / 8.0f;
+        const glm::vec4 c = m * glm::vec4(p, 1.0f);
+        CHECK(c.w == Approx(1.0f));  // orthographic
+        CHECK(std::abs(c.x) <= 1.0f);
+        CHECK(std::abs(c.y) <= 1.0f);
+        CHECK(c.z > 0.0f);
+        CHECK(c.z < 1.0f);
+    }
+    const glm::vec4 mid = m * glm::vec4(centre, 1.0f);
+    CHECK(mid.x == Approx(0.0f).margin(1e-5));
+    CHECK(mid.y == Approx(0.0f).margin(1e-5));
+    // A step towards the light: nearer (smaller depth), the same texel.
+    const glm::vec4 nearer = m * glm::vec4(centre - light, 1.0f);
+    CHECK(nearer.z < mid.z);
+    CHECK(nearer.x == Approx(0.0f).margin(1e-5));
+    CHECK(nearer.y == Approx(0.0f).margin(1e-5));
+}
+
+TEST_CASE("the chapter test's shadowed floor point looks at the light through a pillar",
+          "[cascades]") {
+    // tests/chapters/22_shadows.cmake: (2.1, 0, 1.325) is in shadow because
+    // the ray to the light, along (0.6, 1, 0.45), reaches the centre of the
+    // right front pillar (3, 1.5, 2) (0.6 x 3 x 0.6) after 1.5 units.
+    const glm::vec3 point(2.1f, 0.0f, 1.325f), to_light(0.6f, 1.0f, 0.45f);
+    const glm::vec3 hit = point + 1.5f * to_light;
+    CHECK(hit.x == Approx(3.0f));
+    CHECK(hit.y == Approx(1.5f));
+    CHECK(hit.z == Approx(2.0f));
+    // The lit point (2, 0, 4): every object ends before z = 4 (the pillars
+    // at z 2.3, the sphere at 3.7, the torus at 1.8), and the ray towards
+    // the light only moves to larger z.
+    CHECK(to_light.z > 0.0f);
+    // The floor's Lambert term: n . -light = 1 / |(-0.6, -1, -0.45)| = 0.8.
+    CHECK(glm::dot(glm::vec3(0, 1, 0), -glm::normalize(-to_light)) == Approx(0.8f));
+}
+
+TEST_CASE("chapter 22's FrameBlock matches both compiled shaders' block", "[cascades]") {
+    for (const char* shader : {"scene.vert", "scene.frag"}) {
+        INFO(shader);
+        const auto words =
+            spirv::read(std::string(VKT_BINARY_DIR "/shaders/22_shadows/") + shader + ".spv");
+        const auto block = spirv::struct_members(words, "Frame");
+        CHECK(block.at("clip_from_world").offset == offsetof(FrameBlock, clip_from_world));
+        CHECK(block.at("light_from_world").offset == offsetof(FrameBlock, light_from_world));
+        CHECK(block.at("light_from_world").array_stride == sizeof(glm::mat4));
+        CHECK(block.at("splits").offset == offsetof(FrameBlock, splits));
+        CHECK(block.at("eye").offset == offsetof(FrameBlock, eye));
+        CHECK(block.at("forward").offset == offsetof(FrameBlock, forward));
+        CHECK(block.at("light").offset == offsetof(FrameBlock, light));
+        CHECK(block.at("settings").offset == offsetof(FrameBlock, settings));
+    }
+}
