@@ -147,7 +147,7 @@ public:
                 tiles_.shade(cmd, sets, frame.extent, view_, binned_);
             }
             auto scope = frame.gpu_scope("copy");
-            tiles_.copy_to_target(cmd, frame.target, frame.extent);
+            tiles_.copy_to_target(cmd, frame.target, frame.extent, frame.target_ready);
         } else {
             {
                 auto scope = frame.gpu_scope("cull");
@@ -159,15 +159,26 @@ public:
                     lighting_.dispatch(cmd, sets, frame.extent, tiles_, view_);
                 }
                 auto scope = frame.gpu_scope("copy");
-                tiles_.copy_to_target(cmd, frame.target, frame.extent);
+                tiles_.copy_to_target(cmd, frame.target, frame.extent, frame.target_ready);
                 return;
             }
             auto scope = frame.gpu_scope("lighting");
+            vkt::image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_UNDEFINED,  // see target_layout
+                               VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, frame.target_ready,
+                               VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                               VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
             lighting_.draw(cmd, sets, frame.extent, frame.target_view, ch17::LightingPass::tiled,
                            &view_, sizeof view_);
         }
     }
     // [/frame]
+
+    // The shading in compute ends with a blit into the target, the fragment
+    // pass with its drawing: the runner's next barrier starts where each left it.
+    VkImageLayout target_layout_after(const vkt::Frame&) const override {
+        return compute_ || lists_ ? VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL
+                                  : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    }
 
 private:
     // Set 0, one per frame in flight: uniforms, lights, tile statistics.
@@ -380,6 +391,8 @@ int main(int argc, char** argv) {
                                   VKT_FEATURE_13(maintenance4)};
     // --shade compute and lists copy their shaded image into the frame.
     spec.transfers_into_target = true;
+    // Untouched: the compute paths blit into it, the fragment path draws.
+    spec.target_layout = VK_IMAGE_LAYOUT_UNDEFINED;
     spec.options = {
         {.name = "--shade",
          .type = vkt::OptionType::choice,

@@ -64,8 +64,9 @@ public:
         for (const VkBool32 binned : {VK_FALSE, VK_TRUE})
             for (const VkBool32 shade : {VK_FALSE, VK_TRUE}) {
                 const VkBool32 constants[] = {shade, binned};
-                const VkSpecializationMapEntry entries[] = {{0, 0, sizeof(VkBool32)},
-                                                            {1, 4, sizeof(VkBool32)}};
+                // constant_id 0 at constants[0], 1 at constants[1]: byte offsets.
+                const VkSpecializationMapEntry entries[] = {
+                    {0, 0, sizeof(VkBool32)}, {1, sizeof(VkBool32), sizeof(VkBool32)}};
                 const VkSpecializationInfo specialization{2, entries, sizeof constants, constants};
                 (shade ? shade_ : cull_)[binned] =
                     vkt::create_compute_pipeline(device, tiles, layout, &specialization);
@@ -169,13 +170,15 @@ public:
             VK_ACCESS_2_TRANSFER_READ_BIT);
     }
 
-    // The blit converts the linear floats to the target's _SRGB format; the
-    // target then goes back to COLOR_ATTACHMENT_OPTIMAL, as the runner wants,
-    // and the float image to GENERAL, where every other use expects it.
-    void copy_to_target(VkCommandBuffer cmd, VkImage target, VkExtent2D extent) const {
+    // The blit converts the linear floats to the target's _SRGB format. The
+    // target comes untouched (from the stage `ready`, Frame::target_ready)
+    // and stays in TRANSFER_DST_OPTIMAL, where the runner's next barrier
+    // starts; the float image goes back to GENERAL, where every other use
+    // expects it.
+    void copy_to_target(VkCommandBuffer cmd, VkImage target, VkExtent2D extent,
+                        VkPipelineStageFlags2 ready) const {
         vkt::image_barrier(cmd, target, VK_IMAGE_LAYOUT_UNDEFINED,
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_NONE,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, ready, VK_ACCESS_2_NONE,
                            VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
         const VkOffset3D corner{int32_t(extent.width), int32_t(extent.height), 1};
         const VkImageBlit region{.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
@@ -184,11 +187,6 @@ public:
                                  .dstOffsets = {{0, 0, 0}, corner}};
         vkCmdBlitImage(cmd, shaded_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
-        vkt::image_barrier(
-            cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_BLIT_BIT,
-            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-            VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
         vkt::image_barrier(cmd, shaded_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_NONE,
                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE);

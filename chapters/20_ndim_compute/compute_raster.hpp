@@ -180,27 +180,23 @@ public:
     // [copy-to-target]
     // The words are the target's pixels already: a buffer-to-image copy
     // takes the buffer's bytes as texels of the target's own format (4
-    // bytes each, rows tightly packed), bits unchanged. The target goes to
-    // its transfer layout for the copy and back to the layout the runner
-    // expects after record(). (The binned rasteriser ends the same way.)
+    // bytes each, rows tightly packed), bits unchanged. The target comes
+    // untouched (its old contents do not matter) and goes to its transfer
+    // layout for the copy, where it stays: the runner's next barrier starts
+    // there. (The binned rasteriser ends the same way.)
     void copy_to_target(const vkt::Frame& frame) const {
         const VkCommandBuffer cmd = frame.cmd;
         vkt::buffer_barrier(cmd, pixels_.buffer, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                             VK_ACCESS_2_TRANSFER_READ_BIT);
-        vkt::image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_NONE,
-                           VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        vkt::image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_UNDEFINED,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, frame.target_ready,
+                           VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
+                           VK_ACCESS_2_TRANSFER_WRITE_BIT);
         const VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                                        .imageExtent = {frame.extent.width, frame.extent.height, 1}};
         vkCmdCopyBufferToImage(cmd, pixels_.buffer, frame.target,
                                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        vkt::image_barrier(
-            cmd, frame.target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
-            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
     }
     // [/copy-to-target]
 

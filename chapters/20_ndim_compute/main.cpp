@@ -122,6 +122,12 @@ public:
                             VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT,
                             VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT);
         auto scope = frame.gpu_scope("raster");
+        // The target comes untouched (ChapterSpec::target_layout): into the
+        // layout for drawing, once the runner says it may be written.
+        vkt::image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_UNDEFINED,
+                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, frame.target_ready,
+                           VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
         vkt::begin_rendering(cmd, frame.target_view, frame.extent,
                              {{0.006f, 0.006f, 0.012f, 1.0f}});
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, lines_);
@@ -133,6 +139,17 @@ public:
         vkCmdEndRendering(cmd);
         // [/draw]
     }
+
+    // [layout-after]
+    // Each path leaves the target in the layout of its last write: the
+    // resolve's GENERAL, the copy's TRANSFER_DST, the lines' colour
+    // attachment. The runner's next barrier starts from there.
+    VkImageLayout target_layout_after(const vkt::Frame& frame) const override {
+        if (!raster_) return VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        return raster_->resolves(frame) ? VK_IMAGE_LAYOUT_GENERAL
+                                        : VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    }
+    // [/layout-after]
 
 private:
     // Chapter 18's scene and keys, --raster and --verify, and the tuning.
@@ -312,6 +329,9 @@ int main(int argc, char** argv) {
     // without a format qualifier.
     spec.storage_target = true;
     spec.transfers_into_target = true;  // where they cannot, they copy their pixels in
+    // Each raster path writes the target first in its own way: the runner
+    // hands it over untouched, and each path makes the first barrier itself.
+    spec.target_layout = VK_IMAGE_LAYOUT_UNDEFINED;
     spec.requirements.optional_features = {VKT_FEATURE_10(shaderStorageImageWriteWithoutFormat)};
     // --scene, --dim, --projection and --motion: vkt/scene/ndim_options.hpp.
     spec.options = vkt::ndim::scene_options();

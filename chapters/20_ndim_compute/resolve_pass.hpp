@@ -71,10 +71,10 @@ public:
     }
 
     // [resolve-record]
-    // After the rasteriser's writes to the pixel buffer: the target to
-    // GENERAL (its old contents do not matter), one invocation per pixel,
-    // and the target back to COLOR_ATTACHMENT_OPTIMAL, where the runner
-    // expects it after record(). The buffer's background is for the next
+    // After the rasteriser's writes to the pixel buffer: the target, handed
+    // over untouched, to GENERAL (its old contents do not matter), and one
+    // invocation per pixel. The target stays in GENERAL: the runner's next
+    // barrier starts there (target_layout_after). The buffer's background is for the next
     // frame's rasteriser, which waits for this pass (ComputeRaster::clear).
     void record(const vkt::Frame& frame, VkBuffer pixels, uint32_t background) const {
         const VkDescriptorSet set = sets_[frame.slot];  // its last frame is finished
@@ -86,7 +86,7 @@ public:
             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         vkt::image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_NONE,
+                           frame.target_ready, VK_ACCESS_2_NONE,
                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         const Push push{{frame.extent.width, frame.extent.height}, background};
@@ -96,11 +96,6 @@ public:
         vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
         vkCmdDispatch(cmd, uint32_t(vkt::dispatch_count(frame.extent.width, side)),
                       uint32_t(vkt::dispatch_count(frame.extent.height, side)), 1);
-        vkt::image_barrier(
-            cmd, frame.target, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
     }
     // [/resolve-record]
 

@@ -110,11 +110,14 @@ public:
         samples_ = checked_sample_count(uint32_t(std::stoul(options.text("--samples"))), offered,
                                         context.properties.deviceName);
         // [/samples]
-        const float shading =
+        shading_ =
             options.has("--sample-shading") ? float(options.number("--sample-shading")) : 0.0f;
-        if (shading > 0.0f && !context.features.has(VKT_FEATURE_10(sampleRateShading)))
+        can_shade_ = context.features.has(VKT_FEATURE_10(sampleRateShading));
+        if (shading_ > 0.0f && !can_shade_)
             throw vkt::Error(std::string("--sample-shading: ") + context.properties.deviceName +
                              " " + vkt::lacks_feature("sampleRateShading"));
+        for (uint32_t count = 1; count <= 64; count *= 2)  // the overlay's choices
+            if (offered & count) offered_.push_back(VkSampleCountFlagBits(count));
 
         const Scene scene = build_scene();
         wheel_indices_ = scene.wheel_indices;
@@ -128,41 +131,51 @@ public:
                                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
         depth_format_ = vkt::choose_depth_format(physical_);
-        create_targets(context.extent);
-
-        const VkVertexInputBindingDescription binding{0, sizeof(Vertex),
-                                                      VK_VERTEX_INPUT_RATE_VERTEX};
-        const VkVertexInputAttributeDescription attributes[] = {
-            {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
-            {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, colour)},
-            {2, 0, VK_FORMAT_R32_SFLOAT, offsetof(Vertex, striped)},
-        };
+        extent_ = context.extent;
+        create_targets(extent_);
+        vertex_ = vkt::load_shader(device_, context.chapter, "scene.vert");
+        fragment_ = vkt::load_shader(device_, context.chapter, "scene.frag");
         const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4)};
         layout_ = vkt::create_pipeline_layout(device_, {}, {&push, 1});
-        vkt::ShaderModule vertex = vkt::load_shader(device_, context.chapter, "scene.vert");
-        vkt::ShaderModule fragment = vkt::load_shader(device_, context.chapter, "scene.frag");
-        // [pipeline]
-        // The pipeline must be made for the sample count of the attachments
-        // it draws into; sample shading is a pipeline setting too.
-        pipeline_ = vkt::create_graphics_pipeline(device_, {
-                                                               .vertex = vertex,
-                                                               .fragment = fragment,
-                                                               .layout = layout_,
-                                                               .bindings = {&binding, 1},
-                                                               .attributes = attributes,
-                                                               .color_formats = {format_},
-                                                               .depth_format = depth_format_,
-                                                               .samples = samples_,
-                                                               .min_sample_shading = shading,
-                                                           });
-        // [/pipeline]
+        create_pipeline();
         std::fprintf(stderr, "21_multisampling: %ux samples (the device offers %s), %s; %s\n",
                      unsigned(samples_), sample_count_list(offered).c_str(),
-                     shading > 0.0f ? "sample shading on" : "sample shading off",
+                     shading_ > 0.0f ? "sample shading on" : "sample shading off",
                      memory_note().c_str());
     }
 
-    void resize(VkExtent2D extent) override { create_targets(extent); }
+    void resize(VkExtent2D extent) override {
+        extent_ = extent;
+        create_targets(extent);
+    }
+
+    // [overlay]
+    // In a window, the overlay (vkt/frame/overlay.hpp) changes the sample
+    // count and sample shading live. Both are baked into the pipeline, and
+    // the count into the images too: one multisampled image serves every
+    // frame in flight, so a change waits for the GPU to finish them all
+    // before it makes both again.
+    void overlay(vkt::OverlayPanel& panel) override {
+        int chosen = 0;
+        std::vector<std::string> names;
+        for (size_t i = 0; i < offered_.size(); ++i) {
+            names.push_back(std::to_string(unsigned(offered_[i])));
+            if (offered_[i] == samples_) chosen = int(i);
+        }
+        std::vector<const char*> labels;
+        for (const std::string& name : names) labels.push_back(name.c_str());
+        bool changed = panel.choice("Samples", chosen, labels);
+        bool shading = shading_ > 0.0f;
+        if (can_shade_) changed = panel.checkbox("Sample shading", shading) || changed;
+        panel.text(memory_note());
+        if (!changed) return;
+        VKT_CHECK(vkDeviceWaitIdle(device_));
+        samples_ = offered_[size_t(chosen)];
+        shading_ = shading ? 1.0f : 0.0f;
+        create_targets(extent_);
+        create_pipeline();
+    }
+    // [/overlay]
 
     void record(const vkt::Frame& frame) override {
         const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
@@ -242,6 +255,31 @@ public:
     }
 
 private:
+    void create_pipeline() {
+        const VkVertexInputBindingDescription binding{0, sizeof(Vertex),
+                                                      VK_VERTEX_INPUT_RATE_VERTEX};
+        const VkVertexInputAttributeDescription attributes[] = {
+            {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
+            {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, colour)},
+            {2, 0, VK_FORMAT_R32_SFLOAT, offsetof(Vertex, striped)},
+        };
+        // [pipeline]
+        // The pipeline must be made for the sample count of the attachments
+        // it draws into; sample shading is a pipeline setting too.
+        pipeline_ = vkt::create_graphics_pipeline(device_, {
+                                                               .vertex = vertex_,
+                                                               .fragment = fragment_,
+                                                               .layout = layout_,
+                                                               .bindings = {&binding, 1},
+                                                               .attributes = attributes,
+                                                               .color_formats = {format_},
+                                                               .depth_format = depth_format_,
+                                                               .samples = samples_,
+                                                               .min_sample_shading = shading_,
+                                                           });
+        // [/pipeline]
+    }
+
     // [targets]
     // The multisampled colour and depth images, of the target's size. Both
     // are transient: their contents never outlive one rendering (colour is
@@ -251,10 +289,11 @@ private:
     void create_targets(VkExtent2D extent) {
         depth_ = vkt::create_depth_image(physical_, device_, depth_format_, extent, samples_,
                                          samples_ != VK_SAMPLE_COUNT_1_BIT);
-        if (samples_ != VK_SAMPLE_COUNT_1_BIT)
-            colour_ = vkt::create_attachment_image(physical_, device_, format_, extent,
-                                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
-                                                   VK_IMAGE_ASPECT_COLOR_BIT, samples_, true);
+        colour_ = samples_ == VK_SAMPLE_COUNT_1_BIT
+                      ? vkt::Image{}
+                      : vkt::create_attachment_image(physical_, device_, format_, extent,
+                                                     VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
+                                                     VK_IMAGE_ASPECT_COLOR_BIT, samples_, true);
     }
     // [/targets]
 
@@ -279,6 +318,11 @@ private:
     VkFormat format_;
     VkFormat depth_format_ = VK_FORMAT_UNDEFINED;
     VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
+    std::vector<VkSampleCountFlagBits> offered_;  // what this device can render, 1 first
+    float shading_ = 0.0f;                        // minSampleShading; 0: off
+    bool can_shade_ = false;                      // the sampleRateShading feature
+    VkExtent2D extent_{};
+    vkt::ShaderModule vertex_, fragment_;  // kept: the overlay makes the pipeline again
     vkt::Buffer vertices_;
     vkt::Buffer indices_;
     uint32_t wheel_indices_ = 0, index_count_ = 0;
@@ -293,6 +337,7 @@ private:
 int main(int argc, char** argv) {
     // [spec]
     vkt::ChapterSpec spec{.name = "21_multisampling", .title = "21 - Multisampling"};
+    spec.overlay = true;  // in a window: the sample count and sample shading, live
     // Chapter 08's depth layouts; sample shading only where --sample-shading asks.
     spec.requirements.features = {VKT_FEATURE_12(separateDepthStencilLayouts)};
     spec.requirements.optional_features = {VKT_FEATURE_10(sampleRateShading)};

@@ -14,9 +14,10 @@ TEST_CASE("the layout a chapter leaves its target in names its last write", "[ru
     const vkt::LastWrite stored = vkt::last_write_in(VK_IMAGE_LAYOUT_GENERAL);
     CHECK(stored.stage == VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
     CHECK(stored.access == VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    // A copy into it (chapter 20's compute rasteriser without a storage view).
+    // A copy or a blit into it (chapter 20's compute rasteriser without a
+    // storage view, chapter 17's compute shading): any transfer stage.
     const vkt::LastWrite copied = vkt::last_write_in(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-    CHECK(copied.stage == VK_PIPELINE_STAGE_2_COPY_BIT);
+    CHECK(copied.stage == VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT);
     CHECK(copied.access == VK_ACCESS_2_TRANSFER_WRITE_BIT);
     // Any other layout is a chapter's mistake, named rather than guessed at.
     CHECK_THROWS_AS(vkt::last_write_in(VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL), vkt::Error);

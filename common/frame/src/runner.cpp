@@ -73,7 +73,10 @@ void ChapterRun::run(const RendererFactory& factory) {
     renderer_ = factory(context);
 
     Window* window = harness_.window();
-    if (window && spec_.overlay) {
+    // The overlay only where the reader can use it: a window run without
+    // --frames (with it, as headless, no input reaches the frames, and the
+    // pictures must be exact).
+    if (window && spec_.overlay && !harness_.fixed_step()) {
         if (overlay_available())
             overlay_ = std::make_unique<Overlay>(context);
         else
@@ -317,8 +320,8 @@ LastWrite last_write_in(VkImageLayout layout) {
                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT};
         case VK_IMAGE_LAYOUT_GENERAL:
             return {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
-        case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:
-            return {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
+        case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:  // a copy, a blit or a clear
+            return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
         default:
             throw Error(
                 "a chapter's target can be left only in COLOR_ATTACHMENT_OPTIMAL, GENERAL "

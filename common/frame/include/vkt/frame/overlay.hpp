@@ -2,9 +2,9 @@
 // The on-screen overlay, taught in chapter 21: a small panel of a chapter's
 // settings that the reader changes live with the mouse. Dear ImGui lays the
 // widgets out; the runner draws them with a pipeline of its own
-// (common/frame/src/overlay.cpp) over the finished frame. Only in a window,
-// so headless and offscreen pictures, and with them every golden test, never
-// contain it.
+// (common/frame/src/overlay.cpp) over the finished frame. Only in an
+// open-ended window run (no --frames), so headless, offscreen and scripted
+// pictures, and with them every golden test, never contain it.
 
 #include <span>
 #include <string>

@@ -91,7 +91,7 @@ public:
     // The layout record() left frame.target in, its last write made by the
     // stage that layout implies (vkt::last_write_in): COLOR_ATTACHMENT_OPTIMAL
     // by the colour output, GENERAL by a compute shader, TRANSFER_DST_OPTIMAL
-    // by a copy. Asked after each record().
+    // by a transfer command (a copy, a blit). Asked after each record().
     virtual VkImageLayout target_layout_after(const Frame&) const {
         return VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     }
