@@ -40,7 +40,21 @@ DIR/images/NAME.svg. A diagram that fails to draw, or has no text, is an error.
 Each page gets the sidebar (sticky on a wide screen, with a search box at its
 top; on a phone a bar at the top of the page links to it), and the builder
 writes search-index.js, the text of every page by section, for the search in
-book/theme/search.js. The stylesheet is book/theme/style.css.
+book/theme/search.js: each section's words sorted by where they stand (its
+heading; what the chapter's recap, whose entries link to their sections, says
+it teaches; its prose; its code; the comments in that code, without their
+`//`), so that the search ranks where a word is taught above where it is
+mentioned. The stylesheet is book/theme/style.css.
+
+The builder also writes book.html, every page in reading order on one page
+(ids prefixed with the page's name, links between pages made links within
+it), which tests/book_pdf.py prints to book.pdf with Chromium, a chapter to a
+new sheet.
+
+Every SVG figure opens full size on a tap or click (book/theme/book.js), zoomed
+so that its smallest text is at least FIGURE_TEXT_PX pixels, and says so under
+it; every table scrolls sideways as a whole in a box of its own, with a line
+above it where it is wider than the column.
 
 Needs the standard library, python3-markdown and python3-pygments (Debian 12:
 markdown 3.4, pygments 2.14), and Graphviz's dot for the .dot diagrams.
@@ -49,6 +63,7 @@ markdown 3.4, pygments 2.14), and Graphviz's dot for the .dot diagrams.
 from __future__ import annotations
 
 import argparse
+import difflib
 import html
 import json
 import os
@@ -564,35 +579,203 @@ def polish(body: str) -> str:
     return body
 
 
-def search_sections(page: Page) -> list[tuple[str, str, str]]:
-    """The page cut at its headings: (anchor, heading, plain text) for each part."""
-    heading_re = re.compile(r'<h([1-4])\b[^>]*\bid="([^"]*)"[^>]*>(.*?)</h\1>', re.S)
+# Figures and tables that read at any width. An SVG figure shows shrunk to the
+# column; a tap or click opens it full size (book/theme/book.js), zoomed so its
+# smallest text is at least FIGURE_TEXT_PX pixels, and a line under it says so.
+FIGURE_TEXT_PX = 12
+FIGURE_HINT = "Tap or click the figure to open it full size."
+FIGURE_RE = re.compile(r'<a class="figure" href="images/([^"]+\.svg)">(<img\b[^>]*>)</a>')
+FONT_SIZE_RE = re.compile(r"font-size\s*:\s*([0-9.]+)(px|em|%)?|font\s*:[^;]*?([0-9.]+)(px|em|%)")
 
-    def plain(fragment: str) -> str:
-        # Block tags part words; inline ones (a highlighter's <span>s) do not.
-        spaced = re.sub(r"</?(?:p|br|li|ul|ol|div|h\d|pre|table|tr|td|th|blockquote)\b[^>]*>", " ", fragment)
-        return re.sub(r"\s+", " ", html.unescape(re.sub(r"<[^>]+>", "", spaced))).strip()
-    sections = []
-    matches = list(heading_re.finditer(page.body))
+
+def svg_text_metrics(svg: str) -> tuple[float, float] | None:
+    """An SVG's width in its own units (its viewBox, else its width) and the size of
+    its smallest text in the same units, following font sizes down the tree (an
+    attribute, a style's font-size or font, em and % of the parent's); None without
+    text or a width."""
+    try:
+        tree = ElementTree.fromstring(svg)
+    except ElementTree.ParseError:
+        return None
+    box = (tree.get("viewBox") or "").replace(",", " ").split()
+    try:
+        width = float(box[2]) if len(box) == 4 else float(re.match(r"[0-9.]+", tree.get("width", "")).group(0))
+    except (AttributeError, ValueError):
+        return None
+    smallest: list[float] = []
+
+    def size_of(element, inherited: float) -> float:
+        found = None
+        attribute = element.get("font-size")
+        if attribute:
+            found = re.match(r"\s*([0-9.]+)(px|em|%)?", attribute)
+            found = found and (found.group(1), found.group(2))
+        style = FONT_SIZE_RE.search(element.get("style", ""))
+        if style:
+            found = (style.group(1), style.group(2)) if style.group(1) else (style.group(3), style.group(4))
+        if not found:
+            return inherited
+        number, unit = float(found[0]), found[1]
+        return number * inherited if unit == "em" else number * inherited / 100 if unit == "%" else number
+
+    def walk(element, inherited: float) -> None:
+        size = size_of(element, inherited)
+        tag = element.tag.rsplit("}", 1)[-1]
+        if tag in ("text", "tspan") and (element.text or "").strip():
+            smallest.append(size)
+        for child in element:
+            walk(child, size)
+            if tag in ("text", "tspan") and (child.tail or "").strip():
+                smallest.append(size)
+    walk(tree, 16.0)
+    return (width, min(smallest)) if smallest and width > 0 else None
+
+
+def annotate_figures(body: str, svgs: dict[str, str]) -> str:
+    """Each SVG figure gets its width and smallest text (for the full-size view) and
+    the line under it that says it opens full size."""
+    def fix(match: re.Match) -> str:
+        metrics = svg_text_metrics(svgs.get(html.unescape(match.group(1)), ""))
+        if metrics is None:
+            return match.group(0)
+        width, text = metrics
+        return (f'<a class="figure" href="images/{match.group(1)}" data-width="{width:g}" '
+                f'data-min-text="{text:g}" data-text-px="{FIGURE_TEXT_PX}">{match.group(2)}</a>'
+                f'<span class="figure-hint">{FIGURE_HINT}</span>')
+    return FIGURE_RE.sub(fix, body)
+
+
+def wrap_tables(body: str) -> str:
+    """A table scrolls sideways as a whole inside its own box, never the page; a line
+    above it (shown by book/theme/book.js only where the table is wider than the
+    column) says so."""
+    return re.sub(r"(<table\b.*?</table>)",
+                  r'<div class="table-wrap"><p class="scroll-hint">Wider than the page: scroll the table '
+                  r'sideways &rarr;</p><div class="table-scroll" tabindex="0">\1</div></div>', body, flags=re.S)
+
+
+# What a word's place on a page says about it, for the search: a section's
+# heading, what the recap's list of new calls says is taught there, its prose,
+# its code, and the comments inside that code (weakest: a passing remark).
+COMMENT_CLASSES = ("c", "c1", "cm", "ch", "cs")
+COMMENT_SPAN_RE = re.compile(r'<span class="(?:%s)">(.*?)</span>' % "|".join(COMMENT_CLASSES), re.S)
+# In a code block the highlighter did not colour (no language): `// ...` to the end of the line.
+PLAIN_COMMENT_RE = re.compile(r"(?:^|(?<=\s))//[^\n]*", re.M)
+CAPTION_RE = re.compile(r'<p class="source">.*?</p>', re.S)
+FILES_LIST_RE = re.compile(r'<ul class="chapter-files">.*?</ul>', re.S)
+HEADING_RE = re.compile(r'<h([1-4])\b[^>]*\bid="([^"]*)"[^>]*>(.*?)</h\1>', re.S)
+LOCAL_LINK_RE = re.compile(r'<a\b[^>]*\bhref="#([^"]+)"[^>]*>(.*?)</a>', re.S)
+
+
+def plain(fragment: str) -> str:
+    """HTML to plain text: block tags part words, inline ones (a highlighter's <span>s) do not."""
+    spaced = re.sub(r"</?(?:p|br|li|ul|ol|div|h\d|pre|table|tr|td|th|blockquote)\b[^>]*>", " ", fragment)
+    return re.sub(r"\s+", " ", html.unescape(re.sub(r"<[^>]+>", "", spaced))).strip()
+
+
+def comment_text(comment: str) -> str:
+    """A comment's words without its `//`, `/*`, `*/` or `#`."""
+    text = re.sub(r"^\s*(?://+|/\*+|\*+/?|#+)\s?", "", comment, flags=re.M)
+    return text.replace("*/", " ")
+
+
+@dataclass
+class SearchSection:
+    anchor: str
+    heading: str
+    prose: list[str] = field(default_factory=list)
+    code: list[str] = field(default_factory=list)
+    comments: list[str] = field(default_factory=list)
+    recap: list[str] = field(default_factory=list)
+
+
+def split_by_kind(fragment: str, section: SearchSection) -> None:
+    """Sorts a section's HTML into prose, code (captions and file lists included) and code comments."""
+    prose_parts, at = [], 0
+    blocks = list(re.finditer(r'<div class="highlight">.*?</pre>\s*</div>|<pre\b.*?</pre>', fragment, re.S))
+    for block in blocks:
+        prose_parts.append(fragment[at:block.start()])
+        at = block.end()
+        code = block.group(0)
+        if '<span class="' in code:
+            comments = [comment_text(html.unescape(re.sub(r"<[^>]+>", "", c)))
+                        for c in COMMENT_SPAN_RE.findall(code)]
+            section.code.append(plain(COMMENT_SPAN_RE.sub(" ", code)))
+        else:
+            text = html.unescape(re.sub(r"<[^>]+>", "", code))
+            comments = [comment_text(c) for c in PLAIN_COMMENT_RE.findall(text)]
+            section.code.append(re.sub(r"\s+", " ", PLAIN_COMMENT_RE.sub(" ", text)).strip())
+        section.comments.append(re.sub(r"\s+", " ", " ".join(comments)).strip())
+    prose = "".join(prose_parts) + fragment[at:]
+    for extra in (CAPTION_RE, FILES_LIST_RE):
+        section.code += [plain(m) for m in extra.findall(prose)]
+        prose = extra.sub(" ", prose)
+    section.prose.append(plain(prose))
+
+
+def recap_items(fragment: str) -> tuple[list[tuple[str, str]], str]:
+    """The recap's entries: (anchor, words) for each link into the page (a link's own
+    words, and the rest of its list item or paragraph for the item's first link),
+    and what links nowhere (left as the recap's own prose)."""
+    found: list[tuple[str, str]] = []
+    rest: list[str] = []
+    for item in re.findall(r"<li\b[^>]*>(.*?)</li>|<p\b[^>]*>(.*?)</p>", fragment, re.S):
+        item = item[0] or item[1]
+        links = LOCAL_LINK_RE.findall(item)
+        if not links:
+            rest.append(item)
+            continue
+        for anchor, text in links:
+            found.append((html.unescape(anchor), plain(text)))
+        found.append((html.unescape(links[0][0]), plain(LOCAL_LINK_RE.sub(" ", item))))
+    return found, " ".join(rest)
+
+
+def search_sections(page: Page) -> list[SearchSection]:
+    """The page cut at its headings, each part's words sorted by where they stand.
+    A chapter's recap is not a section of its own: its entries go to the sections
+    they link to, as what those sections teach."""
+    body = page.body
+    sections: list[SearchSection] = []
+    matches = list(HEADING_RE.finditer(body))
+    pieces = []
     if not matches or matches[0].start() > 0:
-        end = matches[0].start() if matches else len(page.body)
-        sections.append(("", page.title, plain(page.body[:end])))
+        pieces.append(("", page.title, body[:matches[0].start() if matches else len(body)]))
     for i, match in enumerate(matches):
-        end = matches[i + 1].start() if i + 1 < len(matches) else len(page.body)
-        sections.append((html.unescape(match.group(2)), plain(match.group(3)), plain(page.body[match.end():end])))
-    return [section for section in sections if section[2] or section[1]]
+        end = matches[i + 1].start() if i + 1 < len(matches) else len(body)
+        pieces.append((html.unescape(match.group(2)), plain(match.group(3)), body[match.end():end]))
+    recap: list[tuple[str, str]] = []
+    for anchor, heading, fragment in pieces:
+        section = SearchSection(anchor, heading)
+        if page.md_name[:2].isdigit() and heading == "Recap":
+            items, fragment = recap_items(fragment)
+            recap += items
+        split_by_kind(fragment, section)
+        sections.append(section)
+    by_anchor = {s.anchor: s for s in sections}
+    for anchor, words in recap:
+        if anchor in by_anchor:
+            by_anchor[anchor].recap.append(words)
+    return [s for s in sections if s.heading or any(s.prose) or s.code or s.recap]
 
 
 def search_index(pages: list[Page]) -> str:
     def kind(page: Page) -> str:
         if page.md_name == "index.md":
             return "index"
+        if page.md_name == "performance.md" or page.md_name.startswith("perf_"):
+            return "performance"
         return "chapter" if page.md_name[:2].isdigit() else "appendix"
+
+    def joined(parts: list[str]) -> str:
+        return " \u2022 ".join(p for p in parts if p.strip())
     data = {"pages": [[p.html_name, p.title, kind(p)] for p in pages], "sections": []}
     for number, page in enumerate(pages):
-        for anchor, heading, text in search_sections(page):
-            data["sections"].append([number, anchor, heading, text])
+        for s in search_sections(page):
+            data["sections"].append([number, s.anchor, s.heading, joined(s.recap), joined(s.prose),
+                                     joined(s.code), joined(s.comments)])
     return ("// The book's search index, written by book/build_book.py; read by search.js.\n"
+            "// Each section: [page, anchor, heading, recap, prose, code, code comments].\n"
             "window.BOOK_SEARCH_INDEX = " + json.dumps(data, ensure_ascii=False, separators=(",", ":")) + ";\n")
 
 
@@ -680,6 +863,7 @@ def document(title: str, book_title: str, prefix: str, side: str, content: str) 
 <link rel="stylesheet" href="{prefix}style.css">
 <link rel="stylesheet" href="{prefix}pygments.css">
 <script src="{prefix}search.js" defer></script>
+<script src="{prefix}book.js" defer></script>
 </head>
 <body>
 <header class="topbar">
@@ -733,6 +917,186 @@ def render_source(root: Path, rel: str, pages: list[Page]) -> str:
     content = (f'<main class="source-file"><article>\n<h1><code>{html.escape(rel)}</code></h1>\n'
                f'{quoted}\n{code}\n</article></main>')
     return document(rel, pages[0].title, prefix, sidebar(pages, None, prefix), content)
+
+
+# --------------------------------------------------------------------------
+# What changed since the previous chapter
+# --------------------------------------------------------------------------
+
+# A chapter's own files, compared with the previous chapter's: its C++ (main.cpp
+# and local headers) and its shaders.
+CHANGE_SUFFIXES = (".cpp", ".hpp", ".vert", ".frag", ".comp", ".glsl")
+CHANGE_CONTEXT = 3  # unchanged lines shown around each change
+
+
+def chapter_files(root: Path, chapter: str) -> dict[str, str]:
+    """A chapter's files as {name shown: path relative to the root}: chapters/NN_name/*
+    and shaders/NN_name/*, matched with the previous chapter's by that name."""
+    found = {}
+    for folder, label in (("chapters", ""), ("shaders", "shaders/")):
+        base = root / folder / chapter
+        if base.is_dir():
+            for path in sorted(base.iterdir()):
+                if path.is_file() and path.suffix in CHANGE_SUFFIXES:
+                    found[label + path.name] = path.relative_to(root).as_posix()
+    return found
+
+
+def highlighted_lines(rel: str, text: str) -> list[str]:
+    """A file's lines as highlighted HTML, one string per line (the highlighter closes
+    its spans at each line end)."""
+    try:
+        lexer = get_lexer_for_filename(rel, stripnl=False)
+    except ClassNotFound:
+        lexer = get_lexer_by_name("glsl", stripnl=False) if rel.endswith((".vert", ".frag", ".comp", ".glsl")) \
+            else TextLexer(stripnl=False)
+    code = pygments.highlight(text, lexer, HtmlFormatter(nowrap=True))
+    lines = code.split("\n")
+    return lines[:len(text.splitlines())]
+
+
+@dataclass
+class ChapterChanges:
+    chapter: str          # "07_uniform_buffers"
+    previous: str         # "06_push_constants"
+    html: str             # the diffs
+    files: int            # files that differ, came or went
+    added: int
+    removed: int
+
+
+def file_diff(name: str, old_rel: str | None, new_rel: str | None, root: Path) -> tuple[str, int, int]:
+    """One file's changes as HTML (a table of numbered lines: context, removed, added)
+    and its counts of added and removed lines."""
+    old_text = (root / old_rel).read_text(encoding="utf-8") if old_rel else ""
+    new_text = (root / new_rel).read_text(encoding="utf-8") if new_rel else ""
+    old_lines, new_lines = old_text.splitlines(), new_text.splitlines()
+    old_html = highlighted_lines(old_rel, old_text) if old_rel else []
+    new_html = highlighted_lines(new_rel, new_text) if new_rel else []
+    matcher = difflib.SequenceMatcher(None, old_lines, new_lines, autojunk=False)
+    rows, added, removed = [], 0, 0
+
+    def row(kind: str, old_number, new_number, code: str) -> str:
+        sign = {"ctx": " ", "del": "-", "add": "+"}[kind]
+        return (f'<span class="d-{kind}"><span class="d-no">{old_number or ""}</span>'
+                f'<span class="d-no">{new_number or ""}</span><span class="d-sign">{sign}</span>{code}</span>')
+    for group in matcher.get_grouped_opcodes(CHANGE_CONTEXT):
+        first_old, first_new = group[0][1], group[0][3]
+        rows.append(f'<span class="d-hunk">@@ line {first_old + 1} of {old_rel or "(none)"}, '
+                    f'line {first_new + 1} of {new_rel or "(none)"} @@</span>')
+        for tag, i1, i2, j1, j2 in group:
+            if tag == "equal":
+                rows += [row("ctx", i + 1, j + 1, new_html[j]) for i, j in zip(range(i1, i2), range(j1, j2))]
+                continue
+            rows += [row("del", i + 1, None, old_html[i]) for i in range(i1, i2)]
+            rows += [row("add", None, j + 1, new_html[j]) for j in range(j1, j2)]
+            removed += i2 - i1
+            added += j2 - j1
+    if not rows:
+        return "", 0, 0
+    state = "new file" if not old_rel else "gone" if not new_rel else f"+{added} &minus;{removed}"
+    title = new_rel or old_rel
+    body = (f'<h2 id="{html.escape(re.sub(r"[^a-z0-9]+", "-", name.lower()).strip("-"))}">'
+            f'<code>{html.escape(title)}</code> <span class="d-count">{state}</span></h2>\n')
+    if not new_rel:
+        return body + f"<p>Not in this chapter: the previous chapter's own ({len(old_lines)} lines).</p>\n", 0, removed
+    return body + '<div class="highlight diff"><pre><code>' + "".join(rows) + "</code></pre></div>\n", added, removed
+
+
+def chapter_changes(root: Path, chapter: str, previous: str) -> ChapterChanges:
+    old, new = chapter_files(root, previous), chapter_files(root, chapter)
+    parts, files, added, removed = [], 0, 0, 0
+    names = sorted(set(old) | set(new), key=lambda n: (n.startswith("shaders/"), n != "main.cpp", n))
+    for name in names:
+        piece, plus, minus = file_diff(name, old.get(name), new.get(name), root)
+        if piece:
+            parts.append(piece)
+            files += 1
+            added += plus
+            removed += minus
+    return ChapterChanges(chapter, previous, "".join(parts), files, added, removed)
+
+
+def changes_page_name(chapter: str) -> str:
+    return f"changes_{chapter}.html"
+
+
+def changes_link(changes: ChapterChanges) -> str:
+    return (f'<p class="changes-link"><a href="{changes_page_name(changes.chapter)}">What changed since chapter '
+            f'{changes.previous[:2]}</a>: {changes.files} file{"s" if changes.files != 1 else ""}, '
+            f'+{changes.added} &minus;{changes.removed} lines in its own folders.</p>')
+
+
+def render_changes(changes: ChapterChanges, page: Page, previous: Page, pages: list[Page]) -> str:
+    title = f"Changes from chapter {changes.previous[:2]} to {changes.chapter[:2]}"
+    content = (f'<main class="changes"><article>\n<h1>{html.escape(title)}</h1>\n'
+               f'<p>Chapter <a href="{page.html_name}">{html.escape(page.title)}</a> against '
+               f'<a href="{previous.html_name}">{html.escape(previous.title)}</a>: each file of '
+               f'<code>chapters/{changes.chapter}/</code> and <code>shaders/{changes.chapter}/</code> beside the '
+               f'file of the same name in chapter {changes.previous[:2]}\'s folders, the lines that went in red '
+               f'(&minus;), those that came in green (+), {CHANGE_CONTEXT} unchanged lines around each change. '
+               f'What both chapters take from <code>common/</code> is not shown. {changes.files} '
+               f'file{"s" if changes.files != 1 else ""}, +{changes.added} &minus;{changes.removed} lines.</p>\n'
+               f'{changes.html}</article></main>')
+    return document(title, pages[0].title, "", sidebar(pages, None, ""), content)
+
+
+# --------------------------------------------------------------------------
+# The whole book on one page, for print (and the PDF)
+# --------------------------------------------------------------------------
+
+PRINT_PAGE = "book.html"
+ID_ATTR_RE = re.compile(r'\bid="([^"]*)"')
+HREF_RE = re.compile(r'<a\b([^>]*?)\bhref="([^"]*)"')
+
+
+def print_body(page: Page, page_names: set[str]) -> str:
+    """A page's HTML for the one-page book: its ids prefixed with its name, so that
+    no two pages' ids meet, and its links pointed at those ids (a link out of the
+    book's pages, to a source file or a picture, keeps its words and loses its
+    target: a printed page cannot follow it)."""
+    stem = page.html_name[:-5]
+    body = ID_ATTR_RE.sub(lambda m: f'id="{stem}--{m.group(1)}"', page.body)
+
+    def link(match: re.Match) -> str:
+        attrs, target = match.group(1), html.unescape(match.group(2))
+        if re.match(r"^[a-zA-Z][a-zA-Z0-9+.-]*:", target):
+            return match.group(0)
+        path, _, anchor = target.partition("#")
+        if not path:
+            return f'<a{attrs}href="#{html.escape(stem)}--{html.escape(anchor)}"'
+        if path in page_names:
+            other = path[:-5]
+            return f'<a{attrs}href="#{html.escape(other + "--" + anchor if anchor else other)}"'
+        return f"<a{attrs}"
+    return HREF_RE.sub(link, body)
+
+
+def render_print(pages: list[Page]) -> str:
+    names = {p.html_name for p in pages}
+    parts = []
+    for page in pages:
+        part = part_of(page.md_name)
+        parts.append(f'<section class="print-page" id="{page.html_name[:-5]}" data-part="{html.escape(part)}">\n'
+                     f'{print_body(page, names)}\n</section>')
+    title = pages[0].title
+    return f"""<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>{html.escape(title)}</title>
+<link rel="stylesheet" href="style.css">
+<link rel="stylesheet" href="pygments.css">
+<script src="book.js" defer></script>
+</head>
+<body class="print-book">
+<main><article>
+{"".join(parts)}
+</article></main>
+</body>
+</html>
+"""
 
 
 # --------------------------------------------------------------------------
@@ -814,6 +1178,23 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
         except BookError as error:
             problems.append(str(error))
 
+    # Each chapter after the first: what changed since the one before, linked
+    # from the top of its page.
+    chapter_pages = [p for p in pages if p.md_name[:2].isdigit()]
+    changes: list[tuple[ChapterChanges, Page, Page]] = []
+    for previous, page in zip(chapter_pages, chapter_pages[1:]):
+        found = chapter_changes(root, page.md_name[:-3], previous.md_name[:-3])
+        if found.files:
+            changes.append((found, page, previous))
+            page.body = re.sub(r"(</h1>)", lambda m: m.group(1) + "\n" + changes_link(found), page.body, count=1)
+
+    svgs = dict(assets.diagram_svgs)
+    for name, path in assets.images.items():
+        if name.endswith(".svg"):
+            svgs[name] = path.read_text(encoding="utf-8")
+    for page in pages:
+        page.body = wrap_tables(annotate_figures(page.body, svgs))
+
     if strict:
         problems += warnings
         warnings = []
@@ -825,11 +1206,18 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     out.mkdir(parents=True, exist_ok=True)
     shutil.copyfile(THEME / "style.css", out / "style.css")
     shutil.copyfile(THEME / "search.js", out / "search.js")
+    shutil.copyfile(THEME / "book.js", out / "book.js")
     (out / "pygments.css").write_text(pygments_css(), encoding="utf-8")
     (out / "search-index.js").write_text(search_index(pages), encoding="utf-8")
-    written += 4
+    written += 5
     for i, page in enumerate(pages):
         (out / page.html_name).write_text(render_page(pages, i), encoding="utf-8")
+        written += 1
+    (out / PRINT_PAGE).write_text(render_print(pages), encoding="utf-8")
+    written += 1
+    for found, page, previous in changes:
+        (out / changes_page_name(found.chapter)).write_text(render_changes(found, page, previous, pages),
+                                                           encoding="utf-8")
         written += 1
     if assets.images or assets.diagram_svgs:
         (out / "images").mkdir(exist_ok=True)

@@ -14,8 +14,11 @@ the run fails on:
   - a broken link: a file:// link to a file that does not exist, or to an
     anchor that the target page does not have.
 
-It also types `vkCmdPipelineBarrier2` into the search box of the index and
-checks that chapter 03 is the first result, and checks that every chart that
+It also types each of SEARCH_QUERIES into the search box of the index and
+checks that the first result is the chapter that teaches it, linked at the
+section that does (vkCmdPipelineBarrier2: chapter 03's barriers of a frame;
+quaternion: 14; subgroup: 20; ...), with no raw `//` comment in any snippet,
+and checks that every chart that
 benchmarks/plots.py draws is in the book with labelled axes and a legend (as
 SVG text).
 
@@ -57,8 +60,31 @@ FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-ne
          "--disable-component-update", "--disable-sync", "--no-first-run",
          "--no-default-browser-check", "--disable-extensions", "--hide-scrollbars",
          "--remote-debugging-port=0", "--remote-debugging-address=127.0.0.1"]
-SEARCH_TERM = "vkCmdPipelineBarrier2"
-SEARCH_FIRST = "03_swapchain.html"
+# The search ranks a word by where the book teaches it (a heading, the recap's
+# list of new calls) over where it mentions it (prose, code, code comments):
+# each query, its teaching page, and the section the first result must link to
+# (a regular expression over the anchor: pages 14 and 20 are being rewritten,
+# and the section that teaches there may change its name, not its subject).
+SEARCH_QUERIES = (
+    ("vkCmdPipelineBarrier2", "03_swapchain.html", r"the-barriers-of-a-frame"),
+    ("quaternion", "14_physics.html", r"a-rigid-body-that-turns|.*(?:orientation|quaternion|turns).*"),
+    ("subgroup", "20_ndim_compute.html", r"boxes|.*subgroup.*"),
+    ("G-buffer", "16_deferred.html", r"the-g-buffer-what-to-store-in-which-format"),
+    ("descriptor", "07_uniform_buffers.html", r"the-descriptor-set-layout"),
+    ("push constants", "06_push_constants.html", r"the-push-constant-block|06-push-constants"),
+    ("specialization constant", "19_ndim_gpu.html", r"the-dimension-as-a-specialization-constant"),
+    ("queue family", "02_device.html", r"queue-families"),
+    ("depth format", "08_depth.html", r"choosing-a-depth-format"),
+    ("sampler", "09_textures.html", r"samplers"),
+    ("std430", "13_compute.html", r"storage-buffers-and-std430"),
+    ("memory types", "05_vertex_buffers.html", r"memory-types"),
+    ("debug messenger", "01_instance.html", r"the-debug-messenger"),
+    ("shader module", "04_triangle.html", r"shader-modules"),
+    ("normal matrix", "12_lighting.html", r"the-normal-matrix"),
+    ("buffer device address", "15_bindless.html", r"buffer-device-address"),
+    ("vertex pulling", "19_ndim_gpu.html", r"no-vertex-input-pulling"),
+    ("glTF", "10_gltf.html", r"what-is-in-a-gltf-file"),
+)
 
 
 class Failure(Exception):
@@ -206,24 +232,171 @@ PAGE_CHECK = r"""
 })()
 """
 
+# Figures: where each SVG figure shows, how wide at the default view and opened
+# full size (a click on it, book/theme/book.js), and whether the line under it
+# says that it opens. Tables: an identifier (inline code) broken over two lines,
+# and a table wider than its box without the line that says it scrolls.
+FIGURE_CHECK = r"""
+(async () => {
+  const figures = [];
+  for (const img of document.querySelectorAll('article img')) {
+    const src = img.getAttribute('src') || '';
+    if (!/\.svg$/.test(src)) continue;
+    const link = img.closest('a.figure');
+    const hint = link && link.nextElementSibling;
+    const said = !!(hint && hint.classList.contains('figure-hint') && hint.getBoundingClientRect().height > 0
+                    && /open it full size/.test(hint.textContent));
+    let opened = 0;
+    if (link) {
+      link.click();
+      const big = document.querySelector('.figure-layer .figure-pane img');
+      if (big) {
+        if (!big.complete) await new Promise(r => { big.onload = r; big.onerror = r; });
+        opened = big.getBoundingClientRect().width;
+      }
+      document.dispatchEvent(new KeyboardEvent('keydown', {key: 'Escape', bubbles: true}));
+      if (document.querySelector('.figure-layer')) opened = -1;  // did not close
+    }
+    figures.push({src, width: img.getBoundingClientRect().width, opened, said});
+  }
+  const broken = [];
+  for (const code of document.querySelectorAll('article table code')) {
+    const lines = new Set([...code.getClientRects()].map(r => Math.round(r.top)));
+    if (lines.size > 1) broken.push(code.textContent.slice(0, 40));
+  }
+  const unsaid = [];
+  for (const box of document.querySelectorAll('.table-scroll')) {
+    const hint = box.parentElement.querySelector('.scroll-hint');
+    const wide = box.scrollWidth > box.clientWidth + 1;
+    if (wide && !(hint && hint.getBoundingClientRect().height > 0)) {
+      unsaid.push((box.querySelector('th, td') || {}).textContent || '(a table)');
+    }
+  }
+  const loose = [...document.querySelectorAll('article table')].filter(t => !t.closest('.table-scroll')).length;
+  return {figures, broken, unsaid, loose};
+})()
+"""
+
+# In an SVG opened on its own: its rendered width and its smallest rendered text
+# (each text or tspan that holds characters: its computed font size times the
+# scale its transforms give it), so a figure W pixels wide shows that text at
+# smallest / width * W pixels.
+SVG_TEXT_CHECK = r"""
+(() => {
+  const root = document.documentElement;
+  let smallest = Infinity, which = '';
+  for (const el of document.querySelectorAll('text, tspan')) {
+    const own = [...el.childNodes].some(n => n.nodeType === 3 && n.textContent.trim());
+    if (!own || !el.getScreenCTM) continue;
+    const style = getComputedStyle(el);
+    if (style.display === 'none' || style.visibility === 'hidden') continue;
+    const m = el.getScreenCTM();
+    const px = parseFloat(style.fontSize) * Math.hypot(m.a, m.b);
+    if (px < smallest) { smallest = px; which = el.textContent.trim().slice(0, 30); }
+  }
+  return {width: root.getBoundingClientRect().width, smallest, which};
+})()
+"""
+# The smallest text a reader must read, in CSS pixels (the issue's bar).
+MIN_TEXT_PX = 11.0
+
 SEARCH_CHECK = r"""
 new Promise((resolve) => {
   const input = document.querySelector('form.search input');
-  if (!input) { resolve({error: 'no search box on the page'}); return; }
+  const list = document.querySelector('.search-results');
+  if (!input || !list) { resolve({error: 'no search box on the page'}); return; }
+  list.textContent = '';  // the previous query's results
   input.focus();
   input.value = %s;
   input.dispatchEvent(new Event('input', {bubbles: true}));
   const start = Date.now();
   (function poll() {
-    const links = [...document.querySelectorAll('.search-results li > a')].map(a => a.getAttribute('href'));
-    if (links.length || Date.now() - start > 10000) {
-      resolve({links, status: (document.querySelector('.search-status') || {}).textContent || ''});
+    const items = [...list.querySelectorAll('li')];
+    if (items.length || Date.now() - start > 10000) {
+      resolve({links: items.map(li => li.querySelector('a').getAttribute('href')),
+               snippets: items.map(li => (li.querySelector('.snippet') || {}).textContent || ''),
+               status: (document.querySelector('.search-status') || {}).textContent || ''});
     } else {
       setTimeout(poll, 50);
     }
   })();
 })
 """
+
+
+def check_figures(figures: list[tuple[str, int, dict]], svg_text: dict) -> tuple[list[str], str]:
+    """Every SVG figure's smallest text at least MIN_TEXT_PX at its default view, or, where
+    it is smaller there, once opened full size, with a line under the figure saying it
+    opens. Returns the problems and a note of which figures reach the bar only opened."""
+    problems, only_opened = [], []
+    at_default = 0
+    for page, width, figure in figures:
+        measured = svg_text.get(figure["src"])
+        if not measured or not measured["width"] or measured["smallest"] == float("inf"):
+            problems.append(f"{page} at {width} px: the figure {figure['src']} shows no text to measure")
+            continue
+        ratio = measured["smallest"] / measured["width"]
+        default = ratio * figure["width"]
+        if default >= MIN_TEXT_PX:
+            at_default += 1
+            continue
+        opened = ratio * figure["opened"]
+        where = (f"{page} at {width} px: the figure {figure['src']} shows its smallest text "
+                 f"('{measured['which']}') at {default:.1f} px")
+        if figure["opened"] < 0:
+            problems.append(f"{where}; opened full size, it does not close with Escape")
+        elif opened < MIN_TEXT_PX:
+            problems.append(f"{where}, and at {opened:.1f} px opened full size (the bar: {MIN_TEXT_PX:g} px)")
+        elif not figure["said"]:
+            problems.append(f"{where}, and nothing under it says it opens full size")
+        else:
+            only_opened.append(f"{figure['src'].split('/')[-1]} at {width} px: {default:.1f} -> {opened:.1f} px")
+    note = (f"{at_default} figure views read at {MIN_TEXT_PX:g} px or more as shown; {len(only_opened)} only "
+            f"opened full size ({'; '.join(sorted(set(only_opened)))})")
+    return problems, note
+
+
+def check_changes(book: Path) -> list[str]:
+    """Every chapter after the first links, at its top, to its changes since the one
+    before (changes_NN_name.html), which shows its main.cpp against the previous one's."""
+    problems = []
+    chapters = sorted(p for p in book.glob("[0-9][0-9]_*.html"))
+    for page in chapters[1:]:
+        text = page.read_text(encoding="utf-8")
+        link = re.search(r'<p class="changes-link"><a href="(changes_[^"]+\.html)"', text)
+        if not link or text.find('class="changes-link"') > text.find("</h1>") + 200:
+            problems.append(f"{page.name}: no link to its changes since the previous chapter under its title")
+            continue
+        changes = book / link.group(1)
+        if not changes.is_file():
+            problems.append(f"{page.name}: its changes page {link.group(1)} does not exist")
+        elif f"chapters/{page.stem}/main.cpp" not in changes.read_text(encoding="utf-8"):
+            problems.append(f"{link.group(1)}: no diff of chapters/{page.stem}/main.cpp")
+    return problems
+
+
+def check_search(found: dict, query: str, page: str, section: str, book: Path, links) -> list[str]:
+    """The first result of one query is `page`, linked at a section matching `section`
+    that the page has; no snippet shows a code comment's raw `//`."""
+    if found.get("error"):
+        return [f"search: {found['error']}"]
+    if not found["links"]:
+        return [f"search: '{query}' found nothing ({found['status'].strip()})"]
+    first = found["links"][0]
+    path, _, anchor = first.partition("#")
+    results = ", ".join(found["links"][:4])
+    problems = []
+    if not path.endswith(page):
+        problems.append(f"search: '{query}' lists {first} first, not {page} (the results: {results})")
+    elif not re.fullmatch(section, anchor):
+        problems.append(f"search: '{query}' links {page} at #{anchor or '(the top)'}, not at the section that "
+                        f"teaches it ({section}) (the results: {results})")
+    elif anchor not in links.anchors(book / page):
+        problems.append(f"search: '{query}' links {first}, which has no such section")
+    for link, text in zip(found["links"], found["snippets"]):
+        if re.search(r"(^|\s)//", text):
+            problems.append(f"search: '{query}': the snippet of {link} shows a raw '//' comment: {text[:80]!r}")
+    return problems
 
 
 class LinkChecker:
@@ -398,6 +571,8 @@ def main(argv: list[str]) -> int:
     pages = sorted(p.relative_to(book).as_posix() for p in book.rglob("*.html"))
     pages = [p for p in pages if re.search(args.pages, p)]
     problems: list[str] = []
+    figures: list[tuple[str, int, dict]] = []
+    figure_notes = ""
     links = LinkChecker(book)
     started = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="book-browser-") as temp:
@@ -425,26 +600,44 @@ def main(argv: list[str]) -> int:
                         problems.append(f"{page} at {width} px: scrolls sideways ({result['scrollWidth']} px "
                                         f"wide in a {result['width']} px window): {what}")
                     problems += problems_from_events(tab.events, page, width)
+                    shown = tab.evaluate(FIGURE_CHECK)
+                    for figure in shown["figures"]:
+                        figures.append((page, width, figure))
+                    for code in shown["broken"]:
+                        problems.append(f"{page} at {width} px: a table breaks the identifier '{code}' over lines")
+                    for cell in shown["unsaid"]:
+                        problems.append(f"{page} at {width} px: the table starting '{cell.strip()[:30]}' is wider "
+                                        "than its box and nothing says it scrolls")
+                    if shown["loose"]:
+                        problems.append(f"{page} at {width} px: {shown['loose']} table(s) outside a scrolling box")
                     if width == WIDTHS[0]:
                         for url in result["links"]:
                             problem = links.check(page, url)
                             if problem:
                                 problems.append(problem)
 
-            # The search: chapter 03 first for vkCmdPipelineBarrier2.
+            # Each SVG on its own, for its smallest text.
+            tab.call("Emulation.setDeviceMetricsOverride", width=1280, height=900, deviceScaleFactor=1,
+                     mobile=False)
+            svg_text = {}
+            for src in sorted({figure["src"] for _, _, figure in figures}):
+                target = book / urllib.parse.unquote(src)
+                tab.call("Page.navigate", url=target.as_uri())
+                tab.wait_for("Page.loadEventFired", time.monotonic() + args.timeout)
+                svg_text[src] = tab.evaluate(SVG_TEXT_CHECK)
+            tab.events.clear()
+            figure_problems, figure_notes = check_figures(figures, svg_text)
+            problems += figure_problems
+
+            # The search: each query's teaching chapter and section first.
             tab.call("Emulation.setDeviceMetricsOverride", width=1280, height=900, deviceScaleFactor=1,
                      mobile=False)
             tab.events.clear()
             tab.call("Page.navigate", url=(book / "index.html").as_uri())
             tab.wait_for("Page.loadEventFired", time.monotonic() + args.timeout)
-            found = tab.evaluate(SEARCH_CHECK % json.dumps(SEARCH_TERM))
-            if found.get("error"):
-                problems.append(f"search: {found['error']}")
-            elif not found["links"]:
-                problems.append(f"search: '{SEARCH_TERM}' found nothing ({found['status'].strip()})")
-            elif not found["links"][0].split("#")[0].endswith(SEARCH_FIRST):
-                problems.append(f"search: '{SEARCH_TERM}' lists {found['links'][0]} first, not {SEARCH_FIRST} "
-                                f"(the results: {', '.join(found['links'][:5])})")
+            for query, page, section in SEARCH_QUERIES:
+                problems += check_search(tab.evaluate(SEARCH_CHECK % json.dumps(query)), query, page, section,
+                                         book, links)
             problems += problems_from_events(tab.events, "index.html (search)", 1280)
         except (Failure, OSError, socket.timeout) as error:
             problems.append(f"the browser run stopped: {error}")
@@ -453,6 +646,7 @@ def main(argv: list[str]) -> int:
                 stop_chromium(process)
 
     problems += check_charts(book)
+    problems += check_changes(book)
     for problem in dict.fromkeys(problems):
         print(f"book_browser.py: {problem}", file=sys.stderr)
     seconds = time.monotonic() - started
@@ -462,7 +656,8 @@ def main(argv: list[str]) -> int:
         return 1
     print(f"book_browser.py: {len(pages)} pages at {' and '.join(map(str, WIDTHS))} px: every picture loaded, "
           f"nothing scrolls sideways, no console error, {len(links.checked)} links good; the search lists "
-          f"chapter 03 first for {SEARCH_TERM}; every chart has axis labels and a legend ({seconds:.0f} s)")
+          f"the teaching chapter and section first for {len(SEARCH_QUERIES)} queries; every chart has axis "
+          f"labels and a legend; every chapter after the first links its changes page; no table breaks an identifier; figure text: {figure_notes} ({seconds:.0f} s)")
     return 0
 
 

@@ -1,25 +1,41 @@
 // The book's full-text search, on the reader's machine: no server, no library.
 //
 // book/build_book.py writes search-index.js next to the pages: every page cut
-// into its sections (heading, anchor, plain text, the quoted code included).
-// This script loads it the first time the search box is used (a <script> tag,
-// which works from file:// too), and ranks the pages that contain every word
-// of the query:
-//   - each word counts 1 + ln(occurrences on the page),
-//   - plus 6 when the page's title holds it and 3 when one of its headings does,
-//   - plus 4 for the first chapter, in reading order, that uses it: the book
-//     teaches in order, so that is where a call or an idea is introduced.
-// Each result links to the section that holds the most matches, with a snippet.
+// into its sections, and each section's words sorted by where they stand: its
+// heading, what the chapter's recap says the section teaches (the recap's
+// list of new calls links each to its section), its prose, its code, and the
+// comments inside that code. This script loads it the first time the search
+// box is used (a <script> tag, which works from file:// too).
+//
+// A word counts by where it stands, strongest first, because that is where
+// the book teaches it rather than mentions it:
+//   heading 12, recap 10, prose 3 + ln(times), code 1 + ln(times) / 2,
+//   code comment 0.5.
+// A section scores the sum over the query's words (a phrase of several words
+// found whole in a heading or a recap entry adds 6), and a page scores its
+// best section, plus a little for how often the page uses each word, plus 10
+// for each word in the page's title and 4 for the first chapter in reading
+// order with the word in a heading or its recap (where it is introduced), all
+// times 1 for a chapter or an appendix, 0.6 for the performance part and 0.4
+// for the index. Only pages holding every word are listed; ties go to the page
+// that comes first in reading order. Each result links to its best section;
+// its snippet comes from that section's prose, else its code, else its
+// comments (shown as words, without the `//`).
 // index.html?q=WORDS opens with the results for WORDS.
 (function () {
   "use strict";
 
   var script = document.currentScript;
   var base = script ? script.src.replace(/[^\/]*$/, "") : "";
-  var index = null;       // {pages: [[file, title, kind]], sections: [[page, id, heading, text]]}
-  var lowered = null;     // per section: [heading, text] in lower case
+  var index = null;       // {pages: [[file, title, kind]], sections: [[page, id, heading, recap, prose, code, comments]]}
+  var originals = null;   // per section: [heading, recap, prose, code, comments]
+  var lowered = null;     // the same in lower case
   var loading = false;
   var pending = null;     // the query to run once the index is there
+
+  var HEADING = 0, RECAP = 1, PROSE = 2, CODE = 3, COMMENTS = 4;
+  var KIND_WEIGHT = {chapter: 1, appendix: 1, performance: 0.6, index: 0.4};
+  var LABELS = ["in a heading", "in the recap", "", "in code", "in a code comment"];
 
   function load(then) {
     if (index) { then(); return; }
@@ -30,51 +46,92 @@
     tag.src = base + "search-index.js";
     tag.onload = function () {
       index = window.BOOK_SEARCH_INDEX;
-      lowered = index.sections.map(function (s) { return [s[2].toLowerCase(), s[3].toLowerCase()]; });
+      originals = index.sections.map(function (s) { return s.slice(2, 7); });
+      lowered = originals.map(function (fields) {
+        return fields.map(function (t) { return t.toLowerCase(); });
+      });
       if (pending) pending();
     };
     tag.onerror = function () { status("The search index (search-index.js) could not be loaded."); };
     document.head.appendChild(tag);
   }
 
-  function occurrences(text, word) {
-    var count = 0, at = text.indexOf(word);
-    while (at !== -1) { count += 1; at = text.indexOf(word, at + word.length); }
+  // A word is found where a word or a part of a name begins: "light" in
+  // "lights" and "VkLightInfo", not in "flight"; "descriptor" in
+  // "vkAllocateDescriptorSets" (the case of the original text tells).
+  function starts(original, at) {
+    if (at === 0) return true;
+    var before = original.charAt(at - 1);
+    return !/[A-Za-z0-9]/.test(before) || (/[a-z0-9]/.test(before) && /[A-Z]/.test(original.charAt(at)));
+  }
+
+  function occurrences(lower, original, word) {
+    var count = 0, at = lower.indexOf(word);
+    while (at !== -1) {
+      if (starts(original, at)) count += 1;
+      at = lower.indexOf(word, at + 1);
+    }
     return count;
   }
 
+  // What a query word is looked for as: "constants" finds "constant" too, and
+  // "families" "family" (a plural's stem; the word itself is then found too).
+  function stem(word) {
+    if (word.length > 4 && /ies$/.test(word)) return word.slice(0, -3);
+    if (word.length > 3 && /[^s]s$/.test(word)) return word.slice(0, -1);
+    return word;
+  }
+
+  // How much one word weighs in one section, and the strongest place it stands there.
+  function weigh(fields, originals, word) {
+    var n = fields.map(function (text, f) { return occurrences(text, originals[f], word); });
+    var score = 0, where = -1;
+    if (n[HEADING]) score += 12;
+    if (n[RECAP]) score += 10;
+    if (n[PROSE]) score += 3 + Math.log(n[PROSE]);
+    if (n[CODE]) score += 1 + Math.log(n[CODE]) / 2;
+    if (n[COMMENTS]) score += 0.5;
+    for (var f = 0; f < n.length; f++) if (n[f]) { where = f; break; }
+    return {score: score, count: n[0] + n[1] + n[2] + n[3] + n[4], where: where};
+  }
+
   function search(query) {
-    var words = query.toLowerCase().split(/\s+/).filter(function (w) { return w.length > 0; });
+    var words = query.toLowerCase().split(/\s+/).filter(function (w) { return w.length > 0; }).map(stem);
     if (!words.length) return [];
     var pages = index.pages.map(function (page, i) {
-      return {page: i, score: 0, hits: words.map(function () { return 0; }), best: -1, bestHits: -1,
-              inHeading: words.map(function () { return false; })};
+      return {page: i, hits: words.map(function () { return 0; }), taught: words.map(function () { return false; }),
+              best: -1, bestScore: -1, where: -1, bonus: 0};
     });
-    lowered.forEach(function (section, s) {
-      var p = pages[index.sections[s][0]], total = 0;
+    var phrase = words.join(" ");
+    lowered.forEach(function (fields, s) {
+      var p = pages[index.sections[s][0]], score = 0, where = -1;
       words.forEach(function (w, k) {
-        var n = occurrences(section[1], w) + occurrences(section[0], w);
-        if (occurrences(section[0], w)) p.inHeading[k] = true;
-        p.hits[k] += n;
-        total += n;
+        var weight = weigh(fields, originals[s], w);
+        p.hits[k] += weight.count;
+        score += weight.score;
+        if (weight.where === HEADING || weight.where === RECAP) p.taught[k] = true;
+        if (weight.where !== -1 && (where === -1 || weight.where > where)) where = weight.where;
       });
-      if (total > p.bestHits) { p.bestHits = total; p.best = s; }
+      if (words.length > 1 && (fields[HEADING].indexOf(phrase) !== -1 || fields[RECAP].indexOf(phrase) !== -1)) {
+        score += 6;
+      }
+      if (score > p.bestScore) { p.bestScore = score; p.best = s; p.where = where; }
     });
     var found = pages.filter(function (p) { return p.hits.every(function (n) { return n > 0; }); });
+    // The book teaches in order: the first chapter with a word in a heading or
+    // its recap is where it is introduced; a page whose title holds it is about it.
     words.forEach(function (w, k) {
       var first = null;
       found.forEach(function (p) {
-        if (index.pages[p.page][2] === "chapter" && (first === null || p.page < first.page)) first = p;
+        if (index.pages[p.page][2] === "chapter" && p.taught[k] && (!first || p.page < first.page)) first = p;
       });
-      if (first) { first.score += 4; first.firstUse = true; }
+      if (first) first.bonus += 4;
     });
     found.forEach(function (p) {
-      var title = index.pages[p.page][1].toLowerCase();
-      words.forEach(function (w, k) {
-        p.score += 1 + Math.log(p.hits[k]);
-        if (title.indexOf(w) !== -1) p.score += 6;
-        else if (p.inHeading[k]) p.score += 3;
-      });
+      var breadth = 0, title = index.pages[p.page][1].toLowerCase();
+      p.hits.forEach(function (n) { breadth += 0.3 * Math.log(1 + n); });
+      words.forEach(function (w) { if (title.indexOf(w) !== -1) p.bonus += 10; });
+      p.score = (p.bestScore + breadth + p.bonus) * (KIND_WEIGHT[index.pages[p.page][2]] || 1);
     });
     found.sort(function (a, b) { return b.score - a.score || a.page - b.page; });
     return found.map(function (p) { p.words = words; return p; });
@@ -108,6 +165,18 @@
     return out;
   }
 
+  // The text a result shows: the section's prose where it holds a word, else its
+  // recap entry, its code, its comments (the index keeps them without `//`).
+  function snippetSource(s, words) {
+    var section = index.sections[s], fields = lowered[s];
+    var order = [PROSE, RECAP, CODE, COMMENTS];
+    for (var i = 0; i < order.length; i++) {
+      var f = order[i];
+      if (words.some(function (w) { return fields[f].indexOf(w) !== -1; })) return section[2 + f];
+    }
+    return section[4] || section[3];
+  }
+
   var form, input, list, statusLine;
 
   function status(text) { if (statusLine) statusLine.textContent = text; }
@@ -125,19 +194,19 @@
       link.href = base + page[0] + (section[1] ? "#" + section[1] : "");
       link.textContent = page[1];
       item.appendChild(link);
-      if (r.firstUse) {
-        var first = document.createElement("span");
-        first.className = "first-use";
-        first.textContent = " first used here";
-        item.appendChild(first);
+      if (r.where === HEADING || r.where === RECAP) {
+        var taught = document.createElement("span");
+        taught.className = "taught";
+        taught.textContent = " taught here";
+        item.appendChild(taught);
       }
       if (section[2] && section[2] !== page[1]) {
         var where = document.createElement("span");
         where.className = "where";
-        where.textContent = section[2];
+        where.textContent = section[2] + (LABELS[r.where] && r.where > PROSE ? " (" + LABELS[r.where] + ")" : "");
         item.appendChild(where);
       }
-      item.appendChild(snippet(section[3], r.words));
+      item.appendChild(snippet(snippetSource(r.best, r.words), r.words));
       list.appendChild(item);
     });
   }
