@@ -68,7 +68,7 @@ struct SwapchainPlan {
     VkSurfaceTransformFlagBitsKHR transform = VK_SURFACE_TRANSFORM_IDENTITY_BIT_KHR;
     VkCompositeAlphaFlagBitsKHR composite_alpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
     bool drawn_into = false;  // frames are drawn straight into the images
-    bool readable = false;  // the images may be copied from
+    bool readable = false;    // the images may be copied from
 };
 
 // The swapchain for `request` on a surface that offers `offer`: a pure
