@@ -186,7 +186,8 @@ public:
     // [verify-raster]
     // --verify raster: the frame drawn by both compute rasterisers, one after
     // the other into the same pixel buffer, each copied out; then every word
-    // compared. `transform` records the transform pass (and binds the set).
+    // compared. `transform` records the pose and transform passes (and clears
+    // the boxes, binding set 2, between them).
     void verify(ComputeRaster& simple, VkExtent2D extent, VkBuffer projected,
                 const std::function<void(VkCommandBuffer)>& transform) const {
         const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
@@ -203,7 +204,6 @@ public:
                                 VK_ACCESS_2_HOST_READ_BIT);
         };
         vkt::one_time_submit(gpu_, [&](VkCommandBuffer cmd) {
-            clear_boxes(cmd);
             transform(cmd);
             simple.draw(cmd, projected);
             copy_out(cmd, a.buffer);

@@ -244,8 +244,13 @@ private:
     }
 
     // The pose pass and the transform pass, recorded into any command buffer.
+    // The frame's order for a check's own submit: the pose pass, then (binned)
+    // the boxes cleared with set 2 bound, then the transform pass. The pose
+    // pass binds a pipeline layout of its own, which unbinds set 2, so set 2
+    // is bound after it, as record() does.
     void record_poses_and_transform(VkCommandBuffer cmd, uint32_t slot, const Push& push) const {
         poses_->record(cmd, slot, spin_time_, keys_);
+        if (binned_) binned_->clear_boxes(cmd);
         transform_->record(cmd, layouts_.pipeline, slot, push);
     }
 
@@ -268,7 +273,6 @@ private:
         const VkDeviceSize bytes = transform_->vertex_total() * sizeof(Projected);
         vkt::Buffer host = vkt::create_host_buffer(gpu_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
         vkt::one_time_submit(gpu_, [&](VkCommandBuffer cmd) {
-            if (binned_) binned_->clear_boxes(cmd);  // binds set 2, which its transform writes
             record_poses_and_transform(cmd, slot, push);
             vkt::buffer_barrier(cmd, projected, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
