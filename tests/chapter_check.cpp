@@ -181,7 +181,7 @@ int check_blends(const vkt::RgbaImage& actual, const std::vector<std::string>& s
             return fail("bad --between " + spec + " for a " + std::to_string(actual.width) + "x" +
                         std::to_string(actual.height) + " picture");
         constexpr int slack = 2;
-        auto near = [](const uint8_t* p, const unsigned* c) {
+        auto close_to = [](const uint8_t* p, const unsigned* c) {
             for (int k = 0; k < 3; ++k)
                 if (std::abs(int(p[k]) - int(c[k])) > slack) return false;
             return true;
@@ -190,11 +190,11 @@ int check_blends(const vkt::RgbaImage& actual, const std::vector<std::string>& s
         for (unsigned y = y0; y < y0 + h; ++y)
             for (unsigned x = x0; x < x0 + w; ++x) {
                 const uint8_t* p = &actual.pixels[(size_t{y} * actual.width + x) * 4];
-                if (near(p, a)) {
+                if (close_to(p, a)) {
                     ++as_a;
                     continue;
                 }
-                if (near(p, b)) {
+                if (close_to(p, b)) {
                     ++as_b;
                     continue;
                 }
