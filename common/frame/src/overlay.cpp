@@ -26,6 +26,7 @@ void Overlay::record(VkCommandBuffer, uint32_t, VkImageView, VkExtent2D) {}
 }  // namespace vkt
 #else
 #include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/rendering.hpp"
 #include "vkt/resources/shader.hpp"
 #include "vkt/resources/upload.hpp"
 
@@ -228,22 +229,7 @@ void Overlay::record(VkCommandBuffer cmd, uint32_t slot, VkImageView target, VkE
     upload(buffers, VkDeviceSize(data->TotalVtxCount) * sizeof(ImDrawVert),
            VkDeviceSize(data->TotalIdxCount) * sizeof(ImDrawIdx));
 
-    // Over the frame: its pixels loaded, not cleared.
-    const VkRenderingAttachmentInfo colour{
-        .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-        .imageView = target,
-        .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-        .loadOp = VK_ATTACHMENT_LOAD_OP_LOAD,
-        .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-    };
-    const VkRenderingInfo rendering{
-        .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-        .renderArea = {{0, 0}, extent},
-        .layerCount = 1,
-        .colorAttachmentCount = 1,
-        .pColorAttachments = &colour,
-    };
-    vkCmdBeginRendering(cmd, &rendering);
+    begin_colour_rendering(cmd, target, extent, VK_ATTACHMENT_LOAD_OP_LOAD);  // over the frame
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 0, nullptr);
     set_viewport_and_scissor(cmd, extent);

@@ -36,4 +36,23 @@ void begin_rendering(VkCommandBuffer cmd, VkImageView colour, VkExtent2D extent,
     vkCmdBeginRendering(cmd, &rendering);
 }
 
+void begin_colour_rendering(VkCommandBuffer cmd, VkImageView colour, VkExtent2D extent,
+                            VkAttachmentLoadOp load) {
+    const VkRenderingAttachmentInfo attachment{
+        .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+        .imageView = colour,
+        .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+        .loadOp = load,
+        .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+    };
+    const VkRenderingInfo rendering{
+        .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+        .renderArea = {{0, 0}, extent},
+        .layerCount = 1,
+        .colorAttachmentCount = 1,
+        .pColorAttachments = &attachment,
+    };
+    vkCmdBeginRendering(cmd, &rendering);
+}
+
 }  // namespace vkt

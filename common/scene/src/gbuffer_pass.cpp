@@ -6,6 +6,7 @@
 #include "vkt/core/check.hpp"
 #include "vkt/resources/descriptors.hpp"
 #include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/rendering.hpp"
 #include "vkt/resources/shader.hpp"
 #include "vkt/resources/upload.hpp"
 
@@ -283,21 +284,8 @@ void GBufferPass::record(VkCommandBuffer cmd, VkDescriptorSet frame_set, VkExten
 // [full-screen]
 // Pass 2 draws into the frame's target alone; no depth.
 void begin_full_screen(VkCommandBuffer cmd, VkImageView target, VkExtent2D extent) {
-    const VkRenderingAttachmentInfo colour{
-        .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-        .imageView = target,
-        .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-        .loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE,  // every pixel is written
-        .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-    };
-    const VkRenderingInfo rendering{
-        .sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-        .renderArea = {{0, 0}, extent},
-        .layerCount = 1,
-        .colorAttachmentCount = 1,
-        .pColorAttachments = &colour,
-    };
-    vkCmdBeginRendering(cmd, &rendering);
+    begin_colour_rendering(cmd, target, extent,
+                           VK_ATTACHMENT_LOAD_OP_DONT_CARE);  // every pixel is written
     set_viewport_and_scissor(cmd, extent);
 }
 // [/full-screen]

@@ -157,17 +157,14 @@ std::string unescape(std::string_view raw) {
     return out;
 }
 
-}  // namespace
-
-std::optional<std::string> check_json_depth(std::string_view json, size_t limit) {
-    size_t depth = 0, line = 1, line_start = 0;
+// Calls visit(i, c) for each character of `json` outside its strings (the
+// quotes and escapes included in the strings), until visit returns false.
+// JSON allows no raw line break inside a string, so every one is seen.
+template <class Visit>
+void for_each_outside_strings(std::string_view json, Visit visit) {
     bool in_string = false, escaped = false;
     for (size_t i = 0; i < json.size(); ++i) {
         const char c = json[i];
-        if (c == '\n') {
-            ++line;
-            line_start = i + 1;
-        }
         if (in_string) {
             if (escaped)
                 escaped = false;
@@ -177,19 +174,37 @@ std::optional<std::string> check_json_depth(std::string_view json, size_t limit)
                 in_string = false;
         } else if (c == '"') {
             in_string = true;
+        } else if (!visit(i, c)) {
+            return;
+        }
+    }
+}
+
+}  // namespace
+
+std::optional<std::string> check_json_depth(std::string_view json, size_t limit) {
+    size_t depth = 0, line = 1, line_start = 0;
+    std::optional<std::string> too_deep;
+    for_each_outside_strings(json, [&](size_t i, char c) {
+        if (c == '\n') {
+            ++line;
+            line_start = i + 1;
         } else if (c == '[' || c == '{') {
-            if (++depth > limit)
-                return "JSON: arrays and objects nest more than " + std::to_string(limit) +
-                       " deep (at line " + std::to_string(line) + ", column " +
-                       std::to_string(i - line_start + 1) + "); this loader's limit is " +
-                       std::to_string(limit) +
-                       " levels (glTF itself needs about 7), because tinygltf recurses once "
-                       "per level and a file nested deep enough overflows its stack";
+            if (++depth > limit) {
+                too_deep = "JSON: arrays and objects nest more than " + std::to_string(limit) +
+                           " deep (at line " + std::to_string(line) + ", column " +
+                           std::to_string(i - line_start + 1) + "); this loader's limit is " +
+                           std::to_string(limit) +
+                           " levels (glTF itself needs about 7), because tinygltf recurses "
+                           "once per level and a file nested deep enough overflows its stack";
+                return false;
+            }
         } else if ((c == ']' || c == '}') && depth > 0) {
             --depth;
         }
-    }
-    return std::nullopt;
+        return true;
+    });
+    return too_deep;
 }
 
 GlbLayout check_glb_layout(std::span<const uint8_t> file) {
@@ -327,21 +342,10 @@ std::vector<JsonDataUri> json_data_uris(std::string_view json) {
 
 size_t json_value_count(std::string_view json) {
     size_t count = 1;
-    bool in_string = false, escaped = false;
-    for (const char c : json) {
-        if (in_string) {
-            if (escaped)
-                escaped = false;
-            else if (c == '\\')
-                escaped = true;
-            else if (c == '"')
-                in_string = false;
-        } else if (c == '"') {
-            in_string = true;
-        } else if (c == ',' || c == '[' || c == '{' || c == ':') {
-            ++count;
-        }
-    }
+    for_each_outside_strings(json, [&](size_t, char c) {
+        if (c == ',' || c == '[' || c == '{' || c == ':') ++count;
+        return true;
+    });
     return count;
 }
 

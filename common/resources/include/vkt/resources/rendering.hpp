@@ -22,4 +22,11 @@ void begin_rendering(VkCommandBuffer cmd, VkImageView colour, VkExtent2D extent,
                      VkClearColorValue clear, VkImageView depth = VK_NULL_HANDLE,
                      VkImageView resolve = VK_NULL_HANDLE);
 
+// Begins rendering into `colour` alone (COLOR_ATTACHMENT_OPTIMAL, no depth)
+// without clearing it: `load` LOAD keeps its pixels, to draw over them
+// (chapter 21's overlay), DONT_CARE when every pixel will be written anyway
+// (chapter 16's full-screen pass). Stored when it ends.
+void begin_colour_rendering(VkCommandBuffer cmd, VkImageView colour, VkExtent2D extent,
+                            VkAttachmentLoadOp load);
+
 }  // namespace vkt
