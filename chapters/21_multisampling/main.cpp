@@ -22,6 +22,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -117,7 +118,10 @@ public:
             throw vkt::Error(std::string("--sample-shading: ") + context.properties.deviceName +
                              " " + vkt::lacks_feature("sampleRateShading"));
         for (uint32_t count = 1; count <= 64; count *= 2)  // the overlay's choices
-            if (offered & count) offered_.push_back(VkSampleCountFlagBits(count));
+            if (offered & count) {
+                offered_.push_back(VkSampleCountFlagBits(count));
+                offered_names_.push_back(std::to_string(count));
+            }
 
         const Scene scene = build_scene();
         wheel_indices_ = scene.wheel_indices;
@@ -156,16 +160,10 @@ public:
     // frame in flight, so a change waits for the GPU to finish them all
     // before it makes both again.
     void overlay(vkt::OverlayPanel& panel) override {
-        int chosen = 0;
-        std::vector<std::string> names;
-        names.reserve(offered_.size());
-        for (size_t i = 0; i < offered_.size(); ++i) {
-            names.push_back(std::to_string(unsigned(offered_[i])));
-            if (offered_[i] == samples_) chosen = int(i);
-        }
+        int chosen = int(std::find(offered_.begin(), offered_.end(), samples_) - offered_.begin());
         std::vector<const char*> labels;
-        labels.reserve(names.size());
-        for (const std::string& name : names) labels.push_back(name.c_str());
+        labels.reserve(offered_names_.size());
+        for (const std::string& name : offered_names_) labels.push_back(name.c_str());
         bool changed = panel.choice("Samples", chosen, labels);
         bool shading = shading_ > 0.0f;
         if (can_shade_) changed = panel.checkbox("Sample shading", shading) || changed;
@@ -321,6 +319,7 @@ private:
     VkFormat depth_format_ = VK_FORMAT_UNDEFINED;
     VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
     std::vector<VkSampleCountFlagBits> offered_;  // what this device can render, 1 first
+    std::vector<std::string> offered_names_;      // the same, as the overlay names them
     float shading_ = 0.0f;                        // minSampleShading; 0: off
     bool can_shade_ = false;                      // the sampleRateShading feature
     VkExtent2D extent_{};
