@@ -75,6 +75,8 @@ import xml.etree.ElementTree as ElementTree
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 
+from source_constants import NUMBER_RE, NUMBER_START_RE, ConstantError, constant, scaled, shown_matches
+
 try:
     import markdown
     import pygments
@@ -287,6 +289,8 @@ def expand_page(root: Path, book: Path, page: Page, sources: Sources, problems: 
     captions: list[Include] = []
     for number, line in enumerate(lines, start=1):
         fence_match = FENCE_RE.match(line)
+        if fence is None and NUMBER_START_RE.search(line):
+            line = expand_numbers(root, book, line, f"{where}:{number}", problems)
         if fence is None:
             if fence_match:
                 fence, fence_indent, language = fence_match.group(2), fence_match.group(1), fence_match.group(3)
@@ -358,6 +362,37 @@ def expand_page(root: Path, book: Path, page: Page, sources: Sources, problems: 
     if not page.title:
         problems.append(f"{where}: the page has no '# ' title heading")
     page.markdown = "\n".join(out) + "\n"
+
+
+def expand_numbers(root: Path, book: Path, line: str, where: str, problems: list[str]) -> str:
+    """A line's {{#number path:NAME shown}} directives replaced by the number shown,
+    each checked against the constant in the source (book/source_constants.py)."""
+    def one(match: re.Match) -> str:
+        path_text, name, which, scale, shown = match.groups()
+        target = book / path_text
+        if not inside_root(root, target):
+            problems.append(f"{where}: {path_text} lies outside the repository")
+            return shown
+        rel = target.resolve().relative_to(root.resolve()).as_posix() if target.exists() else path_text
+        if not target.is_file():
+            problems.append(f"{where}: {{{{#number}}}} names {path_text}, which does not exist")
+            return shown
+        try:
+            value = scaled(constant(target, name, int(which) if which else None, rel), scale or "")
+        except ConstantError as error:
+            problems.append(f"{where}: {error}")
+            return shown
+        if not shown_matches(shown, value):
+            exact = f"{float(value):g}" if value.denominator != 1 else str(value.numerator)
+            problems.append(f"{where}: the page says {shown} where {rel} gives {exact} "
+                            f"({name}{'#' + which if which else ''}{scale.replace(' ', '') if scale else ''})")
+        return shown
+    line = NUMBER_RE.sub(one, line)
+    if NUMBER_START_RE.search(line):
+        problems.append(f"{where}: malformed {{{{#number}}}} (want '{{{{#number <path>:<NAME> <number "
+                        "shown>}}', optionally NAME#N and *K or /K after the name)")
+        line = NUMBER_START_RE.sub("{{number", line)
+    return line
 
 
 # --------------------------------------------------------------------------

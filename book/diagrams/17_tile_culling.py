@@ -1,15 +1,27 @@
 """Chapter 17: a tile's frustum, its depth range, and its light list.
 
 From shaders/17_tiled_deferred/tiles.glsl (tile_frustum, sphere_touches_tile,
-TILE_SIZE 16, MAX_TILE_LIGHTS 1024, the TileCounts and TileLights buffers) and
+TILE_SIZE, MAX_TILE_LIGHTS, the TileCounts and TileLights buffers) and
 tiles.comp (the depth range by atomicMin/atomicMax in shared memory, each
-invocation testing lights k, k + 256, ...). The side view is schematic.
+invocation testing lights k, k + 256, ...). The side view is schematic. The
+tile size and the list's length are read from tiles.glsl when the diagram is
+drawn (book/source_constants.py), so the drawing cannot disagree with the shader.
 """
 
 import math
+import sys
+from pathlib import Path
 
 from svg import (BLUE, BLUE_FILL, GREEN, GREEN_FILL, GREY, GREY_FILL, INK, MUTED, ORANGE,
                  ORANGE_FILL, PURPLE, PURPLE_FILL, RED, Svg)
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+from source_constants import constant  # noqa: E402  (book/, above this folder)
+
+TILES_GLSL = Path(__file__).resolve().parents[2] / "shaders" / "17_tiled_deferred" / "tiles.glsl"
+TILE = int(constant(TILES_GLSL, "TILE_SIZE"))
+MAX_LIGHTS = int(constant(TILES_GLSL, "MAX_TILE_LIGHTS"))
+INVOCATIONS = TILE * TILE
 
 W, H = 1000, 600
 
@@ -82,18 +94,19 @@ def main() -> None:
 
     # ---- Right: the tiles and one tile's list ----------------------------------------------
     rx = 640
-    s.text(rx, 28, "The screen in tiles of 16 \u00d7 16 pixels", size=14, bold=True)
+    s.text(rx, 28, f"The screen in tiles of {TILE} \u00d7 {TILE} pixels", size=14, bold=True)
     gx, gy, cols, rows, cell = rx, 44, 12, 9, 21
     for r in range(rows):
         for c in range(cols):
             s.rect(gx + c * cell, gy + r * cell, cell, cell if r < rows - 1 else cell / 2,
                    fill="#ffffff" if (r, c) != (3, 7) else PURPLE_FILL, stroke=GREY if (r, c) != (3, 7) else PURPLE,
                    width=0.6 if (r, c) != (3, 7) else 1.8)
-    s.text(gx, gy + rows * cell + 8, "1920\u00d71080: 120 \u00d7 68 tiles, the last row half a tile",
+    s.text(gx, gy + rows * cell + 8, f"1920\u00d71080: {-(-1920 // TILE)} \u00d7 {-(-1080 // TILE)} tiles, "
+           "the last row half a tile",
            size=11, fill=MUTED)
     s.text(gx + cols * cell + 8, gy + 3 * cell + 15, "tile t", size=11.5, fill=PURPLE, bold=True)
     s.text(gx + cols * cell + 8, gy + 3 * cell + 31, "one workgroup:", size=11, fill=MUTED)
-    s.text(gx + cols * cell + 8, gy + 3 * cell + 45, "256 invocations", size=11, fill=MUTED)
+    s.text(gx + cols * cell + 8, gy + 3 * cell + 45, f"{INVOCATIONS} invocations", size=11, fill=MUTED)
 
     sy = 270
     s.text(rx, sy, "tiles.comp, one workgroup per tile", size=13, bold=True)
@@ -101,7 +114,7 @@ def main() -> None:
         (BLUE_FILL, BLUE, "1  each invocation reads its pixel's depth;",
          "    atomicMin / atomicMax in shared memory"),
         (PURPLE_FILL, PURPLE, "2  barrier(); the tile's frustum from the range", ""),
-        (GREEN_FILL, GREEN, "3  invocation k tests lights k, k + 256, ...;",
+        (GREEN_FILL, GREEN, f"3  invocation k tests lights k, k + {INVOCATIONS}, ...;",
          "    atomicAdd appends a hit to the shared list"),
         (ORANGE_FILL, ORANGE, "4  barrier(); write found and the list", ""),
     ]
@@ -119,15 +132,15 @@ def main() -> None:
     s.text(rx, ly + 24, "tile_counts[t]", size=11.5, mono=True)
     s.rect(rx + 110, ly + 10, 44, 22, fill=ORANGE_FILL, stroke=ORANGE)
     s.text(rx + 132, ly + 25, "27", size=11.5, anchor="middle", mono=True)
-    s.text(rx + 162, ly + 25, "found: may exceed 1,024", size=11, fill=MUTED)
-    s.text(rx, ly + 56, "tile_lights[t \u00d7 1024 + i]", size=11.5, mono=True)
+    s.text(rx + 162, ly + 25, f"found: may exceed {MAX_LIGHTS:,}", size=11, fill=MUTED)
+    s.text(rx, ly + 56, f"tile_lights[t \u00d7 {MAX_LIGHTS} + i]", size=11.5, mono=True)
     bx, by = rx, ly + 64
     values = ["12", "407", "3", "...", "", "", "..."]
     for i, v in enumerate(values):
         s.rect(bx + i * 44, by, 44, 22, fill=ORANGE_FILL if v and v != "..." or i < 4 else "#ffffff",
                stroke=ORANGE if i < 4 else GREY)
         s.text(bx + i * 44 + 22, by + 15, v, size=11, anchor="middle", mono=True)
-    s.text(bx, by + 38, "MAX_TILE_LIGHTS = 1,024 slots per tile; an overflow", size=11, fill=MUTED)
+    s.text(bx, by + 38, f"MAX_TILE_LIGHTS = {MAX_LIGHTS:,} slots per tile; an overflow", size=11, fill=MUTED)
     s.text(bx, by + 52, "is counted and reported, never silent", size=11, fill=MUTED)
     s.write()
 

@@ -67,7 +67,7 @@ void main() {
     // One vertex per invocation on a GPU, which reads the pose from shared
     // memory as it goes. On a CPU device the dispatch is narrower and each
     // invocation walks several vertices, a dispatch row apart, with its own
-    // copy m of the pose, read once for all of them (main.cpp).
+    // copy m of the pose, read once for all of them (tuning.hpp chooses).
     vec4 m[N * Q + Q];
     if (OWN_COPY)
         for (int i = 0; i < N * Q + Q; ++i) m[i] = pose[i];
