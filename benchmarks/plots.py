@@ -9,7 +9,11 @@ Each chart has labelled axes with their units, logarithmic axes where the data
 spans decades, a legend, the device and the date of the measurement in its
 title, and the frame budgets of 60 and 144 frames a second drawn and labelled
 (the axis widened to take in one that lies just outside the data; one far
-outside is named in the legend, with the side it lies on). The date is the
+outside is named in the legend, with the side it lies on), each label placed
+where no data line passes under it. Where a case ran several times, the point
+is the median of the runs' medians and a bar spans the fastest run to the
+slowest; a note under the legend says which series ran once (no spread to
+show) and names every point the data lacks, with the reason. The date is the
 one in the results file's name, else that of the last commit that changed it. Text stays text in the SVG (searchable, and checked
 by tests/book_browser.py through the ids x-axis-label, y-axis-label, legend
 and title). Needs Debian's python3-matplotlib; run it with /usr/bin/python3.
@@ -151,10 +155,20 @@ def draw_lights(chart: Chart, ax) -> tuple[str, str]:
               ("deferred ms (G-buffer + lighting)", "deferred (chapter 16)", ORANGE, "o"),
               ("tiled fragment ms", "tiled, fragment lighting", BLUE, "s"),
               ("tiled compute ms", "tiled, compute lighting", CYAN, "s")]
+    missing: dict[float, list[str]] = {}
     for column, label, colour, marker in series:
         points = [(x, number(r[column])) for x, r in zip(lights, rows) if number(r[column]) is not None]
         ax.plot([p[0] for p in points], [p[1] for p in points], "-", marker=marker, color=colour, label=label,
                 linewidth=2, markersize=5)
+        for x, r in zip(lights, rows):
+            if number(r[column]) is None:
+                missing.setdefault(x, []).append(label.split(" (")[0])
+    # Every point the table lacks is named under the chart, with the reason the results give.
+    notes = [f"No {' or '.join(names)} point at {int(x):,} lights: {chart.options.get('missing', 'not measured')}"
+             for x, names in sorted(missing.items())]
+    if chart.options.get("repeats"):
+        notes.append(chart.options["repeats"])
+    chart.options["notes"] = notes
     ax.set_xscale("log", base=4)
     ax.set_yscale("log")
     ax.set_xticks(lights)
@@ -188,6 +202,7 @@ def draw_ndim(chart: Chart, ax) -> tuple[str, str]:
              "20 graphics": ("chapter 20: compute transform, line draw", ORANGE),
              "20 compute": ("chapter 20: compute transform, compute raster", BLUE)}
     from matplotlib.lines import Line2D
+    runs: dict[str, set[int]] = {}
     for (series, scene), points in sorted(samples.items(), key=lambda kv: (list(names).index(kv[0][0]), kv[0][1])):
         label, colour = names[series]
         ns = sorted(points)
@@ -195,12 +210,28 @@ def draw_ndim(chart: Chart, ax) -> tuple[str, str]:
         many = scene == "many"
         ax.plot(ns, ms, "-" if many else ":", color=colour, linewidth=2.4 if many else 1.6,
                 marker="o", markersize=6, markerfacecolor=colour if many else "white", markeredgewidth=1.5)
+        # The spread: where a case ran several times, a bar from its fastest run's median to
+        # its slowest's (offset a little sideways per chapter, so that bars do not hide each other).
+        shift = {"18": -0.12, "19": -0.04, "20 graphics": 0.04, "20 compute": 0.12}[series]
+        for n, m in zip(ns, ms):
+            if len(points[n]) > 1:
+                low, high = min(points[n]), max(points[n])
+                ax.errorbar([n + shift], [m], yerr=[[m - low], [high - m]], fmt="none", ecolor=colour,
+                            elinewidth=1.3, capsize=4, capthick=1.3, zorder=3)
+        runs.setdefault(label.split(":")[0], set()).update(len(v) for v in points.values())
     # The legend: a colour per chapter, a line style per scene.
     chart.options["handles"] = (
         [Line2D([], [], color=colour, linewidth=2.4, label=label) for label, colour in names.values()] +
         [Line2D([], [], color=GREY, linewidth=2.4, marker="o", label="solid, filled: 250 n-cubes"),
          Line2D([], [], color=GREY, linewidth=1.6, linestyle=":", marker="o", markerfacecolor="white",
                 markeredgewidth=1.5, label="dotted, hollow: one n-cube")])
+    once = sorted(c for c, counts in runs.items() if counts == {1})
+    several = sorted(c for c, counts in runs.items() if max(counts) > 1)
+    chart.options["notes"] = [
+        f"Each point: the median frame of a run; {', '.join(several)}: the median of "
+        f"{max(max(runs[c]) for c in several)} runs, the bar from the fastest run to the slowest.",
+        f"{' and '.join(once)}: one run each, so no spread is shown. Every n from 4 to 12 in steps of 4 "
+        "was measured: no point is missing."] if several else []
     ax.set_yscale("log")
     ax.set_xticks([4, 8, 12])
     ax.set_xlim(3.5, 12.5)
@@ -215,7 +246,10 @@ CHARTS = [
           {"title": "Chapter 14: one physics step against the number of boxes",
            "device": "CPU only: AMD EPYC, one thread"}),
     Chart("17_tiled_deferred_bench_lavapipe.svg", ["17_tiled_deferred-lavapipe.md"], draw_lights,
-          {"title": "Chapters 16 and 17: GPU time per frame against the number of lights"}),
+          {"title": "Chapters 16 and 17: GPU time per frame against the number of lights",
+           "missing": "not run (minutes a frame; 16,384 lights took 132 s forward)",
+           "repeats": "One run per point (the median of 3 frames; 1 at 16,384), on a machine under load: "
+                      "no spread measured, so wiggles between neighbouring points may be noise."}),
     Chart("17_tiled_deferred_bench_h100.svg", ["17_tiled_deferred-h100.md"], draw_lights,
           {"title": "Chapters 16 and 17: GPU time per frame against the number of lights"}),
     Chart("20_ndim_compute_bench.svg", ["2026-11-23-idle-18_ndim_cpu-lavapipe.txt",
@@ -261,6 +295,7 @@ def render(chart: Chart, target: Path) -> None:
     # that a chart never leaves a reader wondering where 144 fps went.
     low, high = ax.get_ylim()
     off_axis = []
+    budget_labels = []
     for ms, name in BUDGETS:
         if low / NEAR_BUDGET < ms <= low:
             low = ms / 1.25
@@ -272,13 +307,16 @@ def render(chart: Chart, target: Path) -> None:
             off_axis.append(Line2D([], [], color=GREY, linestyle=(0, (5, 4)), linewidth=1.2,
                                    label=f"{name} budget: {ms:.1f} ms, {where} the axis"))
             continue
-        ax.axhline(ms, color=GREY, linestyle=(0, (5, 4)), linewidth=1.2, zorder=1)
-        ax.annotate(f"{name} budget: {ms:.1f} ms", xy=(1.0, ms), xycoords=("axes fraction", "data"),
-                    xytext=(-4, 3), textcoords="offset points", ha="right", va="bottom", fontsize=9.5,
-                    color="#3d444d", bbox={"boxstyle": "round,pad=0.2", "facecolor": "white",
-                                            "edgecolor": "none", "alpha": 0.85})
+        ax.axhline(ms, color=GREY, linestyle=(0, (5, 4)), linewidth=1.2, zorder=1, gid="budget")
+        budget_labels.append(ax.annotate(
+            f"{name} budget: {ms:.1f} ms", xy=(1.0, ms), xycoords=("axes fraction", "data"),
+            xytext=(-4, 3), textcoords="offset points", ha="right", va="bottom", fontsize=9.5,
+            color="#3d444d", bbox={"boxstyle": "round,pad=0.2", "facecolor": "white",
+                                   "edgecolor": "none", "alpha": 0.85}))
     ax.set_ylim(low, high)
-    title = ax.set_title(f"{chart.options['title']}\n{device}; measured {date}", loc="left")
+    import textwrap
+    heading = [chart.options["title"]] + textwrap.wrap(f"{device}; measured {date}", 72)
+    title = ax.set_title("\n".join(heading), loc="left")
     # Below the axes, where it hides no data.
     handles = chart.options.get("handles") or ax.get_legend_handles_labels()[0]
     legend = ax.legend(handles=handles + off_axis, loc="upper center", bbox_to_anchor=(0.5, -0.13),
@@ -287,9 +325,64 @@ def render(chart: Chart, target: Path) -> None:
     ax.xaxis.label.set_gid("x-axis-label")
     ax.yaxis.label.set_gid("y-axis-label")
     legend.set_gid("legend")
+    # Notes under the legend: the spread shown, and every point the data lacks, and why.
+    notes = chart.options.get("notes") or []
+    if notes:
+        lines = [part for text in notes for part in textwrap.wrap(text, 96)]
+        note = ax.annotate("\n".join(lines), xy=(0.5, 0.0), xycoords=legend, xytext=(0, -6),
+                           textcoords="offset points", ha="center", va="top", fontsize=9.5, color="#3d444d",
+                           wrap=False)
+        note.set_gid("notes")
     figure.tight_layout()
+    place_budget_labels(figure, ax, budget_labels)
     figure.savefig(target, format="svg", metadata={"Date": None, "Creator": "benchmarks/plots.py"})
     plt.close(figure)
+
+
+def place_budget_labels(figure, ax, labels) -> None:
+    """Moves each budget's label off the data: at the right end of its line, above it, is
+    the first choice; then the left end, then below the line at the right and at the left.
+    A place is taken when no data line (nor a marker on it) passes under the label."""
+    import numpy as np
+    # The SVG canvas has no get_renderer() of its own; the figure's (matplotlib 3.6) measures
+    # text the same way the SVG will place it.
+    renderer = figure.canvas.get_renderer() if hasattr(figure.canvas, "get_renderer") else figure._get_renderer()
+    points = []
+    for line in ax.get_lines():
+        if line.get_gid() == "budget" or not line.get_visible():
+            continue
+        xy = ax.transData.transform(np.column_stack(line.get_data()).astype(float))
+        for (x0, y0), (x1, y1) in zip(xy, xy[1:]):
+            steps = max(2, int(np.hypot(x1 - x0, y1 - y0)))
+            points.append(np.column_stack((np.linspace(x0, x1, steps), np.linspace(y0, y1, steps))))
+        points.append(xy)
+    if not points:
+        return
+    points = np.concatenate(points)
+    margin = 5.0  # display pixels: the line's width and its markers
+    places = [(x, dx, dy, ha, va) for dy, va in ((3, "bottom"), (-3, "top"))
+              for x, dx, ha in ((1.0, -4, "right"), (0.0, 4, "left"), (0.5, 0, "center"))]
+    for label in labels:
+        crossed = []
+        for place in places:
+            x, dx, dy, ha, va = place
+            label.xy = (x, label.xy[1])
+            label.set_position((dx, dy))
+            label.set_ha(ha)
+            label.set_va(va)
+            box = label.get_window_extent(renderer)
+            inside = ((points[:, 0] > box.x0 - margin) & (points[:, 0] < box.x1 + margin) &
+                      (points[:, 1] > box.y0 - margin) & (points[:, 1] < box.y1 + margin))
+            crossed.append(int(inside.sum()))
+            if not crossed[-1]:
+                break
+        else:
+            # Nowhere free: the place that the least of the data crosses.
+            x, dx, dy, ha, va = places[crossed.index(min(crossed))]
+            label.xy = (x, label.xy[1])
+            label.set_position((dx, dy))
+            label.set_ha(ha)
+            label.set_va(va)
 
 
 def main(argv: list[str]) -> int:
