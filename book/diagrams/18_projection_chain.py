@@ -43,11 +43,11 @@ def main() -> None:
         s.text(x + box_w / 2, y + 26, f"{dim} dimensions" if dim != "2" else "2: the screen", size=13.5,
                anchor="middle", bold=True)
         s.text(x + box_w / 2, y + 48, coords, size=12, anchor="middle")
-    drops = ["n \u2212 1", "n \u2212 2", "3", "2"]
+    drops = ["n\u22121", "n\u22122", "3", "2"]
     for i in range(len(stages) - 1):
         x0, x1 = xs[i] + widths[i], xs[i + 1]
         s.line(x0 + 4, y + 33, x1 - 4, y + 33, stroke=INK, width=1.6, arrow="end")
-        s.text((x0 + x1) / 2, y + 24, f"drop x_{{{drops[i]}}}", size=10.5, anchor="middle")
+        s.text((x0 + x1) / 2, y + 24, f"drop x_{{{drops[i]}}}", size=12, anchor="middle")
     s.text(20, y + 92, "Each step: the eye on axis k at distance d; the coordinates left are scaled by "
            "f = d / (d \u2212 x_{k}) and x_{k} is dropped. k = n \u2212 1, n \u2212 2, ..., 2.", size=12.5)
     s.text(20, y + 114, "Worked for n = 4, d = 4:", size=12.5, bold=True)

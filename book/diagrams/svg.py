@@ -76,7 +76,7 @@ def _segments(text: str) -> list[tuple[str, str]]:
 def text_width(text: str, size: float, bold: bool = False, mono: bool = False) -> float:
     total = 0.0
     for kind, piece in _segments(text):
-        scale = 0.72 if kind in ("sub", "sup") else 1.0
+        scale = 0.8 if kind in ("sub", "sup") else 1.0
         total += sum(char_width(c, bold or kind == "b", mono or kind == "m") for c in piece) * scale
     return total * size / 1000.0
 
@@ -160,7 +160,7 @@ class Svg:
             want = {"sub": 0.3 * size, "sup": -0.38 * size}.get(kind, 0.0)
             style = ""
             if kind in ("sub", "sup"):
-                style += f' font-size="{size * 0.72:.1f}"'
+                style += f' font-size="{size * 0.8:.1f}"'
             if kind == "b":
                 style += ' font-weight="bold"'
             if kind == "i":
