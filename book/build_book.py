@@ -12,6 +12,12 @@ inside a fenced code block is replaced by the lines between the source's marker
 comments `// [pipeline]` and `// [/pipeline]` (marker lines excluded, common
 indentation removed), and a caption after the block names the file and lines.
 
+A number that a page quotes from the sources names its constant, so that it
+cannot drift from the code: `{{#number ../shaders/17_tiled_deferred/tiles.glsl:MAX_TILE_LIGHTS 2,048}}`
+shows "2,048" and fails the build unless that file defines MAX_TILE_LIGHTS as
+2048 (`*K` and `/K` after the name scale it, `NAME#N` picks its N-th definition;
+book/source_constants.py, which the diagrams use to read their numbers too).
+
 The build fails (exit status 1, one line per problem) when an included file or
 marker does not exist, when a marker in chapters/, common/ or shaders/ is
 opened and not closed (or closed and not opened, or opened twice), when such a
