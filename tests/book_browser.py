@@ -556,7 +556,10 @@ def find_chromium(given: str) -> str | None:
 
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser(prog="book_browser.py", description=__doc__.splitlines()[0])
-    parser.add_argument("book", type=Path, help="the built book (book/build_book.py --out DIR)")
+    parser.add_argument("book", type=Path, nargs="?", help="the built book (book/build_book.py --out DIR)")
+    parser.add_argument("--figure-fixture", action="store_true",
+                        help="no browser: run the figure-text check on two made-up figures, one too small "
+                             "as shown at 1280 px, and print what it finds (the check's own test)")
     parser.add_argument("--chromium", default="",
                         help="the browser (default: the first of " + ", ".join(CHROMIUM_NAMES) + ")")
     parser.add_argument("--skip-without-chromium", action="store_true",
@@ -568,6 +571,22 @@ def main(argv: list[str]) -> int:
     except SystemExit as exit_:
         return 0 if exit_.code == 0 else 2
 
+    if args.figure_fixture:
+        # A 1000-unit-wide figure whose smallest text is 7.5 units, shown 680 px wide at
+        # 1280 px (5.1 px) and opened at 1700 (12.8 px): fine opened, too small as shown.
+        # And one whose 11-unit text shows at 8.1 px: above the 1280 px floor.
+        svg_text = {"images/small.svg": {"width": 1000, "smallest": 7.5, "which": "tiny label"},
+                    "images/fine.svg": {"width": 1000, "smallest": 11.0, "which": "label"}}
+        figures = [("fixture.html", 1280, {"src": "images/small.svg", "width": 680, "opened": 1700, "said": True}),
+                   ("fixture.html", 1280, {"src": "images/fine.svg", "width": 740, "opened": 1100, "said": True})]
+        problems, note = check_figures(figures, svg_text)
+        for problem in problems:
+            print(f"book_browser.py: {problem}", file=sys.stderr)
+        print(f"book_browser.py: figure fixture: {len(problems)} problem(s); {note}")
+        return 1 if problems else 0
+    if args.book is None:
+        print("book_browser.py: error: name the built book's folder", file=sys.stderr)
+        return 2
     book = args.book.resolve()
     if not (book / "index.html").is_file():
         print(f"book_browser.py: {book} holds no built book (no index.html)", file=sys.stderr)
