@@ -617,6 +617,8 @@ def polish(body: str) -> str:
     body = "".join(parts)
     body = re.sub(r"<ul>(\s*<li>(?:Sources|Run it):)", r'<ul class="chapter-files">\1', body)
     body = re.sub(r'(<img\b[^>]*\bsrc="(images/[^"]+\.svg)"[^>]*>)', r'<a class="figure" href="\2">\1</a>', body)
+    # A section past a long chapter's core ("## Going further: ...") is marked as such.
+    body = re.sub(r'<h2 id="(going-further-[^"]*)">', r'<h2 class="going-further" id="\1">', body)
     return body
 
 
