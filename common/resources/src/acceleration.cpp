@@ -1,5 +1,6 @@
 #include "vkt/resources/acceleration.hpp"
 
+#include "vkt/core/barrier.hpp"
 #include "vkt/core/check.hpp"
 #include "vkt/resources/align.hpp"
 
@@ -68,19 +69,9 @@ AccelerationStructure create_structure(const Gpu& gpu, const AccelerationCommand
 // Build writes made visible to what reads the structures next: the top
 // level's build (it reads the bottom levels), then every shader.
 void build_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 next_stage) {
-    const VkMemoryBarrier2 barrier{
-        .sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-        .srcStageMask = VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-        .srcAccessMask = VK_ACCESS_2_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
-        .dstStageMask = next_stage,
-        .dstAccessMask = VK_ACCESS_2_ACCELERATION_STRUCTURE_READ_BIT_KHR,
-    };
-    const VkDependencyInfo dependency{
-        .sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
-        .memoryBarrierCount = 1,
-        .pMemoryBarriers = &barrier,
-    };
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    memory_barrier(cmd, VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                   VK_ACCESS_2_ACCELERATION_STRUCTURE_WRITE_BIT_KHR, next_stage,
+                   VK_ACCESS_2_ACCELERATION_STRUCTURE_READ_BIT_KHR);
 }
 
 }  // namespace
