@@ -22,8 +22,10 @@
 #include "vkt/resources/shader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace {
