@@ -194,6 +194,10 @@ private:
     }
 
     void create_descriptors() {
+        // [descriptors]
+        // What the shaders read: the top level (ray generation and closest
+        // hit trace against it), the output image, and the closest-hit
+        // shader's vertices, indices and Object records.
         const VkDescriptorSetLayoutBinding bindings[] = {
             {0, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1,
              VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, nullptr},
@@ -208,30 +212,14 @@ private:
                                               {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3}};
         pool_ = vkt::create_descriptor_pool(gpu_.device, 1, sizes);
         set_ = vkt::allocate_descriptor_set(gpu_.device, pool_, set_layout_);
-        // [tlas-descriptor]
-        // The top level is bound like a buffer, but its write carries the
-        // structure in a struct of its own, chained to the write.
-        const VkAccelerationStructureKHR top = structures_.top.get();
-        const VkWriteDescriptorSetAccelerationStructureKHR structure{
-            .sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR,
-            .accelerationStructureCount = 1,
-            .pAccelerationStructures = &top,
-        };
-        const VkWriteDescriptorSet write{
-            .sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-            .pNext = &structure,
-            .dstSet = set_,
-            .dstBinding = 0,
-            .descriptorCount = 1,
-            .descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR,
-        };
-        vkUpdateDescriptorSets(gpu_.device, 1, &write, 0, nullptr);
-        // [/tlas-descriptor]
+        // The top level (chapter 24's write), then the meshes' buffers.
+        vkt::write_acceleration_structure_descriptor(gpu_.device, set_, 0, structures_.top.get());
         const VkBuffer buffers[] = {vertices_.buffer, indices_.buffer, objects_.buffer};
         for (uint32_t i = 0; i < 3; ++i)
             vkt::write_buffer_descriptor(gpu_.device, set_, 2 + i,
                                          VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i], 0,
                                          VK_WHOLE_SIZE);
+        // [/descriptors]
     }
 
     void create_pipeline(const std::string& chapter) {

@@ -152,6 +152,22 @@ void AccelerationStructure::reset() {
     address_ = 0;
 }
 
+void write_acceleration_structure_descriptor(VkDevice device, VkDescriptorSet set, uint32_t binding,
+                                             VkAccelerationStructureKHR structure) {
+    const VkWriteDescriptorSetAccelerationStructureKHR chained{
+        .sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR,
+        .accelerationStructureCount = 1,
+        .pAccelerationStructures = &structure};
+    const VkWriteDescriptorSet write{
+        .sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+        .pNext = &chained,
+        .dstSet = set,
+        .dstBinding = binding,
+        .descriptorCount = 1,
+        .descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR};
+    vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+}
+
 VkTransformMatrixKHR instance_transform(const glm::mat4& m) {
     VkTransformMatrixKHR out;
     for (int row = 0; row < 3; ++row)

@@ -98,6 +98,12 @@ VkTransformMatrixKHR instance_transform(const glm::mat4& m);
 std::vector<VkDeviceSize> scratch_offsets(std::span<const VkDeviceSize> sizes,
                                           VkDeviceSize alignment);
 
+// Points `binding` of `set` (an ACCELERATION_STRUCTURE_KHR binding) at a top
+// level: chapter 24's write, whose structure travels in a
+// VkWriteDescriptorSetAccelerationStructureKHR chained to it.
+void write_acceleration_structure_descriptor(VkDevice device, VkDescriptorSet set, uint32_t binding,
+                                             VkAccelerationStructureKHR structure);
+
 // A scene's structures: one BLAS per mesh and the TLAS over the instances.
 struct AccelerationScene {
     std::vector<AccelerationStructure> bottom;
