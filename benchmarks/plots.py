@@ -227,11 +227,18 @@ def draw_ndim(chart: Chart, ax) -> tuple[str, str]:
                 markeredgewidth=1.5, label="dotted, hollow: one n-cube")])
     once = sorted(c for c, counts in runs.items() if counts == {1})
     several = sorted(c for c, counts in runs.items() if max(counts) > 1)
-    chart.options["notes"] = [
-        f"Each point: the median frame of a run; {', '.join(several)}: the median of "
-        f"{max(max(runs[c]) for c in several)} runs, the bar from the fastest run to the slowest.",
-        f"{' and '.join(once)}: one run each, so no spread is shown. Every n from 4 to 12 in steps of 4 "
-        "was measured: no point is missing."] if several else []
+    notes = []
+    if several:
+        notes.append(f"Each point: the median of {max(max(runs[c]) for c in several)} runs' median frames "
+                     f"({', '.join(several)}), the bar from the fastest run to the slowest.")
+    if once:
+        notes.append(f"{' and '.join(once)}: one run each, so no spread is shown.")
+    expected = {(s, scene, n) for s in names for scene in ("cube", "many") for n in (4, 8, 12)}
+    missing = sorted(expected - {(s, scene, n) for (s, scene), points in samples.items() for n in points})
+    notes.append("Every chapter, scene and n from 4 to 12 in steps of 4 was measured: no point is missing."
+                 if not missing else "Not measured: " + "; ".join(f"{names[s][0]}, {scene}, n = {n}"
+                                                                   for s, scene, n in missing) + ".")
+    chart.options["notes"] = notes
     ax.set_yscale("log")
     ax.set_xticks([4, 8, 12])
     ax.set_xlim(3.5, 12.5)
