@@ -59,10 +59,11 @@ void main() {
         // [difference]
         // The comparison: the picture in grey, red where the map darkens a
         // point the ray finds lit, blue where it lights one the ray finds in
-        // shadow; how strongly, by how far the two answers differ.
+        // shadow; fully so where the two answers differ by a third or more
+        // (three of the map's nine filtered comparisons).
         const float grey = dot(colour, vec3(0.3, 0.59, 0.11));
-        colour = mix(vec3(grey), vec3(1.0, 0.1, 0.1), clamp(ray - map, 0.0, 1.0));
-        colour = mix(colour, vec3(0.1, 0.3, 1.0), clamp(map - ray, 0.0, 1.0));
+        colour = mix(vec3(grey), vec3(1.0, 0.1, 0.1), clamp(3.0 * (ray - map), 0.0, 1.0));
+        colour = mix(colour, vec3(0.1, 0.3, 1.0), clamp(3.0 * (map - ray), 0.0, 1.0));
         // [/difference]
     }
     frag_colour = vec4(colour, 1.0);
