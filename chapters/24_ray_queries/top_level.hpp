@@ -67,6 +67,10 @@ public:
         scratch_bytes_ = scratch;
     }
 
+    // Not copyable: build_ points at geometry_, inside the object itself.
+    TopLevel(const TopLevel&) = delete;
+    TopLevel& operator=(const TopLevel&) = delete;
+
     VkAccelerationStructureKHR get() const { return tlas_.get(); }
     VkDeviceSize bytes() const { return tlas_.size(); }
     VkDeviceSize scratch_bytes() const { return scratch_bytes_; }
