@@ -107,10 +107,12 @@ inline std::vector<AccelerationStructure> build_bottom_levels(
     // One command builds them all. The compacted size is known only once a
     // build has finished: a barrier (build writes before the query's read),
     // then the query.
-    std::vector<VkAccelerationStructureKHR> handles;
-    for (const AccelerationStructure& s : built) handles.push_back(s.get());
-    std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> range_pointers;
-    for (const VkAccelerationStructureBuildRangeInfoKHR& r : ranges) range_pointers.push_back(&r);
+    std::vector<VkAccelerationStructureKHR> handles(count);
+    std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> range_pointers(count);
+    for (size_t i = 0; i < count; ++i) {
+        handles[i] = built[i].get();
+        range_pointers[i] = &ranges[i];
+    }
     const VkMemoryBarrier2 built_barrier{
         .sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
         .srcStageMask = VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,

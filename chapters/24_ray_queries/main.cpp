@@ -79,7 +79,8 @@ std::vector<Object> make_scene(const vkt::shapes::MeshRange (&mesh)[mesh_count],
                        mesh[torus_mesh],
                        torus_mesh});
     for (uint32_t i = 0; i < crowd; ++i) {
-        const float x = -16.0f + 0.5f * float(i % 64), z = -44.0f - 0.5f * float(i / 64);
+        const uint32_t row = i / 64, column = i % 64;  // rows of 64 cubes
+        const float x = -16.0f + 0.5f * float(column), z = -44.0f - 0.5f * float(row);
         objects.push_back({vkt::transform({x, 6.0f + std::sin(2.0f * t + 0.1f * float(i)), z},
                                           t + float(i), {0, 1, 0}, glm::vec3(0.3f)),
                            {0.6f, 0.6f, 0.65f, 1},
