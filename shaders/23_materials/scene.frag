@@ -20,7 +20,7 @@ layout(location = 0) out vec4 radiance;
 
 // [normal-map]
 // The normal map's vector is in the surface's tangent frame: x along the
-// texture's u, y along its v, z the interpolated normal. The frame is the
+// texture's u, y up the image (where v decreases), z the interpolated normal. The frame is the
 // file's TANGENT where it has one; else it is made here, per pixel, from how
 // the position and the texture coordinates change across the screen.
 vec3 shading_normal() {
@@ -35,7 +35,8 @@ vec3 shading_normal() {
         vec2 duv1 = dFdx(uv), duv2 = dFdy(uv);
         vec3 dp2perp = cross(dp2, n), dp1perp = cross(n, dp1);
         t = dp2perp * duv1.x + dp1perp * duv2.x;
-        b = dp2perp * duv1.y + dp1perp * duv2.y;
+        // glTF's bitangent points up the image, where v decreases.
+        b = -(dp2perp * duv1.y + dp1perp * duv2.y);
         float scale = inversesqrt(max(max(dot(t, t), dot(b, b)), 1e-20));
         t *= scale;
         b *= scale;

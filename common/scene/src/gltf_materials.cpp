@@ -113,10 +113,14 @@ private:
         // bricks.png)"
         const bool file = !source.uri.empty() && source.uri.rfind("data:", 0) != 0;
         std::string what = path_.string() + ": image " + std::to_string(index);
-        if (!source.name.empty() || file)
-            what += " (" + (source.name.empty() ? "" : "\"" + printable(source.name, 60) + "\"") +
-                    (source.name.empty() || !file ? "" : ", ") +
-                    (file ? printable(source.uri) : "") + ")";
+        if (!source.name.empty() || file) {
+            std::string label;
+            if (!source.name.empty())
+                label.append("\"").append(printable(source.name, 60)).append("\"");
+            if (!source.name.empty() && file) label.append(", ");
+            if (file) label.append(printable(source.uri));
+            what.append(" (").append(label).append(")");
+        }
         RgbaImage decoded;
         if (source.bufferView >= 0) {
             std::span<const uint8_t> bytes =
