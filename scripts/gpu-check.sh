@@ -53,6 +53,21 @@ if [ -x "$bin/16_deferred" ]; then
     [ $rc -eq 0 ] || status=1
   done
 fi
+# Chapter 23: the sphere grid against the CPU reference, the white furnace,
+# and the glTF model's picture against its lavapipe golden.
+if [ -x "$bin/23_materials" ]; then
+  for v in "cpu" "furnace --scene furnace"; do
+    # shellcheck disable=SC2086  # the check and its scene are words
+    "$bin/23_materials" --offscreen --validation --frames 10 --size 320x240 --verify $v \
+      >"$out/23_materials.verify_${v%% *}.txt" 2>&1; rc=$?
+    echo "23_materials --verify $v: exit $rc; $(grep -h -i -E 'verify|error' "$out/23_materials.verify_${v%% *}.txt" | tail -n 2 | tr '\n' ' ')"
+    [ $rc -eq 0 ] || status=1
+  done
+  check 23_materials.model 23_materials tests/golden/23_materials_model.png "--pixel 0,0,59,69,92" \
+    "--headless --validation --frames 10 --size 320x240 --model assets/gltf/pbr_cubes.gltf"; rc=$?
+  echo "23_materials --model pbr_cubes.gltf picture vs lavapipe golden: exit $rc; $(grep -h -E '^picture|^FAIL' "$out/gpu.23_materials.model.check.txt" | tr '\n' ' ')"
+  [ $rc -eq 0 ] || status=1
+fi
 frames=${BENCH_FRAMES:-2000}
 echo "benchmarks (1280x720, $frames frames, validation off):"
 benchmarks/run.sh "$bin" "$frames" 1280x720 | tee "$out/benchmarks.jsonl"
