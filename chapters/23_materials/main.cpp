@@ -74,6 +74,7 @@ public:
     explicit Materials(const vkt::Context& context)
         : gpu_(context.gpu()),
           furnace_(context.options.text("--scene") == "furnace"),
+          spheres_(grid::spheres(furnace_)),
           model_(context.options.has("--model")),
           verify_(context.options.has("--verify") ? context.options.text("--verify") : ""),
           exposure_(float(context.options.number("--exposure"))),
@@ -249,7 +250,6 @@ public:
             vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, scene_layout_, 0, 1,
                                     &frame_set_, 0, nullptr);
-            const std::vector<grid::Sphere> spheres = grid::spheres(furnace_);
             for (size_t d = 0; d < scene_.draws.size(); ++d) {
                 const vkt::GltfDraw& draw = scene_.draws[d];
                 const vkt::GltfPrimitive& primitive = scene_.primitives[draw.primitive];
@@ -258,7 +258,7 @@ public:
                 vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, scene_layout_, 1, 1,
                                         &set, 0, nullptr);
                 // A glTF draw pushes its material's factors; a sphere its grid's.
-                const vkt::pbr::Material& m = spheres[model_ ? 0 : d].material;
+                const vkt::pbr::Material& m = spheres_[model_ ? 0 : d].material;
                 const DrawPush push =
                     model_
                         ? materials_->push(material, draw.world)
@@ -331,7 +331,9 @@ private:
     }
 
     vkt::Gpu gpu_;
-    bool furnace_, model_;
+    bool furnace_;
+    std::vector<grid::Sphere> spheres_;  // the grid's materials (or the furnace's one)
+    bool model_;
     std::string verify_;  // the check, or empty
     float exposure_;      // in stops (EV): the tone-mapping pass multiplies by 2^exposure_
     uint32_t tone_map_;   // 0: ACES, 1: clamp
