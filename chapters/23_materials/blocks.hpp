@@ -24,4 +24,6 @@ static_assert(sizeof(DrawPush) == 112, "at most 128 bytes of push constants are 
 struct TonemapPush {
     float exposure;     // a multiplier, 2^(--exposure)
     uint32_t tone_map;  // 0: ACES (Narkowicz's fit), 1: clamp
+    float bloom;        // how much of the bloom is mixed in (--bloom)
+    float levels;       // the bloom chain's levels
 };

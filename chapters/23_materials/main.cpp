@@ -10,6 +10,7 @@
 // scaled by the exposure and squeezed into 0..1 by a tone curve (ACES).
 
 #include "blocks.hpp"
+#include "bloom.hpp"
 #include "grid.hpp"
 #include "materials.hpp"
 #include "verify.hpp"
@@ -78,7 +79,9 @@ public:
           model_(context.options.has("--model")),
           verify_(context.options.has("--verify") ? context.options.text("--verify") : ""),
           exposure_(float(context.options.number("--exposure"))),
-          tone_map_(context.options.text("--tone-map") == "aces" ? 0 : 1) {
+          tone_map_(context.options.text("--tone-map") == "aces" ? 0 : 1),
+          bloom_strength_(float(context.options.number("--bloom"))),
+          bloom_(gpu_, context.chapter) {
         // [load]
         // A glTF file with every texture of the metallic-roughness model, or
         // the generated spheres, whose materials are the grid's numbers.
@@ -110,12 +113,15 @@ public:
             0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
             VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
         frame_layout_ = vkt::create_descriptor_set_layout(gpu_.device, {&frame_binding, 1});
-        // The tone-mapping pass's one input: the HDR image.
-        const VkDescriptorSetLayoutBinding hdr_binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                                       1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-        hdr_layout_ = vkt::create_descriptor_set_layout(gpu_.device, {&hdr_binding, 1});
+        // The tone-mapping pass's inputs: the HDR image, and the bloom.
+        const VkDescriptorSetLayoutBinding hdr_bindings[] = {
+            {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT,
+             nullptr},
+            {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT,
+             nullptr}};
+        hdr_layout_ = vkt::create_descriptor_set_layout(gpu_.device, hdr_bindings);
         const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                              {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+                                              {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}};
         pool_ = vkt::create_descriptor_pool(gpu_.device, 2, sizes);
         frame_set_ = vkt::allocate_descriptor_set(gpu_.device, pool_, frame_layout_);
         hdr_set_ = vkt::allocate_descriptor_set(gpu_.device, pool_, hdr_layout_);
@@ -176,20 +182,22 @@ public:
         // [check-format]
         VkFormatProperties properties;
         vkGetPhysicalDeviceFormatProperties(gpu_.physical, hdr_format, &properties);
-        const VkFormatFeatureFlags needed =
-            VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
+        const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT |
+                                            VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
+                                            VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT;  // the bloom's
         if ((properties.optimalTilingFeatures & needed) != needed)
-            throw vkt::Error("VK_FORMAT_R16G16B16A16_SFLOAT cannot be drawn into and sampled here");
+            throw vkt::Error(
+                "VK_FORMAT_R16G16B16A16_SFLOAT cannot be drawn into, sampled and stored to here");
         // [/check-format]
         resize(context.extent);
         std::fprintf(stderr,
                      "23_materials: %s, HDR target R16G16B16A16_SFLOAT, exposure %+.2f EV (x%.3f), "
-                     "tone map %s\n",
+                     "tone map %s, bloom %.2f\n",
                      model_     ? "a glTF model"
                      : furnace_ ? "the white furnace"
                                 : "the sphere grid",
                      double(exposure_), std::exp2(double(exposure_)),
-                     tone_map_ == 0 ? "ACES (Narkowicz's fit)" : "clamp");
+                     tone_map_ == 0 ? "ACES (Narkowicz's fit)" : "clamp", double(bloom_strength_));
     }
 
     // [overlay]
@@ -201,6 +209,7 @@ public:
         const char* const curves[] = {"ACES", "clamp"};
         int curve = int(tone_map_);
         if (panel.choice("Tone map", curve, curves)) tone_map_ = uint32_t(curve);
+        panel.slider("Bloom", bloom_strength_, 0.0f, 1.0f);
         if (panel.slider("Sky", sky_scale_, 0.0f, 4.0f)) {
             VKT_CHECK(vkDeviceWaitIdle(gpu_.device));
             write_frame_block();
@@ -223,6 +232,9 @@ public:
         vkt::write_image_descriptor(gpu_.device, hdr_set_, 0, hdr_.view, hdr_sampler_,
                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
         depth_ = vkt::create_depth_image(gpu_.physical, gpu_.device, depth_format_, extent);
+        bloom_.resize(extent, hdr_.view);
+        vkt::write_image_descriptor(gpu_.device, hdr_set_, 1, bloom_.level0(), bloom_.sampler(),
+                                    VK_IMAGE_LAYOUT_GENERAL);
         write_frame_block();
     }
 
@@ -230,12 +242,12 @@ public:
         const VkCommandBuffer cmd = frame.cmd;
         // [scene-pass]
         // The HDR image is redrawn each frame: after the last frame's
-        // tone-mapping pass has read it, its contents are thrown away.
-        vkt::image_barrier(cmd, hdr_.image, VK_IMAGE_LAYOUT_UNDEFINED,
-                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                           VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0,
-                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+        // tone-mapping pass (and bloom) have read it, its contents are thrown away.
+        vkt::image_barrier(
+            cmd, hdr_.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+            VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0,
+            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
         vkt::begin_depth_frame(cmd, depth_.image);
         const glm::vec3 sky = sky_scale_ * grid::sky(furnace_);
         {
@@ -274,13 +286,18 @@ public:
         // [/scene-pass]
 
         // [tonemap-pass]
-        // Colour writes to shader reads: the tone-mapping pass samples every
-        // pixel the scene pass wrote.
+        // Colour writes to shader reads: the tone-mapping pass (and the
+        // bloom's first compute pass) sample every pixel the scene pass wrote.
         vkt::image_barrier(
             cmd, hdr_.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-            VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+            VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+        if (bloom_strength_ > 0.0f) {
+            auto bloom_scope = frame.gpu_scope("bloom");
+            bloom_.record(cmd);
+        }
         auto scope = frame.gpu_scope("tone map");
         vkt::begin_colour_rendering(cmd, frame.target_view, frame.extent,
                                     VK_ATTACHMENT_LOAD_OP_DONT_CARE);
@@ -288,7 +305,8 @@ public:
         vkt::set_viewport_and_scissor(cmd, frame.extent);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemap_layout_, 0, 1,
                                 &hdr_set_, 0, nullptr);
-        const TonemapPush settings{std::exp2(exposure_), tone_map_};
+        const TonemapPush settings{std::exp2(exposure_), tone_map_, bloom_strength_,
+                                   float(bloom_.levels())};
         vkCmdPushConstants(cmd, tonemap_layout_, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof settings,
                            &settings);
         vkCmdDraw(cmd, 3, 1, 0, 0);
@@ -338,6 +356,8 @@ private:
     float exposure_;      // in stops (EV): the tone-mapping pass multiplies by 2^exposure_
     uint32_t tone_map_;   // 0: ACES, 1: clamp
     float sky_scale_ = 1.0f;
+    float bloom_strength_;  // 0: no bloom
+    Bloom bloom_;
     VkExtent2D extent_{};
     vkt::GltfScene scene_;
     std::optional<MaterialSets> materials_;
@@ -359,7 +379,10 @@ int main(int argc, char** argv) {
     vkt::ChapterSpec spec{.name = "23_materials",
                           .title = "23 - Physically based materials and HDR"};
     spec.overlay = true;  // in a window: the exposure, the tone curve and the sky, live
-    spec.requirements.features = {VKT_FEATURE_12(separateDepthStencilLayouts)};
+    // maintenance4, as chapter 13: glslang writes the bloom's workgroup size
+    // as LocalSizeId, which needs it (every Vulkan 1.3 device has it).
+    spec.requirements.features = {VKT_FEATURE_12(separateDepthStencilLayouts),
+                                  VKT_FEATURE_13(maintenance4)};
     spec.options = {
         {.name = "--exposure",
          .type = vkt::OptionType::number,
@@ -381,6 +404,13 @@ int main(int argc, char** argv) {
          .help = "grid: spheres, metallic x roughness; furnace: a white sphere under a white sky",
          .default_value = "grid",
          .choices = {"grid", "furnace"}},
+        {.name = "--bloom",
+         .type = vkt::OptionType::number,
+         .value_name = "F",
+         .help = "how much bloom (a blur in compute, mip by mip) is mixed in: 0 (off) to 1",
+         .default_value = "0",
+         .min = 0,
+         .max = 1},
         {.name = "--model",
          .type = vkt::OptionType::text,
          .value_name = "FILE",

@@ -8,7 +8,7 @@
 # instead, at --exposure 2 (x4): (0.2, 0.24, 0.36), stored (124, 134, 162).
 set(VKT_23_PIXEL PIXEL 0,0,59,69,92 319,239,59,69,92)
 vkt_chapter_test(chapter.23_materials 23_materials GOLDEN BLESS ${VKT_23_PIXEL} ARGS ${headless}
-  EXPECT "23_materials: the sphere grid, HDR target R16G16B16A16_SFLOAT, exposure \\+0.00 EV \\(x1.000\\), tone map ACES \\(Narkowicz's fit\\)")
+  EXPECT "23_materials: the sphere grid, HDR target R16G16B16A16_SFLOAT, exposure \\+0.00 EV \\(x1.000\\), tone map ACES \\(Narkowicz's fit\\), bloom 0.00")
 vkt_chapter_test(chapter.23_materials.offscreen 23_materials GOLDEN ${VKT_23_PIXEL} ARGS ${offscreen})
 vkt_chapter_window_test(23_materials PIXEL 0,0,59,69,92)
 vkt_chapter_test(chapter.23_materials.exposure 23_materials PIXEL 0,0,124,134,162
@@ -30,6 +30,13 @@ vkt_chapter_test(chapter.23_materials.furnace 23_materials GOLDEN_FILE 23_materi
   LABELS bless PIXEL 160,120,253,253,253,2 0,0,255,255,255
   ARGS ${headless} --scene furnace --tone-map clamp --verify furnace
   EXPECT "the white furnace" "verify furnace: [0-9]+ pixels from 0.9[7-9][0-9]+ to 1?[0-9.]+")
+
+# Bloom: the HDR image halved into mip levels and added back up in compute,
+# 30% of it mixed in; the spheres and their highlights glow. The HDR image
+# itself is untouched: the CPU reference still holds.
+vkt_chapter_test(chapter.23_materials.bloom 23_materials GOLDEN_FILE 23_materials_bloom.png
+  LABELS bless ARGS ${headless} --bloom 0.3 --verify cpu
+  EXPECT "bloom 0.30" "verify cpu: 60 points match the CPU reference")
 
 # A glTF file with every texture: assets/gltf/pbr_cubes.gltf, two cubes of
 # studs (normal map), polished metal studs on a rough dielectric checker
@@ -60,14 +67,16 @@ vkt_chapter_test(bad_input.23_materials.missing_model 23_materials EXIT 1
   ARGS --headless --frames 1 --model ${vkt_23_dir}/no_such_file.gltf EXPECT "no_such_file.gltf")
 
 vkt_chapter_test(chapter.23_materials.help 23_materials EXIT 0 ARGS --help
-  EXPECT "usage: 23_materials" "--exposure EV" "--tone-map CURVE" "--scene SCENE" "--model FILE"
-         "--verify CHECK")
+  EXPECT "usage: 23_materials" "--exposure EV" "--tone-map CURVE" "--scene SCENE" "--bloom F"
+         "--model FILE" "--verify CHECK")
 
 # Bad input: one clear line and exit status 2.
 vkt_chapter_test(bad_input.23_materials.exposure_range 23_materials EXIT 2 ARGS --exposure 11
   EXPECT "--exposure wants a number from -10 to 10, not '11'")
 vkt_chapter_test(bad_input.23_materials.exposure_word 23_materials EXIT 2 ARGS --exposure bright
   EXPECT "--exposure wants a number")
+vkt_chapter_test(bad_input.23_materials.bloom_range 23_materials EXIT 2 ARGS --bloom 2
+  EXPECT "--bloom wants a number from 0 to 1, not '2'")
 vkt_chapter_test(bad_input.23_materials.tone_map 23_materials EXIT 2 ARGS --tone-map reinhard
   EXPECT "--tone-map wants one of aces, clamp, not 'reinhard'")
 vkt_chapter_test(bad_input.23_materials.scene 23_materials EXIT 2 ARGS --scene box
@@ -80,10 +89,13 @@ vkt_chapter_test(bad_input.23_materials.verify_furnace 23_materials EXIT 2
   ARGS --verify furnace EXPECT "--verify furnace needs --scene furnace")
 vkt_chapter_test(bad_input.23_materials.verify_word 23_materials EXIT 2
   ARGS --verify all EXPECT "--verify wants one of cpu, furnace, not 'all'")
-# A device without the depth layouts the chapter's depth barrier uses: exit 1, named.
+# A device without the depth layouts the chapter's depth barrier uses, or
+# without maintenance4 (the bloom's LocalSizeId): exit 1, named.
 vkt_chapter_test(bad_input.23_materials.no_separate_depth_stencil 23_materials EXIT 1
   ARGS --headless --frames 1 ENV VKT_HIDE_FEATURES=separateDepthStencilLayouts
   EXPECT "separateDepthStencilLayouts")
+vkt_chapter_test(bad_input.23_materials.no_maintenance4 23_materials EXIT 1
+  ARGS --headless --frames 1 ENV VKT_HIDE_FEATURES=maintenance4 EXPECT "maintenance4")
 
 # The overlay in a window: one click on "clamp" changes the tone curve live.
 if(XVFB_RUN AND XDOTOOL AND OPENBOX AND TARGET imgui::imgui)
