@@ -28,8 +28,8 @@ def main() -> None:
             "direction v to the eye and l to the light, and the half vector h between them. D counts "
             "the facets facing h, G the ones neither hidden nor shadowed, F how much a facet "
             "reflects at the angle v.h. Right: the scene pass writes radiance into a 16-bit float "
-            "image, a barrier, then a full-screen pass multiplies by the exposure, applies the ACES "
-            "curve and writes the sRGB target.")
+            "image, a barrier, optionally the bloom's compute chain, then a full-screen pass "
+            "multiplies by the exposure, applies the ACES curve and writes the sRGB target.")
     s.text(20, 28, "At one point: n, v, l and the half vector h", size=14, bold=True)
     # The surface as a row of small facets, tilted this way and that.
     x0, y0 = 70, 300
@@ -63,6 +63,7 @@ def main() -> None:
                                  "COLOR_ATTACHMENT → SHADER_READ_ONLY barrier"],
           fill="#eee6fa", stroke=PURPLE, bold_first=True, size=12.5)
     s.line(760, y + 110, 760, y + 140, stroke=INK, width=1.6, arrow="end")
+    s.text(772, y + 130, "with --bloom: the compute chain blurs it here", size=11.5, fill=MUTED)
     s.box(560, y + 140, 400, 80, ["tone-mapping pass (one full-screen triangle)",
                                   "× 2^exposure, then the ACES curve: 0..1",
                                   "written to the _SRGB target, which encodes it"],

@@ -201,8 +201,8 @@ public:
     }
 
     // [overlay]
-    // In a window (chapter 21's overlay): the exposure and the curve are push
-    // constants, read by the next frame as they are; the sky is in the frame's
+    // In a window (chapter 21's overlay): the exposure, the curve and the
+    // bloom are push constants, read by the next frame as they are; the sky is in the frame's
     // uniform block, which waits for the GPU before it is rewritten.
     void overlay(vkt::OverlayPanel& panel) override {
         panel.slider("Exposure (EV)", exposure_, -6.0f, 6.0f);
