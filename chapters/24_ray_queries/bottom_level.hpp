@@ -1,0 +1,165 @@
+#pragma once
+// Chapter 24's bottom-level acceleration structures: one per mesh of the
+// scene, built from the shared vertex and index buffers by address, all in
+// one command, then compacted.
+
+#include "acceleration.hpp"
+
+#include "vkt/resources/align.hpp"
+#include "vkt/scene/meshes.hpp"
+
+#include <cstdio>
+#include <span>
+#include <vector>
+
+namespace ch24 {
+
+// What the bottom level's builds cost and saved, for the start-up line.
+struct BottomLevelReport {
+    VkDeviceSize built_bytes = 0, compacted_bytes = 0, scratch_bytes = 0;
+};
+
+inline std::vector<AccelerationStructure> build_bottom_levels(
+    const vkt::Gpu& gpu, const RayFunctions& ray, VkDeviceSize scratch_alignment,
+    std::span<const vkt::shapes::MeshRange> meshes, VkDeviceAddress vertices, uint32_t vertex_count,
+    VkDeviceAddress indices, BottomLevelReport& report) {
+    const size_t count = meshes.size();
+    // [geometry]
+    // Each mesh is one triangle geometry: positions (the first 12 bytes of
+    // every vertex) and 16-bit indices, read through their buffers' GPU
+    // addresses. OPAQUE: no any-hit work, every hit counts.
+    std::vector<VkAccelerationStructureGeometryKHR> geometries(count);
+    std::vector<VkAccelerationStructureBuildRangeInfoKHR> ranges(count);
+    for (size_t i = 0; i < count; ++i) {
+        geometries[i] = VkAccelerationStructureGeometryKHR{
+            .sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR,
+            .geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR,
+            .geometry =
+                {.triangles =
+                     {
+                         .sType =
+                             VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR,
+                         .vertexFormat = VK_FORMAT_R32G32B32_SFLOAT,
+                         .vertexData = {.deviceAddress = vertices},
+                         .vertexStride = sizeof(vkt::shapes::Vertex),
+                         .maxVertex = vertex_count - 1,
+                         .indexType = VK_INDEX_TYPE_UINT16,
+                         .indexData = {.deviceAddress =
+                                           indices + meshes[i].first_index * sizeof(uint16_t)},
+                     }},
+            .flags = VK_GEOMETRY_OPAQUE_BIT_KHR,
+        };
+        ranges[i] = {.primitiveCount = meshes[i].index_count / 3};
+    }
+    // [/geometry]
+
+    // [sizes]
+    // How big each structure and its scratch space must be: a question
+    // asked of the device, which alone knows its layout. ALLOW_COMPACTION,
+    // so that it can later tell how small the finished structure can be.
+    std::vector<VkAccelerationStructureBuildGeometryInfoKHR> builds(count);
+    std::vector<AccelerationStructure> built(count);
+    std::vector<VkDeviceSize> scratch_offsets(count);
+    VkDeviceSize scratch_size = 0;
+    for (size_t i = 0; i < count; ++i) {
+        builds[i] = VkAccelerationStructureBuildGeometryInfoKHR{
+            .sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR,
+            .type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
+            .flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
+                     VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR,
+            .mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR,
+            .geometryCount = 1,
+            .pGeometries = &geometries[i],
+        };
+        VkAccelerationStructureBuildSizesInfoKHR sizes{
+            .sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
+        ray.build_sizes(gpu.device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &builds[i],
+                        &ranges[i].primitiveCount, &sizes);
+        built[i] = AccelerationStructure(gpu, ray, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
+                                         sizes.accelerationStructureSize);
+        builds[i].dstAccelerationStructure = built[i].get();
+        report.built_bytes += sizes.accelerationStructureSize;
+        // The builds run at once, each in its own part of one scratch
+        // buffer, whose start must be a multiple of the device's
+        // minAccelerationStructureScratchOffsetAlignment.
+        scratch_offsets[i] = vkt::align_up(scratch_size, scratch_alignment);
+        scratch_size = scratch_offsets[i] + sizes.buildScratchSize;
+    }
+    // [/sizes]
+    report.scratch_bytes = scratch_size;
+    AddressBuffer scratch = create_address_buffer(
+        gpu, vkt::align_up(scratch_size, scratch_alignment) + scratch_alignment,
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+    const VkDeviceAddress scratch_base = vkt::align_up(scratch.address, scratch_alignment);
+    for (size_t i = 0; i < count; ++i)
+        builds[i].scratchData.deviceAddress = scratch_base + scratch_offsets[i];
+
+    const VkQueryPoolCreateInfo pool_info{
+        .sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO,
+        .queryType = VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR,
+        .queryCount = uint32_t(count),
+    };
+    VkQueryPool raw_pool;
+    VKT_CHECK(vkCreateQueryPool(gpu.device, &pool_info, nullptr, &raw_pool));
+    const vkt::QueryPool pool(gpu.device, raw_pool);
+
+    // [build]
+    // One command builds them all. The compacted size is known only once a
+    // build has finished: a barrier (build writes before the query's read),
+    // then the query.
+    std::vector<VkAccelerationStructureKHR> handles(count);
+    std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> range_pointers(count);
+    for (size_t i = 0; i < count; ++i) {
+        handles[i] = built[i].get();
+        range_pointers[i] = &ranges[i];
+    }
+    const VkMemoryBarrier2 built_barrier{
+        .sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+        .srcStageMask = VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+        .srcAccessMask = VK_ACCESS_2_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
+        .dstStageMask = VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+        .dstAccessMask = VK_ACCESS_2_ACCELERATION_STRUCTURE_READ_BIT_KHR,
+    };
+    const VkDependencyInfo after_build{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
+                                       .memoryBarrierCount = 1,
+                                       .pMemoryBarriers = &built_barrier};
+    vkt::one_time_submit(gpu, [&](VkCommandBuffer cmd) {
+        ray.cmd_build(cmd, uint32_t(count), builds.data(), range_pointers.data());
+        vkCmdPipelineBarrier2(cmd, &after_build);
+        vkCmdResetQueryPool(cmd, pool, 0, uint32_t(count));
+        ray.cmd_write_properties(cmd, uint32_t(count), handles.data(),
+                                 VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, pool, 0);
+    });
+    std::vector<VkDeviceSize> compacted_sizes(count);
+    VKT_CHECK(vkGetQueryPoolResults(
+        gpu.device, pool, 0, uint32_t(count), count * sizeof(VkDeviceSize), compacted_sizes.data(),
+        sizeof(VkDeviceSize), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    // [/build]
+
+    // [compact]
+    // Compaction: a structure of exactly the compacted size, the built one
+    // copied into it (mode COMPACT), and the built one destroyed.
+    std::vector<AccelerationStructure> compacted(count);
+    for (size_t i = 0; i < count; ++i) {
+        compacted[i] = AccelerationStructure(
+            gpu, ray, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, compacted_sizes[i]);
+        report.compacted_bytes += compacted_sizes[i];
+    }
+    vkt::one_time_submit(gpu, [&](VkCommandBuffer cmd) {
+        vkCmdPipelineBarrier2(cmd, &after_build);
+        for (size_t i = 0; i < count; ++i) {
+            const VkCopyAccelerationStructureInfoKHR copy{
+                .sType = VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_INFO_KHR,
+                .src = built[i].get(),
+                .dst = compacted[i].get(),
+                .mode = VK_COPY_ACCELERATION_STRUCTURE_MODE_COMPACT_KHR,
+            };
+            ray.cmd_copy(cmd, &copy);
+        }
+    });
+    built.clear();  // the copies are finished (one_time_submit waited): destroy the originals
+    // [/compact]
+    return compacted;
+}
+
+}  // namespace ch24

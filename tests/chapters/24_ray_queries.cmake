@@ -1,0 +1,84 @@
+# Chapter 24: chapter 22's scene and light, its shadows found by ray queries
+# through an acceleration structure (--shadows rays, the default), by a
+# shadow map (--shadows map), or both compared (--shadows compare).
+#
+# Hand-worked pixels: chapter 22's, for the same camera, light and floor (see
+# tests/chapters/22_shadows.cmake): the sky corner (179, 203, 231); the lit
+# floor point (2, 0, 4) at (272, 228), (214, 214, 208); the floor point
+# (2.1, 0, 1.325) at (235, 166), whose ray to the light passes through the
+# centre of the right front pillar, in shadow (111, 111, 108). The sphere and
+# torus move, but neither comes near those two rays.
+set(VKT_24_PIXEL PIXEL 0,0,179,203,231 272,228,214,214,208,2 235,166,111,111,108,2)
+vkt_chapter_test(chapter.24_ray_queries 24_ray_queries GOLDEN BLESS ${VKT_24_PIXEL}
+  ARGS ${headless}
+  EXPECT "24_ray_queries: shadows rays, top level updated; 4 bottom levels .* KiB built, .* KiB compacted \\([0-9]+% saved\\)"
+         "top level 19 instances")
+vkt_chapter_test(chapter.24_ray_queries.offscreen 24_ray_queries GOLDEN ${VKT_24_PIXEL}
+  ARGS ${offscreen})
+vkt_chapter_window_test(24_ray_queries PIXEL 0,0,179,203,231)
+# Rebuilding the top level each frame instead of refitting it: the same
+# picture, to the bit (both structures hold the same triangles).
+vkt_chapter_test(chapter.24_ray_queries.rebuild 24_ray_queries GOLDEN EXACT ${VKT_24_PIXEL}
+  ARGS ${headless} --tlas rebuild EXPECT "top level rebuilt")
+# Later, the sphere has risen 0.29 and the torus turned 0.65 radians: the
+# rebuilt structure's picture is the reference (its own golden), and the
+# refitted one must equal it, so a top level left behind by the moving
+# objects would show as shadows where they were.
+vkt_chapter_test(chapter.24_ray_queries.moved_rebuild 24_ray_queries
+  GOLDEN_FILE 24_ray_queries_frame40.png LABELS bless ${VKT_24_PIXEL}
+  ARGS --headless --validation --frames 40 --size ${VKT_TEST_SIZE} --tlas rebuild)
+vkt_chapter_test(chapter.24_ray_queries.moved_update 24_ray_queries
+  GOLDEN_FILE 24_ray_queries_frame40.png EXACT ${VKT_24_PIXEL}
+  ARGS --headless --validation --frames 40 --size ${VKT_TEST_SIZE} --tlas update)
+# The shadow map: the same hand-worked pixels, its own golden, and against the
+# rays' picture the two methods agree on all but a few pixels: at most 2% of
+# the pixels differ by more than 24 in a channel (lavapipe: 0.82%, the edges
+# of shadows, where the map's texels and filtering blur what the rays find
+# exactly), and the RMSE is at most 8 (lavapipe: 4.3).
+vkt_chapter_test(chapter.24_ray_queries.map 24_ray_queries GOLDEN_FILE 24_ray_queries_map.png
+  LABELS bless ${VKT_24_PIXEL} ARGS ${headless} --shadows map EXPECT "shadows map")
+vkt_chapter_test(chapter.24_ray_queries.map_agrees 24_ray_queries GOLDEN TOLERANCE 8,24,0.02
+  ${VKT_24_PIXEL} ARGS ${headless} --shadows map)
+# And the two do differ: under the ordinary tolerance of a golden test
+# (0.2% of the pixels), the map's picture fails against the rays' golden, so
+# the comparison above can fail, and does not bless (LABELS chapter only).
+add_test(NAME chapter.24_ray_queries.map_differs
+  COMMAND vkt_chapter_check --exe $<TARGET_FILE:24_ray_queries> --out ${VKT_TEST_OUTPUT}
+          --name chapter.24_ray_queries.map_differs --golden ${VKT_GOLDEN_DIR}/24_ray_queries.png
+          --tolerance 2,24,0.002 -- ${headless} --shadows map)
+set_tests_properties(chapter.24_ray_queries.map_differs PROPERTIES
+  ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS chapter
+  PASS_REGULAR_EXPRESSION "FAIL: picture differs from .*24_ray_queries\\.png")
+# The comparison the page shows: grey where the two agree, red where only the
+# map shadows, blue where only the rays do. The sky is the clear colour.
+vkt_chapter_test(chapter.24_ray_queries.compare 24_ray_queries
+  GOLDEN_FILE 24_ray_queries_compare.png LABELS bless PIXEL 0,0,179,203,231
+  ARGS ${headless} --shadows compare EXPECT "shadows compare")
+# Many moving instances (the benchmark's --crowd): far behind the pillars,
+# they leave the hand-worked pixels as they were.
+vkt_chapter_test(chapter.24_ray_queries.crowd 24_ray_queries ${VKT_24_PIXEL}
+  ARGS --headless --validation --frames 3 --size ${VKT_TEST_SIZE} --crowd 256
+  EXPECT "top level 275 instances")
+vkt_chapter_test(chapter.24_ray_queries.help 24_ray_queries EXIT 0 ARGS --help
+  EXPECT "usage: 24_ray_queries" "--shadows HOW" "--tlas HOW" "--crowd N")
+
+# A device without ray queries (the H100's driver offers acceleration
+# structures and ray-tracing pipelines but not VK_KHR_ray_query), or without
+# what the structures need: one line naming what it lacks, exit status 1.
+foreach(missing VK_KHR_ray_query VK_KHR_acceleration_structure VK_KHR_deferred_host_operations)
+  vkt_chapter_test(bad_input.24_ray_queries.no_${missing} 24_ray_queries EXIT 1
+    ARGS --headless --frames 1 ENV VKT_HIDE_FEATURES=${missing}
+    EXPECT "no Vulkan device can run this chapter; .* lacks the extension ${missing} \\(hidden by VKT_HIDE_FEATURES\\)")
+endforeach()
+vkt_chapter_test(bad_input.24_ray_queries.no_bufferDeviceAddress 24_ray_queries EXIT 1
+  ARGS --headless --frames 1 ENV VKT_HIDE_FEATURES=bufferDeviceAddress
+  EXPECT "no Vulkan device can run this chapter; .* lacks the bufferDeviceAddress feature")
+# Bad input: one clear line and exit status 2.
+vkt_chapter_test(bad_input.24_ray_queries.bad_shadows 24_ray_queries EXIT 2 ARGS --shadows maps
+  EXPECT "--shadows wants one of map, rays, compare, not 'maps'")
+vkt_chapter_test(bad_input.24_ray_queries.bad_tlas 24_ray_queries EXIT 2 ARGS --tlas refit
+  EXPECT "--tlas wants one of update, rebuild, not 'refit'")
+vkt_chapter_test(bad_input.24_ray_queries.bad_crowd 24_ray_queries EXIT 2 ARGS --crowd 16385
+  EXPECT "--crowd wants a whole number from 0 to 16384, not '16385'")
+vkt_chapter_test(bad_input.24_ray_queries.crowd_word 24_ray_queries EXIT 2 ARGS --crowd many
+  EXPECT "--crowd wants a whole number")
