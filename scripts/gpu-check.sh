@@ -53,6 +53,26 @@ if [ -x "$bin/16_deferred" ]; then
     [ $rc -eq 0 ] || status=1
   done
 fi
+# Chapter 26: the meshlet view and chapter 15's indirect draw against their
+# lavapipe references, and the task shader's culled counts beside the CPU's
+# for the same view (they must agree; lavapipe: 65 of 389, all facing away).
+if [ -x "$bin/26_mesh_shaders" ]; then
+  m26="--headless --validation --frames 10 --size 320x240"
+  for v in "meshlets|tests/golden/26_mesh_shaders_meshlets.png|--view meshlets" \
+           "indirect|tests/golden/26_mesh_shaders.png|--draw indirect" \
+           "turn_30|tests/golden/26_mesh_shaders.png|--turn 30"; do
+    IFS='|' read -r name golden extra <<<"$v"
+    [ "$name" = turn_30 ] && golden=""  # counts only: the picture is not blessed
+    if [ -n "$golden" ]; then
+      check "26_mesh_shaders.$name" 26_mesh_shaders "$golden" "--pixel 0,0,196,206,218,1" "$m26 $extra"; rc=$?
+    else
+      "$bin/26_mesh_shaders" $m26 $extra >"$out/gpu.26_mesh_shaders.$name.stderr" 2>&1; rc=$?
+    fi
+    echo "26_mesh_shaders $extra: exit $rc; $(grep -h -E '^picture|^FAIL' "$out/gpu.26_mesh_shaders.$name.check.txt" 2>/dev/null | tr '\n' ' ')"
+    [ $rc -eq 0 ] || status=1
+  done
+  grep -h -E "culled|the CPU culls|submitted" "$out"/gpu.26_mesh_shaders*.stderr
+fi
 frames=${BENCH_FRAMES:-2000}
 echo "benchmarks (1280x720, $frames frames, validation off):"
 benchmarks/run.sh "$bin" "$frames" 1280x720 | tee "$out/benchmarks.jsonl"
@@ -82,4 +102,5 @@ fi
 [ -x "$bin/20_ndim_compute" ] && sweep 20_ndim_compute benchmarks/20_ndim_compute.sh "$bin" 1 offscreen
 [ -x "$bin/21_multisampling" ] && sweep 21_multisampling benchmarks/21_multisampling.sh "$bin"
 [ -x "$bin/22_shadows" ] && sweep 22_shadows benchmarks/22_shadows.sh "$bin"
+[ -x "$bin/26_mesh_shaders" ] && sweep 26_mesh_shaders benchmarks/26_mesh_shaders.sh "$bin"
 exit $status

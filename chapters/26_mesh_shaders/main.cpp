@@ -10,6 +10,7 @@
 // --draw indirect draws the same model chapter 15's way, for the comparison
 // the book measures; --view meshlets colours each meshlet.
 
+#include "mesh_pipeline.hpp"
 #include "meshlets.hpp"
 
 #include "vkt/core/check.hpp"
@@ -212,7 +213,10 @@ public:
                                                         .color_formats = {context.color_format},
                                                         .depth_format = depth_format_});
         } else {
-            pipeline_ = create_mesh_pipeline(context, fragment);
+            vkt::ShaderModule task = vkt::load_shader(device_, context.chapter, "meshlets.task");
+            vkt::ShaderModule mesh = vkt::load_shader(device_, context.chapter, "meshlets.mesh");
+            pipeline_ = ch26::create_mesh_pipeline(device_, layout_, task, mesh, fragment,
+                                                   context.color_format, depth_format_);
         }
 
         // [load-draw]
@@ -305,95 +309,6 @@ public:
     }
 
 private:
-    // [mesh-pipeline]
-    // A graphics pipeline whose geometry stages are a task and a mesh shader:
-    // no vertex input state and no input assembly state (the mesh shader
-    // makes the primitives); the rest is as for any pipeline.
-    vkt::Pipeline create_mesh_pipeline(const vkt::Context& context, VkShaderModule fragment) {
-        vkt::ShaderModule task = vkt::load_shader(device_, context.chapter, "meshlets.task");
-        vkt::ShaderModule mesh = vkt::load_shader(device_, context.chapter, "meshlets.mesh");
-        const VkPipelineShaderStageCreateInfo stages[] = {
-            {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
-             .stage = VK_SHADER_STAGE_TASK_BIT_EXT,
-             .module = task,
-             .pName = "main"},
-            {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
-             .stage = VK_SHADER_STAGE_MESH_BIT_EXT,
-             .module = mesh,
-             .pName = "main"},
-            {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
-             .stage = VK_SHADER_STAGE_FRAGMENT_BIT,
-             .module = fragment,
-             .pName = "main"},
-        };
-        const VkPipelineViewportStateCreateInfo viewport{
-            .sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO,
-            .viewportCount = 1,
-            .scissorCount = 1,
-        };
-        // Back faces still culled per triangle, after the task shader's
-        // per-meshlet cull (which catches only meshlets wholly facing away).
-        const VkPipelineRasterizationStateCreateInfo raster{
-            .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
-            .polygonMode = VK_POLYGON_MODE_FILL,
-            .cullMode = VK_CULL_MODE_BACK_BIT,
-            .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
-            .lineWidth = 1.0f,
-        };
-        const VkPipelineMultisampleStateCreateInfo multisample{
-            .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
-            .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT,
-        };
-        const VkPipelineDepthStencilStateCreateInfo depth{
-            .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
-            .depthTestEnable = VK_TRUE,
-            .depthWriteEnable = VK_TRUE,
-            .depthCompareOp = VK_COMPARE_OP_LESS,
-        };
-        const VkPipelineColorBlendAttachmentState blend_attachment{
-            .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                              VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT,
-        };
-        const VkPipelineColorBlendStateCreateInfo blend{
-            .sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
-            .attachmentCount = 1,
-            .pAttachments = &blend_attachment,
-        };
-        const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT,
-                                                 VK_DYNAMIC_STATE_SCISSOR};
-        const VkPipelineDynamicStateCreateInfo dynamic{
-            .sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
-            .dynamicStateCount = 2,
-            .pDynamicStates = dynamic_states,
-        };
-        const VkFormat colour_format = context.color_format;
-        const VkPipelineRenderingCreateInfo rendering{
-            .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-            .colorAttachmentCount = 1,
-            .pColorAttachmentFormats = &colour_format,
-            .depthAttachmentFormat = depth_format_,
-        };
-        const VkGraphicsPipelineCreateInfo info{
-            .sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
-            .pNext = &rendering,
-            .stageCount = 3,
-            .pStages = stages,
-            .pVertexInputState = nullptr,    // ignored with a mesh shader
-            .pInputAssemblyState = nullptr,  // likewise
-            .pViewportState = &viewport,
-            .pRasterizationState = &raster,
-            .pMultisampleState = &multisample,
-            .pDepthStencilState = &depth,
-            .pColorBlendState = &blend,
-            .pDynamicState = &dynamic,
-            .layout = layout_,
-        };
-        VkPipeline pipeline;
-        VKT_CHECK(vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-        return vkt::Pipeline(device_, pipeline);
-    }
-    // [/mesh-pipeline]
-
     VkPhysicalDevice physical_;
     VkDevice device_;
     bool indirect_ = false;
@@ -420,8 +335,8 @@ private:
 }  // namespace
 
 int main(int argc, char** argv) {
-    // [spec]
     vkt::ChapterSpec spec{.name = "26_mesh_shaders", .title = "26 - mesh shaders"};
+    // [device]
     // The extension, and its two features: turned on through the feature
     // struct of the extension, linked into vkCreateDevice's pNext chain.
     static VkPhysicalDeviceMeshShaderFeaturesEXT mesh_features{
@@ -436,7 +351,8 @@ int main(int argc, char** argv) {
     // which needs maintenance4 (core in Vulkan 1.3, but a feature to turn on).
     spec.requirements.features = {VKT_FEATURE_12(separateDepthStencilLayouts),
                                   VKT_FEATURE_13(maintenance4)};
-    // [/spec]
+    // [/device]
+    // [options]
     spec.options = {
         {.name = "--draw",
          .type = vkt::OptionType::choice,
@@ -472,6 +388,7 @@ int main(int argc, char** argv) {
                 "--view meshlets needs --draw mesh: the indirect draw has no "
                 "meshlets");
     };
+    // [/options]
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
         return std::make_unique<MeshShaders>(context);
     });
