@@ -163,6 +163,14 @@ public:
         // The buffers both pipelines read (chapter 13's storage buffers), the
         // index buffer and the one indirect command of --draw indirect.
         const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+        const VkDeviceSize largest =
+            std::max(vertices.size() * sizeof(GpuVertex), built.vertices.size() * sizeof(uint32_t));
+        if (largest > context.properties.limits.maxStorageBufferRange)
+            throw vkt::Error(path + ": its vertices need a storage buffer of " +
+                             std::to_string(largest) +
+                             " bytes, more than this device's "
+                             "maxStorageBufferRange (" +
+                             std::to_string(context.properties.limits.maxStorageBufferRange) + ")");
         buffers_.push_back(vkt::create_device_buffer(gpu, vertices.data(),
                                                      vertices.size() * sizeof(GpuVertex), storage));
         buffers_.push_back(vkt::create_device_buffer(
