@@ -164,28 +164,35 @@ void Solver::solve_contacts(const SolverSettings& s, float h, bool soft) {
 // [/solve-contacts]
 
 // [restitution]
-constexpr int kRestitutionPasses = 4;
+constexpr int kRestitutionPasses = 16;
 // After the sub-steps: a point that was closing faster than the threshold
 // when the step began, and that did touch (a speculative point that never
 // got an impulse did not), leaves at e times that speed.
 void Solver::restitution(const SolverSettings& s) {
     if (s.restitution == 0.0f) return;
-    // Several passes, as for any impulse: one pass over a face's four points
-    // would give the first point the most and set the box spinning.
+    // Only the points that bounce (few: those hit this step) take part.
+    bouncing_.clear();
+    for (uint32_t i = 0; i < uint32_t(contacts_.size()); ++i)
+        for (uint32_t k = 0; k < contacts_[i].count; ++k) {
+            const Point& p = points_[contacts_[i].first + k];
+            if (p.approach < -s.restitution_threshold && p.most_impulse > 0.0f)
+                bouncing_.push_back({i, contacts_[i].first + k});
+        }
+    // Many passes, as for any impulse solved point by point: a box landing
+    // on an edge or three corners needs them to give each point e (four
+    // passes left a three-corner landing 25% off), and they cost little.
     for (int pass = 0; pass < kRestitutionPasses; ++pass)
-        for (const Contact& c : contacts_) {
+        for (const auto& [contact, point] : bouncing_) {
+            const Contact& c = contacts_[contact];
             State& a = states_[c.a];
             State& b = states_[c.b];
-            for (uint32_t k = 0; k < c.count; ++k) {
-                Point& p = points_[c.first + k];
-                if (p.approach > -s.restitution_threshold || p.most_impulse == 0.0f) continue;
-                Row& n = p.normal;
-                const float velocity = velocity_along(a, b, n, c.normal);
-                const float change = -n.mass * (velocity + s.restitution * p.approach);
-                const float normal = std::max(n.impulse + change, 0.0f);
-                apply(a, b, n, c.normal, normal - n.impulse);
-                n.impulse = normal;
-            }
+            Point& p = points_[point];
+            Row& n = p.normal;
+            const float velocity = velocity_along(a, b, n, c.normal);
+            const float change = -n.mass * (velocity + s.restitution * p.approach);
+            const float normal = std::max(n.impulse + change, 0.0f);
+            apply(a, b, n, c.normal, normal - n.impulse);
+            n.impulse = normal;
         }
 }
 // [/restitution]

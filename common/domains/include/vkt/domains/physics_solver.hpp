@@ -15,6 +15,7 @@
 #include "vkt/domains/physics_collision.hpp"
 
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace vkt::physics {
@@ -89,6 +90,7 @@ private:
     std::vector<glm::mat3> inverse_inertias_;  // world space, fixed for the step
     std::vector<Contact> contacts_;
     std::vector<Point> points_;
+    std::vector<std::pair<uint32_t, uint32_t>> bouncing_;  // (contact, point) that bounce this step
     Softness soft_{}, soft_static_{};
 };
 
