@@ -53,6 +53,17 @@ if [ -x "$bin/16_deferred" ]; then
     [ $rc -eq 0 ] || status=1
   done
 fi
+# Chapter 25 lays its shader binding table out by the device's alignments and
+# caps its recursion by the device's maxRayRecursionDepth: both lines, and the
+# picture without reflections against its own lavapipe golden.
+if [ -x "$bin/25_ray_tracing" ]; then
+  grep -h -E '^25_ray_tracing: (shader binding table|[0-9]+ bounces)' "$out/gpu.25_ray_tracing.stderr"
+  check 25_ray_tracing.no_bounces 25_ray_tracing tests/golden/25_ray_tracing_no_bounces.png \
+    "--pixel 0,0,214,227,242,2 --pixel 72,168,57,57,55,2 --pixel 160,112,174,174,174,3" \
+    "--offscreen --validation --frames 10 --size 320x240 --bounces 0"; rc=$?
+  echo "25_ray_tracing --bounces 0 picture vs lavapipe golden: exit $rc; $(grep -h -E '^picture|^FAIL' "$out/gpu.25_ray_tracing.no_bounces.check.txt" | tr '\n' ' ')"
+  [ $rc -eq 0 ] || status=1
+fi
 # Chapter 26: the meshlet view and chapter 15's indirect draw against their
 # lavapipe references, and the task shader's culled counts beside the CPU's
 # for the same view (they must agree; lavapipe: 65 of 389, all facing away).

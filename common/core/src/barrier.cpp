@@ -35,4 +35,17 @@ void image_barrier(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceR
     vkCmdPipelineBarrier2(cmd, &dependency);
 }
 
+void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                    VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+    const VkMemoryBarrier2 barrier{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                                   .srcStageMask = src_stage,
+                                   .srcAccessMask = src_access,
+                                   .dstStageMask = dst_stage,
+                                   .dstAccessMask = dst_access};
+    const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
+                                      .memoryBarrierCount = 1,
+                                      .pMemoryBarriers = &barrier};
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
 }  // namespace vkt

@@ -1,5 +1,6 @@
 #include "vkt/resources/upload.hpp"
 
+#include "vkt/core/barrier.hpp"
 #include "vkt/core/check.hpp"
 
 #include <cstring>
@@ -55,19 +56,8 @@ void upload_to_buffer(const Gpu& gpu, VkBuffer buffer, const void* data, VkDevic
         // Waiting for the fence tells the CPU the copy is done, but it is no
         // memory dependency for later GPU work: this barrier makes the copy
         // visible to any read by any later command on the queue.
-        VkMemoryBarrier2 barrier{
-            .sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-            .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
-            .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
-            .dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-            .dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT,
-        };
-        VkDependencyInfo dependency{
-            .sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
-            .memoryBarrierCount = 1,
-            .pMemoryBarriers = &barrier,
-        };
-        vkCmdPipelineBarrier2(cmd, &dependency);
+        memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
     });
 }
 

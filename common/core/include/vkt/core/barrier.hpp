@@ -20,4 +20,10 @@ void image_barrier(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceR
                    VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
                    VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access);
 
+// A global barrier, over all memory rather than one resource: what an upload
+// (chapter 05), a read-back to the host (chapter 16) and an acceleration
+// structure's build (chapter 24) need before the next command reads.
+void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                    VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access);
+
 }  // namespace vkt
