@@ -53,6 +53,26 @@ if [ -x "$bin/16_deferred" ]; then
     [ $rc -eq 0 ] || status=1
   done
 fi
+# Chapter 23: the sphere grid against the CPU reference, the white furnace,
+# and the glTF model's and the bloom's pictures against their lavapipe goldens.
+if [ -x "$bin/23_materials" ]; then
+  for v in "cpu" "furnace --scene furnace"; do
+    # shellcheck disable=SC2086  # the check and its scene are words
+    "$bin/23_materials" --offscreen --validation --frames 10 --size 320x240 --verify $v \
+      >"$out/23_materials.verify_${v%% *}.txt" 2>&1; rc=$?
+    echo "23_materials --verify $v: exit $rc; $(grep -h -i -E 'verify|error' "$out/23_materials.verify_${v%% *}.txt" | tail -n 2 | tr '\n' ' ')"
+    [ $rc -eq 0 ] || status=1
+  done
+  # NAME|PIXELS|ARGS, as tests/chapters/23_materials.cmake has them (the bloom
+  # lights the corner a little: no hand-worked pixel there).
+  for run in "model|--pixel 0,0,59,69,92|--model assets/gltf/pbr_cubes.gltf" "bloom||--bloom 0.3"; do
+    IFS='|' read -r name pixels extra <<<"$run"
+    check "23_materials.$name" 23_materials "tests/golden/23_materials_$name.png" "$pixels" \
+      "--headless --validation --frames 10 --size 320x240 $extra"; rc=$?
+    echo "23_materials $extra picture vs lavapipe golden: exit $rc; $(grep -h -E '^picture|^FAIL' "$out/gpu.23_materials.$name.check.txt" | tr '\n' ' ')"
+    [ $rc -eq 0 ] || status=1
+  done
+fi
 # Chapter 25 lays its shader binding table out by the device's alignments and
 # caps its recursion by the device's maxRayRecursionDepth: both lines, and the
 # picture without reflections against its own lavapipe golden.

@@ -27,13 +27,14 @@ namespace {
 
 class Loader {
 public:
-    Loader(std::filesystem::path path, uint64_t max_memory)
-        : path_(std::move(path)), budget_(max_memory) {}
+    Loader(std::filesystem::path path, uint64_t max_memory, GltfMaterials materials)
+        : path_(std::move(path)), budget_(max_memory), materials_(materials) {}
 
     GltfScene load() {
         model_ = gltf_detail::parse_gltf_file(path_, budget_);
         check_extensions();
-        load_materials();
+        gltf_detail::load_materials(model_, path_, data_, budget_, materials_, scene_,
+                                    [this](const std::string& what) { warn(what); });
         walk_nodes();
         if (scene_.draws.empty()) {
             // Say why: what was skipped is often the reason nothing is left
@@ -68,98 +69,6 @@ private:
             warn("animations are not supported: the scene stands still");
         if (!model_.cameras.empty())
             warn("cameras are ignored: the chapter frames the scene itself");
-    }
-
-    // --- Materials and images ---------------------------------------------
-    void load_materials() {
-        for (size_t m = 0; m < model_.materials.size(); ++m) {
-            const tinygltf::Material& source = model_.materials[m];
-            const std::string what = "material " + std::to_string(m);
-            const std::vector<double>& f = source.pbrMetallicRoughness.baseColorFactor;
-            if (f.size() != 4)
-                fail(what + ": baseColorFactor has " + std::to_string(f.size()) +
-                     " numbers, not 4");
-            GltfMaterial material;
-            material.base_color_factor =
-                glm::vec4(float(f[0]), float(f[1]), float(f[2]), float(f[3]));
-            const tinygltf::TextureInfo& info = source.pbrMetallicRoughness.baseColorTexture;
-            if (info.index >= 0) {
-                if (size_t(info.index) >= model_.textures.size())
-                    fail(what + ": baseColorTexture " + std::to_string(info.index) +
-                         " does not exist");
-                if (info.texCoord != 0)
-                    warn("a baseColorTexture uses TEXCOORD_" + std::to_string(info.texCoord) +
-                         ": only TEXCOORD_0 is read, so it is drawn with TEXCOORD_0");
-                const tinygltf::Texture& texture = model_.textures[size_t(info.index)];
-                if (texture.source < 0) {
-                    warn(
-                        "a texture has no PNG or JPEG source (an extension's image?): drawn "
-                        "untextured");
-                } else {
-                    material.base_color_image = image(texture.source);
-                }
-                check_sampler(texture.sampler);
-            }
-            if (source.normalTexture.index >= 0 || source.occlusionTexture.index >= 0 ||
-                source.emissiveTexture.index >= 0 ||
-                source.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0)
-                warn(
-                    "normal, occlusion, emissive and metallic-roughness textures are ignored "
-                    "(lighting is chapter 12's)");
-            if (source.alphaMode == "BLEND" || source.alphaMode == "MASK")
-                warn("alphaMode " + source.alphaMode +
-                     " is ignored: every material is drawn opaque");
-            scene_.materials.push_back(material);
-        }
-    }
-
-    void check_sampler(int index) {
-        if (index < 0) return;
-        if (size_t(index) >= model_.samplers.size())
-            fail("sampler " + std::to_string(index) + " does not exist");
-        const tinygltf::Sampler& s = model_.samplers[size_t(index)];
-        if (s.wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT || s.wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT)
-            warn(
-                "samplers are not mapped: every texture repeats and filters linearly, with "
-                "mipmaps");
-    }
-
-    // Decodes glTF image `index` once; returns its index in scene_.images.
-    int32_t image(int index) {
-        if (size_t(index) >= model_.images.size())
-            fail("image " + std::to_string(index) + " does not exist");
-        if (auto found = image_slots_.find(index); found != image_slots_.end())
-            return found->second;
-        const tinygltf::Image& source = model_.images[size_t(index)];
-        // "image 2", "image 2 (\"bricks\")", "image 2 (bricks.png)", "image 2 (\"bricks\",
-        // bricks.png)"
-        const bool file = !source.uri.empty() && source.uri.rfind("data:", 0) != 0;
-        std::string what = path_.string() + ": image " + std::to_string(index);
-        if (!source.name.empty() || file)
-            what += " (" + (source.name.empty() ? "" : "\"" + printable(source.name, 60) + "\"") +
-                    (source.name.empty() || !file ? "" : ", ") +
-                    (file ? printable(source.uri) : "") + ")";
-        RgbaImage decoded;
-        if (source.bufferView >= 0) {
-            std::span<const uint8_t> bytes =
-                data_.view_bytes(source.bufferView, "image " + std::to_string(index));
-            decoded = decode_image(bytes, what, budget_);
-        } else if (!source.image.empty()) {
-            decoded = decode_image(source.image, what, budget_);
-        } else if (!source.uri.empty() && source.uri.rfind("data:", 0) != 0) {
-            // The file was not there, or empty: a file refused (outside the
-            // folder, too large) has already failed in parse_gltf_file.
-            fail("image " + std::to_string(index) + " (" + printable(source.uri) +
-                 "): cannot open it, or it is empty");
-        } else {
-            fail("image " + std::to_string(index) + " has no data (an unsupported data: URI?)");
-        }
-        if (decoded.width == 0 || decoded.height == 0)
-            fail("image " + std::to_string(index) + " is empty");
-        scene_.images.push_back(std::move(decoded));
-        const int32_t slot = int32_t(scene_.images.size() - 1);
-        image_slots_[index] = slot;
-        return slot;
     }
 
     uint32_t default_material() {
@@ -206,14 +115,15 @@ private:
             return std::nullopt;
         }
         for (const auto& [name, accessor_index] : source.attributes)
-            if (name != "POSITION" && name != "NORMAL" && name != "TEXCOORD_0")
+            if (name != "POSITION" && name != "NORMAL" && name != "TEXCOORD_0" &&
+                (name != "TANGENT" || materials_ != GltfMaterials::metallic_roughness))
                 warn("attribute " + name + " is ignored");
 
         const int F = TINYGLTF_COMPONENT_TYPE_FLOAT;
         const std::vector<float> positions = data_.read_floats(position->second, what + " POSITION",
                                                                {{TINYGLTF_TYPE_VEC3, {F}, false}});
         const size_t count = positions.size() / 3;
-        std::vector<float> normals, uvs;
+        std::vector<float> normals, uvs, tangents;
         if (auto n = source.attributes.find("NORMAL"); n != source.attributes.end())
             normals =
                 data_.read_floats(n->second, what + " NORMAL", {{TINYGLTF_TYPE_VEC3, {F}, false}});
@@ -223,6 +133,15 @@ private:
                                       {F, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
                                        TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
                                       true}});
+        // Chapter 23's normal maps: TANGENT (xyz, and w the bitangent's sign).
+        if (auto t = source.attributes.find("TANGENT");
+            t != source.attributes.end() && materials_ == GltfMaterials::metallic_roughness)
+            tangents =
+                data_.read_floats(t->second, what + " TANGENT", {{TINYGLTF_TYPE_VEC4, {F}, false}});
+        if (!tangents.empty() && (tangents.size() / 4 != count || normals.empty())) {
+            warn("a TANGENT that does not match POSITION and NORMAL is ignored");
+            tangents.clear();
+        }
         if (!normals.empty() && normals.size() / 3 != count)
             fail(what + ": NORMAL has " + std::to_string(normals.size() / 3) +
                  " elements but POSITION has " + std::to_string(count));
@@ -261,6 +180,9 @@ private:
             if (!normals.empty())
                 vertices[v].normal = {normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]};
             if (!uvs.empty()) vertices[v].uv = {uvs[2 * v], uvs[2 * v + 1]};
+            if (!tangents.empty())
+                vertices[v].tangent = {tangents[4 * v], tangents[4 * v + 1], tangents[4 * v + 2],
+                                       tangents[4 * v + 3] < 0.0f ? -1.0f : 1.0f};
         }
         if (normals.empty()) {
             // glTF: without normals, draw flat shaded. Each triangle gets its
@@ -390,11 +312,11 @@ private:
 
     std::filesystem::path path_;
     MemoryBudget budget_;
+    GltfMaterials materials_;
     tinygltf::Model model_;
     gltf_detail::Accessors data_{model_, path_, budget_};
     GltfScene scene_;
     std::map<int, std::vector<uint32_t>> mesh_primitives_;
-    std::map<int, int32_t> image_slots_;
     int32_t default_material_ = -1;
     std::vector<bool> visited_;
 };
@@ -434,8 +356,9 @@ glm::mat4 gltf_node_matrix(const std::vector<double>& matrix,
     return t * r * s;
 }
 
-GltfScene load_gltf(const std::filesystem::path& path, uint64_t max_memory) {
-    return Loader(path, max_memory).load();
+GltfScene load_gltf(const std::filesystem::path& path, uint64_t max_memory,
+                    GltfMaterials materials) {
+    return Loader(path, max_memory, materials).load();
 }
 
 }  // namespace vkt

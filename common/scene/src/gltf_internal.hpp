@@ -12,17 +12,20 @@
 //                       refused a file
 //   gltf_accessors.cpp  the bytes of a buffer view or an accessor, with every
 //                       index, offset, stride and count checked first
-//   gltf.cpp            the scene: materials and images, meshes and their
-//                       primitives, the node tree, flattened into GltfScene
+//   gltf_materials.cpp  the materials and the images they use
+//   gltf.cpp            the scene: meshes and their primitives, the node
+//                       tree, flattened into GltfScene
 
 #include "vkt/core/files.hpp"
 #include "vkt/core/memory_budget.hpp"
+#include "vkt/scene/gltf.hpp"
 #include "vkt/scene/gltf_guard.hpp"
 
 #include <tiny_gltf.h>
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -109,5 +112,12 @@ private:
     std::filesystem::path path_;
     MemoryBudget& budget_;
 };
+
+// Every material of `model` into scene.materials, and every image they use,
+// decoded once, into scene.images (gltf_materials.cpp). `warn` is told what
+// is skipped; a fault throws Error "PATH: what is wrong".
+void load_materials(const tinygltf::Model& model, const std::filesystem::path& path,
+                    const Accessors& data, MemoryBudget& budget, GltfMaterials which,
+                    GltfScene& scene, const std::function<void(const std::string&)>& warn);
 
 }  // namespace vkt::gltf_detail

@@ -14,7 +14,10 @@
 // and 32-bit indices and non-indexed primitives; POSITION, NORMAL (flat
 // normals are made where it is missing) and TEXCOORD_0 (float, or normalised
 // unsigned byte/short); interleaved, offset and sparse accessors; materials'
-// baseColorFactor and baseColorTexture (texCoord 0, PNG or JPEG); the node
+// baseColorFactor and baseColorTexture (texCoord 0, PNG or JPEG), and with
+// GltfMaterials::metallic_roughness (chapter 23) also the metallic and
+// roughness factors, emissiveFactor, normal scale, occlusion strength, their
+// four textures and TANGENT; the node
 // tree with matrix or TRS; the default scene, else scene 0, else every root.
 // Skipped with a warning: skins, morph targets, animations, cameras, sparse
 // index accessors, points and lines, other texture coordinates and material
@@ -42,6 +45,9 @@ struct GltfVertex {
     glm::vec3 position{0.0f};
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
     glm::vec2 uv{0.0f};
+    // Chapter 23: the file's TANGENT, xyz and the bitangent's sign in w
+    // (+1 or -1); w = 0 where the file has none (the shader makes its own).
+    glm::vec4 tangent{0.0f};
 };
 
 // One glTF primitive as a range of GltfScene::indices. The indices are
@@ -65,7 +71,21 @@ struct GltfDraw {
 struct GltfMaterial {
     glm::vec4 base_color_factor{1.0f};  // linear RGBA, multiplies the texture
     int32_t base_color_image = -1;      // index into GltfScene::images, or -1: none
+    // Chapter 23's metallic-roughness model. The images are read only with
+    // GltfMaterials::metallic_roughness (else -1, and a warning says so).
+    float metallic_factor = 1.0f, roughness_factor = 1.0f;
+    glm::vec3 emissive_factor{0.0f};
+    float normal_scale = 1.0f, occlusion_strength = 1.0f;
+    int32_t metallic_roughness_image = -1;  // roughness in G, metallic in B (linear)
+    int32_t normal_image = -1;              // tangent-space normal, linear
+    int32_t occlusion_image = -1;           // ambient occlusion in R, linear
+    int32_t emissive_image = -1;            // sRGB, like the base colour
 };
+
+// Which of a material's textures load_gltf reads: the base colour only
+// (chapters 10-16), or every texture of the metallic-roughness model and the
+// TANGENT attribute (chapter 23).
+enum class GltfMaterials { base_colour, metallic_roughness };
 
 struct GltfScene {
     std::vector<GltfVertex> vertices;
@@ -91,7 +111,8 @@ struct GltfScene {
 // staging and GPU copies) is counted against `max_memory` before it is
 // allocated, and refused by name with the numbers past it (--max-memory;
 // vkt/core/memory_budget.hpp).
-GltfScene load_gltf(const std::filesystem::path& path, uint64_t max_memory = default_max_memory);
+GltfScene load_gltf(const std::filesystem::path& path, uint64_t max_memory = default_max_memory,
+                    GltfMaterials materials = GltfMaterials::base_colour);
 
 // The local matrix of a node as glTF defines it: `matrix` (16 numbers, column
 // by column) if given, else T * R * S from translation (x, y, z), rotation (a

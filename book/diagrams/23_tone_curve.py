@@ -1,0 +1,70 @@
+"""Chapter 23: the tone curves, drawn with matplotlib when the book is built.
+
+The ACES fit (Krzysztof Narkowicz, 2015) that shaders/23_materials/pbr.glsl
+and common/scene/include/vkt/scene/pbr.hpp use, against cutting at 1 (the
+chapter's --tone-map clamp) and Reinhard's x / (1 + x) for comparison, over
+exposed radiance from 1/64 to 64 on a logarithmic axis. Prints the SVG; text
+stays text (the ids title, x-axis-label, y-axis-label and legend, as the
+book's other charts). Needs python3-matplotlib (scripts/install-deps.sh).
+"""
+
+import io
+import sys
+
+
+def aces(x: float) -> float:  # the same numbers as aces_narkowicz in pbr.glsl
+    x = max(x, 0.0)
+    return min(1.0, max(0.0, (x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14)))
+
+
+def main() -> None:
+    try:
+        import matplotlib
+    except ImportError:
+        sys.exit("the tone curve chart needs python3-matplotlib (scripts/install-deps.sh installs it)")
+    matplotlib.use("svg")
+    import matplotlib.pyplot as plt
+
+    matplotlib.rcParams.update({
+        "svg.fonttype": "none",          # text stays text
+        "svg.hashsalt": "vulkan-book",   # the same ids every build
+        "font.family": "DejaVu Sans",
+        "font.size": 11,
+        "axes.spines.top": False,
+        "axes.spines.right": False,
+        "axes.grid": True,
+        "grid.color": "#e3e6ea",
+        "axes.edgecolor": "#59636e",
+        "axes.titlesize": 12.5,
+    })
+    xs = [2 ** (i / 32) for i in range(-6 * 32, 6 * 32 + 1)]
+    figure, ax = plt.subplots(figsize=(8.4, 5.0))
+    ax.plot(xs, [aces(x) for x in xs], color="#cf222e", linewidth=2.4,
+            label="ACES, Narkowicz's fit (--tone-map aces)")
+    ax.plot(xs, [min(x, 1.0) for x in xs], color="#0969da", linewidth=1.8, linestyle="--",
+            label="clamp at 1 (--tone-map clamp)")
+    ax.plot(xs, [x / (1 + x) for x in xs], color="#59636e", linewidth=1.5, linestyle=":",
+            label="Reinhard, x / (1 + x), for comparison")
+    ax.plot([1.0], [aces(1.0)], "o", color="#cf222e")
+    ax.annotate(f"radiance 1 → {aces(1.0):.2f}", xy=(1.0, aces(1.0)), xytext=(8, -18),
+                textcoords="offset points", fontsize=10)
+    ax.set_xscale("log", base=2)
+    ax.set_xlim(xs[0], xs[-1])
+    ax.set_ylim(0, 1.05)
+    ax.set_xlabel("exposed radiance: radiance × 2^exposure (log scale)")
+    ax.set_ylabel("value written, before sRGB encoding")
+    title = ax.set_title("Chapter 23: the tone curve maps any radiance into 0..1", loc="left")
+    legend = ax.legend(loc="upper left", fontsize=9.5, frameon=False)
+    title.set_gid("title")
+    ax.xaxis.label.set_gid("x-axis-label")
+    ax.yaxis.label.set_gid("y-axis-label")
+    legend.set_gid("legend")
+    figure.tight_layout()
+    out = io.StringIO()
+    figure.savefig(out, format="svg", metadata={"Date": None, "Creator": "book/diagrams/23_tone_curve.py"})
+    plt.close(figure)
+    sys.stdout.write(out.getvalue())
+
+
+if __name__ == "__main__":
+    main()

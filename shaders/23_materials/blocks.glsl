@@ -1,0 +1,15 @@
+// Chapter 23's uniform block and push constants (chapters/23_materials/blocks.hpp).
+layout(set = 0, binding = 0) uniform Frame {
+    mat4 clip_from_world;
+    vec4 eye;               // xyz: the camera
+    vec4 light_direction[2];  // xyz: towards each light
+    vec4 light_radiance[2];   // rgb
+    vec4 sky;               // rgb: the uniform sky's radiance; w: samples per lobe
+} frame;
+
+layout(push_constant) uniform Draw {
+    mat4 world_from_object;
+    vec4 base_colour;  // linear RGBA factor
+    vec4 factors;      // metallic, roughness, normal scale, occlusion strength
+    vec4 emissive;     // rgb: emissive factor; w: 1 where the material has a normal map
+} draw;
