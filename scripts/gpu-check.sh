@@ -108,6 +108,26 @@ if [ -x "$bin/25_ray_tracing" ]; then
   echo "25_ray_tracing --bounces 0 picture vs lavapipe golden: exit $rc; $(grep -h -E '^picture|^FAIL' "$out/gpu.25_ray_tracing.no_bounces.check.txt" | tr '\n' ' ')"
   [ $rc -eq 0 ] || status=1
 fi
+# Chapter 26: the meshlet view and chapter 15's indirect draw against their
+# lavapipe references, and the task shader's culled counts beside the CPU's
+# for the same view (they must agree; lavapipe: 65 of 389, all facing away).
+if [ -x "$bin/26_mesh_shaders" ]; then
+  m26="--headless --validation --frames 10 --size 320x240"
+  for v in "meshlets|tests/golden/26_mesh_shaders_meshlets.png|--view meshlets" \
+           "indirect|tests/golden/26_mesh_shaders.png|--draw indirect" \
+           "turn_30|tests/golden/26_mesh_shaders.png|--turn 30"; do
+    IFS='|' read -r name golden extra <<<"$v"
+    [ "$name" = turn_30 ] && golden=""  # counts only: the picture is not blessed
+    if [ -n "$golden" ]; then
+      check "26_mesh_shaders.$name" 26_mesh_shaders "$golden" "--pixel 0,0,196,206,218,1" "$m26 $extra"; rc=$?
+    else
+      "$bin/26_mesh_shaders" $m26 $extra >"$out/gpu.26_mesh_shaders.$name.stderr" 2>&1; rc=$?
+    fi
+    echo "26_mesh_shaders $extra: exit $rc; $(grep -h -E '^picture|^FAIL' "$out/gpu.26_mesh_shaders.$name.check.txt" 2>/dev/null | tr '\n' ' ')"
+    [ $rc -eq 0 ] || status=1
+  done
+  grep -h -E "culled|the CPU culls|submitted" "$out"/gpu.26_mesh_shaders*.stderr
+fi
 frames=${BENCH_FRAMES:-2000}
 echo "benchmarks (1280x720, $frames frames, validation off):"
 benchmarks/run.sh "$bin" "$frames" 1280x720 | tee "$out/benchmarks.jsonl"
@@ -140,4 +160,5 @@ fi
 if [ -x "$bin/24_ray_queries" ] && device_offers VK_KHR_ray_query; then
   sweep 24_ray_queries benchmarks/24_ray_queries.sh "$bin" 1280x720 300 5
 fi
+[ -x "$bin/26_mesh_shaders" ] && sweep 26_mesh_shaders benchmarks/26_mesh_shaders.sh "$bin"
 exit $status

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Chapter 26's benchmark (book/perf_26_mesh_shaders.md): the same model drawn
+# chapter 15's way (one vkCmdDrawIndexedIndirect, vertex shader), by task and
+# mesh shaders without culling, and by task and mesh shaders culling
+# meshlets; each from the default view (the whole knot in sight) and with the
+# gaze turned 30 degrees (about a third of the meshlets outside the frustum).
+# Three rounds, the settings taken in turn within each round, headless,
+# validation off. One JSON line per run (GPU scope "draw": the one draw
+# command), each preceded by a line naming its arguments and followed by the
+# chapter's line of what it submitted.
+#   benchmarks/26_mesh_shaders.sh [BIN_DIR] [WxH] [FRAMES] [MODEL]
+set -euo pipefail
+bin=${1:-build/release/bin}
+size=${2:-1920x1080}
+frames=${3:-300}
+model=()
+[ $# -ge 4 ] && model=(--model "$4")
+for round in 1 2 3; do
+  for turn in 0 30; do
+    for draw in "--draw indirect" "--draw mesh --cull off" "--draw mesh --cull on"; do
+      echo "# round $round: 26_mesh_shaders $draw --turn $turn --frames $frames"
+      # shellcheck disable=SC2086  # $draw is two or four words
+      "$bin/26_mesh_shaders" --headless --no-validation --size "$size" --benchmark \
+        --frames "$frames" $draw --turn "$turn" "${model[@]}" 2>"${TMPDIR:-/tmp}/26_bench.err"
+      grep -h "submitted" "${TMPDIR:-/tmp}/26_bench.err" || true
+    done
+  done
+done

@@ -1,0 +1,213 @@
+#pragma once
+// Chapter 26's meshlets, built on the CPU at start-up (plain C++, no Vulkan):
+// a triangle list cut into small pieces that one mesh shader workgroup draws,
+// each with the bounds its task shader culls by. The unit tests
+// (tests/unit/test_meshlets.cpp) check the limits, that every triangle lands
+// in exactly one meshlet, that each cone holds its triangles' normals, and
+// that the culling here never drops a triangle the viewer could see.
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace ch26 {
+
+// [meshlet]
+// One meshlet as the shaders read it (std430: 48 bytes, vec3 + float pairs).
+// Its vertices are vertex_count entries of Meshlets::vertices from
+// vertex_offset (indices into the model's vertex array); its triangles are
+// triangle_count entries of Meshlets::triangles from triangle_offset, each
+// three 8-bit indices into the meshlet's own vertices, packed a | b<<8 | c<<16.
+struct Meshlet {
+    glm::vec3 centre{0.0f};  // the bounding sphere
+    float radius = 0.0f;
+    glm::vec3 cone_axis{0.0f, 0.0f, 1.0f};  // the normal cone (see faces_away)
+    float cone_cutoff = 2.0f;               // sin of the cone's half-angle; 2: never culled
+    uint32_t vertex_offset = 0, vertex_count = 0;
+    uint32_t triangle_offset = 0, triangle_count = 0;
+};
+// [/meshlet]
+static_assert(sizeof(Meshlet) == 48);
+
+struct Meshlets {
+    std::vector<Meshlet> meshlets;
+    std::vector<uint32_t> vertices;   // global vertex index per meshlet vertex
+    std::vector<uint32_t> triangles;  // packed local indices, one uint per triangle
+};
+
+inline glm::vec3 face_normal(glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    const float length = glm::length(n);
+    return length > 1e-20f ? n / length : glm::vec3(0.0f);  // 0: a degenerate triangle
+}
+
+// The sphere around the meshlet's vertices (centre of their box), and the
+// cone: its axis the mean of the triangles' unit normals, its half-angle the
+// widest angle between the axis and any of them. A cone of 90 degrees or more
+// (a meshlet that folds round) cannot be back-facing as a whole: cutoff 2.
+inline void compute_bounds(Meshlet& m, const Meshlets& out, std::span<const glm::vec3> positions) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (uint32_t i = 0; i < m.vertex_count; ++i) {
+        lo = glm::min(lo, positions[out.vertices[m.vertex_offset + i]]);
+        hi = glm::max(hi, positions[out.vertices[m.vertex_offset + i]]);
+    }
+    m.centre = 0.5f * (lo + hi);
+    m.radius = 0.0f;
+    for (uint32_t i = 0; i < m.vertex_count; ++i)
+        m.radius = std::max(m.radius,
+                            glm::length(positions[out.vertices[m.vertex_offset + i]] - m.centre));
+    std::vector<glm::vec3> normals;
+    glm::vec3 sum(0.0f);
+    for (uint32_t t = 0; t < m.triangle_count; ++t) {
+        const uint32_t packed = out.triangles[m.triangle_offset + t];
+        const auto at = [&](uint32_t shift) {
+            return positions[out.vertices[m.vertex_offset + ((packed >> shift) & 0xFF)]];
+        };
+        const glm::vec3 n = face_normal(at(0), at(8), at(16));
+        if (n == glm::vec3(0.0f)) continue;  // no area, never seen: it limits nothing
+        normals.push_back(n);
+        sum += n;
+    }
+    m.cone_cutoff = 2.0f;
+    if (glm::length(sum) < 1e-6f) return;
+    m.cone_axis = glm::normalize(sum);
+    float min_cos = 1.0f;
+    for (const glm::vec3& n : normals) min_cos = std::min(min_cos, glm::dot(n, m.cone_axis));
+    if (min_cos > 0.0f) m.cone_cutoff = std::sqrt(std::max(0.0f, 1.0f - min_cos * min_cos));
+}
+
+// [build]
+// Greedy growth: a meshlet starts at the first triangle not yet taken and
+// adds, one at a time, the untaken triangle touching its vertices that needs
+// the fewest new vertices (ties: the one nearest the meshlet's middle, which
+// keeps it round and its normals close), until a limit would be passed or
+// nothing touches it. Compact meshlets have tight spheres and narrow cones,
+// so the task shader can cull them.
+inline Meshlets build_meshlets(std::span<const glm::vec3> positions,
+                               std::span<const uint32_t> indices, uint32_t max_vertices,
+                               uint32_t max_triangles) {
+    max_vertices = std::min(max_vertices, 256u);  // local indices are 8 bits
+    const auto triangle_count = uint32_t(indices.size() / 3);
+    // Which triangles use each vertex (compressed rows: first[v] .. first[v + 1]).
+    std::vector<uint32_t> first(positions.size() + 1, 0), uses(indices.size());
+    for (uint32_t index : indices) ++first[index + 1];
+    for (size_t v = 0; v < positions.size(); ++v) first[v + 1] += first[v];
+    std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+    for (uint32_t i = 0; i < indices.size(); ++i) uses[fill[indices[i]]++] = i / 3;
+
+    Meshlets out;
+    std::vector<bool> taken(triangle_count, false);
+    std::vector<int32_t> local(positions.size(), -1);  // global -> this meshlet's vertex
+    uint32_t seed = 0;
+    while (true) {
+        while (seed < triangle_count && taken[seed]) ++seed;
+        if (seed == triangle_count) break;
+        Meshlet m{.vertex_offset = uint32_t(out.vertices.size()),
+                  .triangle_offset = uint32_t(out.triangles.size())};
+        glm::vec3 middle(0.0f);
+        uint32_t next = seed;
+        while (next != UINT32_MAX) {
+            uint32_t packed = 0;
+            for (uint32_t k = 0; k < 3; ++k) {
+                const uint32_t v = indices[3 * next + k];
+                if (local[v] < 0) {
+                    local[v] = int32_t(m.vertex_count++);
+                    out.vertices.push_back(v);
+                    middle += (positions[v] - middle) / float(m.vertex_count);
+                }
+                packed |= uint32_t(local[v]) << (8 * k);
+            }
+            out.triangles.push_back(packed);
+            taken[next] = true;
+            if (++m.triangle_count == max_triangles) break;
+            // The best neighbour: fewest new vertices, then nearest the middle.
+            next = UINT32_MAX;
+            uint32_t best_new = 4;
+            float best_distance = std::numeric_limits<float>::max();
+            for (uint32_t i = 0; i < m.vertex_count; ++i) {
+                const uint32_t v = out.vertices[m.vertex_offset + i];
+                for (uint32_t u = first[v]; u < first[v + 1]; ++u) {
+                    const uint32_t t = uses[u];
+                    if (taken[t]) continue;
+                    uint32_t fresh = 0;
+                    glm::vec3 centroid(0.0f);
+                    for (uint32_t k = 0; k < 3; ++k) {
+                        fresh += local[indices[3 * t + k]] < 0 ? 1 : 0;
+                        centroid += positions[indices[3 * t + k]] / 3.0f;
+                    }
+                    if (m.vertex_count + fresh > max_vertices) continue;
+                    const float distance = glm::length(centroid - middle);
+                    if (fresh < best_new || (fresh == best_new && distance < best_distance)) {
+                        next = t;
+                        best_new = fresh;
+                        best_distance = distance;
+                    }
+                }
+            }
+        }
+        for (uint32_t i = 0; i < m.vertex_count; ++i) local[out.vertices[m.vertex_offset + i]] = -1;
+        compute_bounds(m, out, positions);
+        out.meshlets.push_back(m);
+    }
+    return out;
+}
+// [/build]
+
+// [cull]
+// The six planes of the frustum of a Vulkan clip_from_world matrix (depth 0
+// to 1), each (n, d) with n of unit length and n . p + d >= 0 inside: the
+// rows r0..r3 of the matrix give r3 + r0 (left), r3 - r0 (right), r3 + r1,
+// r3 - r1, r2 (near) and r3 - r2 (far). The task shader does the same.
+inline void frustum_planes(const glm::mat4& m, glm::vec4 planes[6]) {
+    const auto row = [&](int i) { return glm::vec4(m[0][i], m[1][i], m[2][i], m[3][i]); };
+    planes[0] = row(3) + row(0);
+    planes[1] = row(3) - row(0);
+    planes[2] = row(3) + row(1);
+    planes[3] = row(3) - row(1);
+    planes[4] = row(2);
+    planes[5] = row(3) - row(2);
+    for (int i = 0; i < 6; ++i) planes[i] /= glm::length(glm::vec3(planes[i]));
+}
+
+inline bool outside_frustum(const glm::vec4 planes[6], const Meshlet& m) {
+    for (int i = 0; i < 6; ++i)
+        if (glm::dot(glm::vec3(planes[i]), m.centre) + planes[i].w < -m.radius) return true;
+    return false;
+}
+
+// Back-facing as a whole: every triangle's normal lies within the cone's
+// half-angle a of its axis, and every point of the sphere is seen from the
+// eye within b = asin(radius / distance) of the direction to its centre; if
+// the axis is less than 90 - a - b degrees from that direction, every
+// triangle faces away. cos(90 - a - b) = sin(a + b) <= sin a + sin b, so
+// dot(centre - eye, axis) >= (sin a) |centre - eye| + radius is enough.
+inline bool faces_away(const Meshlet& m, glm::vec3 eye) {
+    const glm::vec3 to_centre = m.centre - eye;
+    return glm::dot(to_centre, m.cone_axis) >= m.cone_cutoff * glm::length(to_centre) + m.radius;
+}
+// [/cull]
+
+// What the task shader should find for one view: a meshlet outside the
+// frustum counts there, else one facing away counts there (the same order).
+struct Culled {
+    uint32_t frustum = 0, cone = 0;
+};
+inline Culled cull_on_cpu(const Meshlets& model, const glm::mat4& clip_from_world, glm::vec3 eye) {
+    glm::vec4 planes[6];
+    frustum_planes(clip_from_world, planes);
+    Culled culled;
+    for (const Meshlet& m : model.meshlets) {
+        if (outside_frustum(planes, m))
+            ++culled.frustum;
+        else if (faces_away(m, eye))
+            ++culled.cone;
+    }
+    return culled;
+}
+
+}  // namespace ch26

@@ -1,0 +1,43 @@
+// Chapter 26's buffers and push constants, as the task, mesh and vertex
+// shaders read them (main.cpp's Push, GpuVertex and ch26::Meshlet).
+
+// [push]
+layout(push_constant) uniform Push {
+    mat4 clip_from_world;
+    vec4 eye;           // xyz: the camera, in the world
+    vec4 base_colour;   // the model's first material
+    uint view;          // 0 lit, 1 meshlets
+    uint meshlet_count;
+    uint counter_base;  // where this frame's counters start in `counters`
+    uint cull;          // 1: cull meshlets in the task shader
+} push;
+// [/push]
+
+struct Vertex {
+    vec4 position;
+    vec4 normal;
+};
+struct Meshlet {
+    vec3 centre;
+    float radius;
+    vec3 cone_axis;
+    float cone_cutoff;
+    uint vertex_offset;
+    uint vertex_count;
+    uint triangle_offset;
+    uint triangle_count;
+};
+
+layout(std430, set = 0, binding = 0) readonly buffer Vertices { Vertex vertices[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Meshlets { Meshlet meshlets[]; };
+layout(std430, set = 0, binding = 2) readonly buffer MeshletVertices { uint meshlet_vertices[]; };
+layout(std430, set = 0, binding = 3) readonly buffer MeshletTriangles { uint meshlet_triangles[]; };
+// Per frame in flight, four counters: meshlets outside the frustum, meshlets
+// facing away, triangles sent on to the mesh shader, meshlets sent on.
+layout(std430, set = 0, binding = 4) buffer Counters { uint counters[]; };
+
+// The task shader hands the mesh shader the meshlets that survived.
+const uint kTaskGroup = 32;
+struct Payload {
+    uint meshlet[kTaskGroup];
+};

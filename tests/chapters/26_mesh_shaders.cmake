@@ -1,0 +1,75 @@
+# Chapter 26: the knot (assets/gltf/knot.glb) cut into 389 meshlets, drawn by
+# task and mesh shaders that cull whole meshlets.
+#
+# The counts: after 10 frames at 320x240 the whole knot is in view, so no
+# meshlet lies outside the frustum, and 65 face away from the camera. The
+# chapter prints what the task shader counted and what the CPU finds for the
+# same view (meshlets.hpp, the same tests); both must say so. The top-left
+# corner is the clear colour, linear (0.55, 0.62, 0.70), stored sRGB-encoded.
+set(VKT_26_PIXEL PIXEL 0,0,196,206,218,1)
+set(VKT_26_COUNTS
+  "knot.glb: 30720 triangles, 15729 vertices -> 389 meshlets \\(at most 64 vertices and 124 triangles each; the device allows [0-9]+ and [0-9]+\\)"
+  "the last frame culled 65 of 389 meshlets \\(0 outside the frustum, 65 facing away\\), drew 324 meshlets"
+  "the CPU culls 65 for that view \\(0 outside the frustum, 65 facing away\\)")
+vkt_chapter_test(chapter.26_mesh_shaders 26_mesh_shaders GOLDEN BLESS ${VKT_26_PIXEL}
+  ARGS ${headless} EXPECT ${VKT_26_COUNTS} "task and mesh shaders, lit view, culling on")
+vkt_chapter_test(chapter.26_mesh_shaders.offscreen 26_mesh_shaders GOLDEN ${VKT_26_PIXEL}
+  ARGS ${offscreen} EXPECT ${VKT_26_COUNTS})
+vkt_chapter_window_test(26_mesh_shaders PIXEL 0,0,196,206,218,1)
+# The meshlet view: each meshlet in its own colour; its own golden.
+vkt_chapter_test(chapter.26_mesh_shaders.meshlets 26_mesh_shaders
+  GOLDEN_FILE 26_mesh_shaders_meshlets.png LABELS bless ${VKT_26_PIXEL}
+  ARGS ${headless} --view meshlets EXPECT "meshlets view")
+# Culling changes the work, not the picture: without it every meshlet is
+# drawn (all 30,720 triangles) and the picture is the same; so is chapter
+# 15's way, one indirect draw of the whole model through a vertex shader.
+vkt_chapter_test(chapter.26_mesh_shaders.no_culling 26_mesh_shaders GOLDEN ${VKT_26_PIXEL}
+  ARGS ${headless} --cull off
+  EXPECT "culled 0 of 389 meshlets \\(0 outside the frustum, 0 facing away\\), drew 389 meshlets, submitted 30720 of 30720 triangles")
+vkt_chapter_test(chapter.26_mesh_shaders.indirect 26_mesh_shaders GOLDEN ${VKT_26_PIXEL}
+  ARGS ${headless} --draw indirect
+  EXPECT "one vkCmdDrawIndexedIndirect \\(vertex shader\\)" "submitted 30720 triangles \\(the whole model\\)")
+# The gaze turned 30 degrees left: the right part of the knot leaves the
+# frustum. Turned 180 degrees: everything lies behind the camera.
+vkt_chapter_test(chapter.26_mesh_shaders.turn_30 26_mesh_shaders ARGS ${headless} --turn 30
+  EXPECT "culled 174 of 389 meshlets \\(127 outside the frustum, 47 facing away\\), drew 215 meshlets, submitted 17932 of 30720 triangles"
+         "the CPU culls 174 for that view \\(127 outside the frustum, 47 facing away\\)")
+vkt_chapter_test(chapter.26_mesh_shaders.turn_180 26_mesh_shaders ARGS ${headless} --turn 180
+  EXPECT "culled 389 of 389 meshlets \\(389 outside the frustum, 0 facing away\\), drew 0 meshlets, submitted 0 of 30720 triangles"
+         "the CPU culls 389 for that view \\(389 outside the frustum, 0 facing away\\)")
+# Any glTF: chapter 10's scene (five meshes in a node tree) as one mesh.
+vkt_chapter_test(chapter.26_mesh_shaders.other_model 26_mesh_shaders
+  ARGS ${headless} --model ${PROJECT_SOURCE_DIR}/assets/gltf/scene.gltf
+  EXPECT "scene.gltf: 1056 triangles, 631 vertices -> 32 meshlets"
+         "the last frame culled 12 of 32 meshlets" "the CPU culls 12 for that view")
+# --benchmark reports the "draw" scope.
+vkt_chapter_test(chapter.26_mesh_shaders.benchmark 26_mesh_shaders
+  ARGS --headless --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark
+  EXPECT "\"gpu_scopes_ms\": \\{\"draw\": \\{\"min\": [0-9.]+, \"median\": [0-9.]+, \"p95\": [0-9.]+")
+vkt_chapter_test(chapter.26_mesh_shaders.help 26_mesh_shaders EXIT 0 ARGS --help
+  EXPECT "usage: 26_mesh_shaders" "--draw mesh\\|indirect" "--view lit\\|meshlets"
+         "--cull on\\|off" "--turn DEGREES" "--model FILE")
+
+# Bad input: the command line (exit 2).
+vkt_chapter_test(bad_input.26_mesh_shaders.draw 26_mesh_shaders EXIT 2 ARGS --draw vertex
+  EXPECT "--draw wants one of mesh, indirect, not 'vertex'")
+vkt_chapter_test(bad_input.26_mesh_shaders.view 26_mesh_shaders EXIT 2 ARGS --view normals
+  EXPECT "--view wants one of lit, meshlets, not 'normals'")
+vkt_chapter_test(bad_input.26_mesh_shaders.cull 26_mesh_shaders EXIT 2 ARGS --cull maybe
+  EXPECT "--cull wants one of on, off, not 'maybe'")
+vkt_chapter_test(bad_input.26_mesh_shaders.turn 26_mesh_shaders EXIT 2 ARGS --turn 181
+  EXPECT "--turn wants a number from -180 to 180, not '181'")
+vkt_chapter_test(bad_input.26_mesh_shaders.meshlets_indirect 26_mesh_shaders EXIT 2
+  ARGS --draw indirect --view meshlets EXPECT "--view meshlets needs --draw mesh")
+# Bad input: a model that is missing or not glTF (exit 1, one line).
+vkt_chapter_test(bad_input.26_mesh_shaders.missing_model 26_mesh_shaders EXIT 1
+  ARGS --headless --frames 1 --model ${CMAKE_CURRENT_BINARY_DIR}/no_such_model.glb
+  EXPECT "no_such_model.glb")
+vkt_chapter_test(bad_input.26_mesh_shaders.not_gltf 26_mesh_shaders EXIT 1
+  ARGS --headless --frames 1 --model ${PROJECT_SOURCE_DIR}/assets/gltf/checker.png
+  EXPECT "checker.png: ")
+# A device without VK_EXT_mesh_shader (hidden: lavapipe has it): one clear
+# line naming it, exit status 1.
+vkt_chapter_test(bad_input.26_mesh_shaders.no_mesh_shader 26_mesh_shaders EXIT 1
+  ARGS --headless --frames 1 ENV VKT_HIDE_FEATURES=VK_EXT_mesh_shader
+  EXPECT "no Vulkan device can run this chapter; .* lacks the extension VK_EXT_mesh_shader \\(hidden by VKT_HIDE_FEATURES\\)")
