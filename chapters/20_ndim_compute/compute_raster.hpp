@@ -63,6 +63,7 @@ public:
         // The background, as the target stores it: (0.006, 0.006, 0.012)
         // sRGB-encoded is (18, 18, 29), level 0 below every line's.
         background_ = bgra ? 29u | 18u << 8 | 18u << 16 : 18u | 18u << 8 | 29u << 16;
+        // [lanes]
         // Invocations per line, 1 (250 n-cubes) to 32 (one 4-cube): as many
         // as keep the launch near the tuning's count (a few per core of a
         // GPU; on a CPU device only enough to keep its cores busy, since more
@@ -70,6 +71,7 @@ public:
         lanes_ = 1;
         while (lanes_ < 32 && uint64_t(line_total_) * lanes_ * 2 <= tuning.raster_invocations)
             lanes_ *= 2;
+        // [/lanes]
         const VkSpecializationMapEntry entry{.constantID = 0, .offset = 0, .size = sizeof(lanes_)};
         const VkSpecializationInfo lanes{.mapEntryCount = 1,
                                          .pMapEntries = &entry,

@@ -35,6 +35,7 @@ struct Tuning {
     static Tuning for_device(const VkPhysicalDeviceProperties& properties) {
         Tuning t;
         t.cpu_device = properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+        // [for-device]
         if (t.cpu_device) {
             t.transform_group = 64;
             t.vertices_per_lane = 16;
@@ -43,6 +44,7 @@ struct Tuning {
             t.tile_group = 8;                          // one SIMD vector: no switching at barriers
             t.store_to_target = false;                 // a copy is a memcpy there
         }
+        // [/for-device]
         t.tile_group = std::min(t.tile_group, properties.limits.maxComputeWorkGroupInvocations);
         return t;
     }

@@ -64,6 +64,8 @@ void main() {
     if (gl_LocalInvocationID.x < 4u) group_box[gl_LocalInvocationID.x] = 0u;
 #endif
     barrier();
+    // [/transform]
+    // [own-copy]
     // One vertex per invocation on a GPU, which reads the pose from shared
     // memory as it goes. On a CPU device the dispatch is narrower and each
     // invocation walks several vertices, a dispatch row apart, with its own
@@ -72,6 +74,8 @@ void main() {
     if (OWN_COPY)
         for (int i = 0; i < N * Q + Q; ++i) m[i] = pose[i];
 #define M(i) (OWN_COPY ? m[i] : pose[i])
+    // [/own-copy]
+    // [transform-vertex]
     const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
 #ifdef BOXES
     ivec2 box_lo = ivec2(push.size), box_hi = ivec2(-1);  // empty
@@ -92,7 +96,7 @@ void main() {
             x[r] = sum;
         }
         const float depth = (x[N - 1] - M(N * Q + (N - 1) / 4)[(N - 1) % 4]) * o.inv_radius;
-        // [/transform]
+        // [/transform-vertex]
 
         // [project]
         // Down to 2D one dimension at a time, as vkt::ndim::project_to_2d:

@@ -20,7 +20,6 @@ Controls::Controls(int dimension, Projection start, const char* name)
       offset(size_t(dimension), 0.0f),
       log_name(name) {}
 
-// [controls]
 void Controls::steer(const Input& input, float dt) {
     // One line on stderr per key that went down, when the chapter asked.
     const bool say = log_name != nullptr;
@@ -79,6 +78,5 @@ Transform Controls::pose(const SceneObject& object, float time) const {
     for (int k = 0; k < n; ++k) t.position[size_t(k)] += offset[size_t(k)];
     return t;
 }
-// [/controls]
 
 }  // namespace vkt::ndim
