@@ -295,7 +295,7 @@ private:
 int main(int argc, char** argv) {
     // [spec]
     vkt::ChapterSpec spec{
-        .name = "14_physics", .title = "14 - physics", .input = vkt::InputUse::keys};
+        .name = "14_physics", .title = "14 - Physics", .input = vkt::InputUse::keys};
     // The depth barrier's DEPTH_ATTACHMENT_OPTIMAL layout (chapter 08).
     spec.requirements.features = {VKT_FEATURE_12(separateDepthStencilLayouts)};
     spec.options = {

@@ -18,7 +18,7 @@ if(XVFB_RUN AND XDOTOOL AND OPENBOX)
   add_test(NAME chapter.14_physics.window_keys
     COMMAND ${XVFB_RUN} -a -s "-screen 0 800x600x24"
             ${CMAKE_CURRENT_SOURCE_DIR}/window_physics_keys.sh $<TARGET_FILE:14_physics>
-            ${VKT_TEST_OUTPUT} "14 - physics")
+            ${VKT_TEST_OUTPUT} "14 - Physics")
   set_tests_properties(chapter.14_physics.window_keys PROPERTIES
     ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS "chapter;window")
 endif()
