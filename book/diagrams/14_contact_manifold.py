@@ -130,8 +130,11 @@ def main() -> None:
                anchor="middle")
     label_x = max(x for x, _ in inc) + 12
     s.lines(label_x, centre[1] - 8, ["incident face:", "box b's bottom"], size=12, fill=BLUE)
+    # The overhang is too narrow for a label of a readable size: it goes
+    # beside the incident face's, with a leader into the overhang.
     over = top((1.42, 0.06))
-    s.lines(over[0], over[1], ["clipped", "away"], size=10.5, fill=MUTED, anchor="middle", leading=1.2)
+    s.line(over[0], over[1], label_x - 4, centre[1] + 36, stroke=MUTED, width=1)
+    s.lines(label_x, centre[1] + 40, ["clipped away:", "the part past s0"], size=12, fill=MUTED)
 
     # The contact points, each labelled on its side of the clipped polygon's
     # middle: those on s0 below and right of it, clear of the dashed edges.
