@@ -3,66 +3,19 @@
 Drawn from the chapter's three reviewed test pictures (tests/golden/
 21_multisampling_1x.png, 21_multisampling.png, 21_multisampling_sample_shading.png,
 headless at 320x240 after 10 frames): two crops of 32x24 pixels each, every
-pixel a square 7 units wide. The PNGs are decoded here with zlib (8-bit RGB or
-RGBA, not interlaced: what vkt::write_png writes), so the figure needs nothing
-outside the standard library and always shows what the tests check.
+pixel a square 7 units wide. The PNGs are decoded by golden.py (standard
+library only), so the figure always shows what the tests check.
 """
 
-import struct
-import zlib
-from pathlib import Path
-
+from golden import GOLDEN, read_png
 from svg import INK, MUTED, Svg
 
-GOLDEN = Path(__file__).resolve().parents[2] / "tests" / "golden"
 COLUMNS = [("21_multisampling_1x.png", "1 sample per pixel", "--samples 1"),
            ("21_multisampling.png", "4 samples, resolved", "the default"),
            ("21_multisampling_sample_shading.png", "4 samples, sample shading", "--sample-shading 1")]
 # (left, top) of each crop in the 320x240 picture, and what it shows.
 CROPS = [((130, 95), "a spoke's edges"), ((222, 100), "depth edge, stripes")]
 CROP_W, CROP_H, ZOOM = 32, 24, 7
-
-
-def read_png(path: Path) -> list[list[tuple[int, int, int]]]:
-    """The pixels of an 8-bit RGB or RGBA PNG, rows of (r, g, b)."""
-    data = path.read_bytes()
-    if data[:8] != b"\x89PNG\r\n\x1a\n":
-        raise SystemExit(f"{path}: not a PNG file")
-    pos, idat = 8, b""
-    width = height = channels = 0
-    while pos < len(data):
-        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + length]
-        if kind == b"IHDR":
-            width, height, depth, colour_type, _, _, interlace = struct.unpack(">IIBBBBB", body)
-            if depth != 8 or colour_type not in (2, 6) or interlace:
-                raise SystemExit(f"{path}: only 8-bit RGB or RGBA, not interlaced")
-            channels = 3 if colour_type == 2 else 4
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + length
-    raw, stride = zlib.decompress(idat), width * channels
-    rows, previous = [], bytearray(stride)
-    for y in range(height):
-        start = y * (stride + 1)
-        kind, line = raw[start], bytearray(raw[start + 1:start + 1 + stride])
-        for i in range(stride):  # undo the row's filter (PNG specification, section 9)
-            a = line[i - channels] if i >= channels else 0
-            b = previous[i]
-            c = previous[i - channels] if i >= channels else 0
-            if kind == 1:
-                line[i] = (line[i] + a) & 255
-            elif kind == 2:
-                line[i] = (line[i] + b) & 255
-            elif kind == 3:
-                line[i] = (line[i] + (a + b) // 2) & 255
-            elif kind == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append([tuple(line[x * channels:x * channels + 3]) for x in range(width)])
-        previous = line
-    return rows
 
 
 def draw_crop(s: Svg, pixels, left: int, top: int, x0: float, y0: float) -> None:

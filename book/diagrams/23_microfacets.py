@@ -12,7 +12,7 @@ import math
 from svg import (BLUE, BLUE_FILL, GREEN, GREEN_FILL, GREY, INK, MUTED, ORANGE, ORANGE_FILL,
                  PURPLE, RED, Svg)
 
-W, H = 1000, 470
+W, H = 1000, 500
 
 
 def ray(s, x0, y0, angle_deg, length, colour, label, dx=0, dy=0):
@@ -42,7 +42,7 @@ def main() -> None:
         x += w
     cx = x0 + 6 * 30
     s.line(x0 - 10, y0 + 14, x + 10, y0 + 14, stroke=MUTED, width=1, dash="4 4")
-    s.text(x + 14, y0 + 18, "surface", size=12, fill=MUTED)
+    s.text(x + 14, y0 + 18, "surface", size=12.5, fill=MUTED)
     ray(s, cx, y0, 0, 150, INK, "n", dy=-8)
     ray(s, cx, y0, -55, 170, BLUE, "v (to the eye)", dx=-20, dy=-10)
     ray(s, cx, y0, 35, 170, ORANGE, "l (to the light)", dx=30, dy=-10)
@@ -62,8 +62,10 @@ def main() -> None:
     s.box(560, y + 50, 400, 60, ["HDR image: R16G16B16A16_SFLOAT",
                                  "COLOR_ATTACHMENT → SHADER_READ_ONLY barrier"],
           fill="#eee6fa", stroke=PURPLE, bold_first=True, size=12.5)
-    s.line(760, y + 110, 760, y + 140, stroke=INK, width=1.6, arrow="end")
-    s.text(772, y + 130, "with --bloom: the compute chain blurs it here", size=11.5, fill=MUTED)
+    # Where the bloom's compute chain runs, in two lines beside a longer arrow.
+    s.line(760, y + 110, 760, y + 170, stroke=INK, width=1.6, arrow="end")
+    s.lines(772, y + 134, ["with --bloom: the compute", "chain blurs it here"], size=12.5, fill=MUTED)
+    y += 30
     s.box(560, y + 140, 400, 80, ["tone-mapping pass (one full-screen triangle)",
                                   "× 2^exposure, then the ACES curve: 0..1",
                                   "written to the _SRGB target, which encodes it"],
@@ -72,7 +74,7 @@ def main() -> None:
     s.box(610, y + 250, 300, 44, ["the picture on screen"], fill=BLUE_FILL, stroke=BLUE,
           bold_first=True, size=12.5)
     s.text(760, y + 325, "--verify reads the HDR image back: the CPU reference checks it there",
-           size=12, anchor="middle", fill=RED)
+           size=12.5, anchor="middle", fill=RED)
     s.write()
 
 

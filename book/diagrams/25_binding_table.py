@@ -33,10 +33,10 @@ def layout(handle: int, handle_alignment: int, base: int) -> dict:
 
 
 def draw_table(s: Svg, x0: float, y: float, title: str, t: dict) -> None:
-    s.text(x0, y - 44, title, size=14, bold=True)
-    s.text(x0, y - 24, f"shaderGroupHandleSize {t['handle']}, shaderGroupHandleAlignment "
+    s.text(x0, y - 54, title, size=14, bold=True)
+    s.text(x0, y - 31, f"shaderGroupHandleSize {t['handle']}, shaderGroupHandleAlignment "
            f"{t['handle_alignment']}, shaderGroupBaseAlignment {t['base']}: records of "
-           f"{t['record']} bytes, {t['total']} bytes in all", size=12, fill=MUTED)
+           f"{t['record']} bytes, {t['total']} bytes in all", size=12.5, fill=MUTED)
     names = {"ray generation": ["raygen"], "miss": ["sky", "shadow"], "hit": ["closest hit"]}
     # Padding first (the whole table's width), then each record over it.
     s.rect(x0, y, t["total"] * PX, 40, fill=GREY_FILL, stroke=GREY)
@@ -44,19 +44,19 @@ def draw_table(s: Svg, x0: float, y: float, title: str, t: dict) -> None:
         for i in range(count):
             rx = x0 + (offset + i * stride) * PX
             s.rect(rx, y, t["handle"] * PX, 40, fill=fill, stroke=stroke, width=1.4)
-            s.text(rx + t["handle"] * PX / 2, y + 17, names[name][i], size=11.5, anchor="middle")
-            s.text(rx + t["handle"] * PX / 2, y + 32, f"handle {t['handle']} B", size=10,
+            s.text(rx + t["handle"] * PX / 2, y + 16, names[name][i], size=13, anchor="middle")
+            s.text(rx + t["handle"] * PX / 2, y + 33, f"handle {t['handle']} B", size=12.5,
                    anchor="middle", fill=MUTED)
         # The region the trace call is given: where it starts, its stride, its size.
         s.brace(x0 + offset * PX, x0 + (offset + size) * PX, y + 48, stroke=stroke)
-        s.text(x0 + (offset + size / 2) * PX, y + 72, name, size=12, anchor="middle", fill=stroke,
+        s.text(x0 + (offset + size / 2) * PX, y + 72, name, size=13, anchor="middle", fill=stroke,
                bold=True)
-        s.text(x0 + (offset + size / 2) * PX, y + 88, f"+{offset}, stride {stride}, size {size}",
-               size=11, anchor="middle", mono=True)
+        s.text(x0 + (offset + size / 2) * PX, y + 90, f"+{offset}, stride {stride}, size {size}",
+               size=12.5, anchor="middle", mono=True)
     # The base alignment's multiples: where a table may start.
     for b in range(0, t["total"] + 1, t["base"]):
         s.line(x0 + b * PX, y - 8, x0 + b * PX, y, stroke=INK, width=1.2)
-        s.text(x0 + b * PX, y - 11, str(b), size=10, anchor="middle", fill=MUTED)
+        s.text(x0 + b * PX, y - 11, str(b), size=12.5, anchor="middle", fill=MUTED)
 
 
 def main() -> None:
@@ -70,7 +70,7 @@ def main() -> None:
     s.text(20, 28, "vkGetRayTracingShaderGroupHandlesKHR: 4 handles, one per shader group, "
            "copied to their records", size=14, bold=True)
     s.text(20, 48, "grey: padding, never read.  Ticks: multiples of shaderGroupBaseAlignment, "
-           "where a table may start (the buffer's address rounded up to one first).", size=12,
+           "where a table may start (the buffer's address rounded up to one first).", size=12.5,
            fill=MUTED)
     draw_table(s, 40, 140, "lavapipe", layout(32, 16, 32))
     draw_table(s, 40, 360, "a device with 32, 32 and 64 (NVIDIA's drivers report these)",
@@ -78,7 +78,7 @@ def main() -> None:
     s.lines(20, 520, ["vkCmdTraceRaysKHR(cmd, &raygen, &miss, &hit, &callable, width, height, 1) is "
                       "given the three regions (and an empty one for callables).",
                       "A ray's miss index picks a record of the miss table; its hit group offset, "
-                      "plus the instance's, one of the hit table."], size=12, leading=1.4)
+                      "plus the instance's, one of the hit table."], size=12.5, leading=1.4)
     s.write()
 
 

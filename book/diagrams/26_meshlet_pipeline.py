@@ -23,62 +23,69 @@ def main() -> None:
     s.text(20, 30, "At start-up, on the CPU (meshlets.hpp): 30,720 triangles \u2192 389 meshlets",
            size=14, bold=True)
     s.box(20, 46, 300, 74, ["meshlets[389]", "sphere (centre, radius), cone (axis, cutoff)",
-                            "vertex and triangle ranges"], fill=GREY_FILL, stroke=GREY, size=12,
+                            "vertex and triangle ranges"], fill=GREY_FILL, stroke=GREY, size=12.5,
           bold_first=True)
     s.box(340, 46, 300, 74, ["meshlet_vertices[]", "per meshlet \u2264 64 indices into", "the model's vertices"],
-          fill=GREY_FILL, stroke=GREY, size=12, bold_first=True)
+          fill=GREY_FILL, stroke=GREY, size=12.5, bold_first=True)
     s.box(660, 46, 320, 74, ["meshlet_triangles[]", "per meshlet \u2264 124, three 8-bit local",
-                             "indices packed in one uint"], fill=GREY_FILL, stroke=GREY, size=12,
+                             "indices packed in one uint"], fill=GREY_FILL, stroke=GREY, size=12.5,
           bold_first=True)
 
     # ---- The draw ---------------------------------------------------------------------------
+    # Every text at least 12.5 units (10 px when the figure is shown 800 px wide), so the
+    # boxes are sized to their longest line: task 212..438, mesh 508..808.
     y = 160
-    s.box(20, y, 190, 64, ["`vkCmdDrawMeshTasksEXT`", "(cmd, 13, 1, 1)"], fill="#ffffff", stroke=INK,
+    s.box(20, y, 172, 64, ["`vkCmdDrawMeshTasksEXT`", "(cmd, 13, 1, 1)"], fill="#ffffff", stroke=INK,
           size=12.5)
-    s.line(210, y + 32, 250, y + 32, stroke=INK, width=1.6, arrow="end")
+    s.line(192, y + 32, 212, y + 32, stroke=INK, width=1.6, arrow="end")
 
     # Task workgroups.
-    s.box(250, y - 16, 250, 160, [], fill=BLUE_FILL, stroke=BLUE)
-    s.text(375, y + 4, "task shader", size=14, bold=True, anchor="middle", fill=BLUE)
-    s.text(375, y + 22, "13 workgroups \u00d7 32 invocations", size=11.5, anchor="middle", fill=MUTED)
+    tx, tw = 212, 226
+    tc = tx + tw / 2
+    s.box(tx, y - 16, tw, 160, [], fill=BLUE_FILL, stroke=BLUE)
+    s.text(tc, y + 4, "task shader", size=14, bold=True, anchor="middle", fill=BLUE)
+    s.text(tc, y + 22, "13 workgroups \u00d7 32 invocations", size=12.5, anchor="middle", fill=MUTED)
     for k in range(8):
-        cx = 268 + k * 28
+        cx = tc - (7 * 26 + 20) / 2 + k * 26
         outside = k in (6,)
         away = k in (2, 5)
         fill = RED_FILL if (outside or away) else "#ffffff"
         stroke = RED if (outside or away) else BLUE
-        s.rect(cx, y + 36, 22, 22, fill=fill, stroke=stroke, width=1.3, rx=3)
+        s.rect(cx, y + 37, 20, 20, fill=fill, stroke=stroke, width=1.3, rx=3)
         if outside or away:
-            s.line(cx + 3, y + 39, cx + 19, y + 55, stroke=RED, width=1.5)
-    s.text(375, y + 78, "one invocation per meshlet:", size=11.5, anchor="middle")
-    s.text(375, y + 95, "sphere outside the frustum?", size=11.5, anchor="middle", fill=RED)
-    s.text(375, y + 111, "cone facing away from the eye?", size=11.5, anchor="middle", fill=RED)
-    s.text(375, y + 131, "culled: atomicAdd(counters)", size=11, anchor="middle", mono=True, fill=MUTED)
+            s.line(cx + 3, y + 40, cx + 17, y + 54, stroke=RED, width=1.5)
+    s.text(tc, y + 78, "one invocation per meshlet:", size=12.5, anchor="middle")
+    s.text(tc, y + 95, "sphere outside the frustum?", size=12.5, anchor="middle", fill=RED)
+    s.text(tc, y + 112, "cone facing away from the eye?", size=12.5, anchor="middle", fill=RED)
+    s.text(tc, y + 132, "culled: atomicAdd(counters)", size=12.5, anchor="middle", mono=True, fill=MUTED)
 
-    s.line(500, y + 32, 548, y + 32, stroke=INK, width=1.6, arrow="end")
-    s.text(524, y + 22, "payload", size=11, anchor="middle", fill=PURPLE)
-    s.text(524, y + 52, "survivors", size=11, anchor="middle", fill=PURPLE)
+    mx, mw = 508, 300
+    mc = mx + mw / 2
+    s.line(tx + tw, y + 32, mx, y + 32, stroke=INK, width=1.6, arrow="end")
+    s.text((tx + tw + mx) / 2, y + 22, "payload", size=12.5, anchor="middle", fill=PURPLE)
+    s.text((tx + tw + mx) / 2, y + 52, "survivors", size=12.5, anchor="middle", fill=PURPLE)
 
     # Mesh workgroups.
-    s.box(548, y - 16, 230, 160, [], fill=GREEN_FILL, stroke=GREEN)
-    s.text(663, y + 4, "mesh shader", size=14, bold=True, anchor="middle", fill=GREEN)
-    s.text(663, y + 22, "EmitMeshTasksEXT(survivors, 1, 1)", size=10.5, anchor="middle", mono=True,
+    s.box(mx, y - 16, mw, 160, [], fill=GREEN_FILL, stroke=GREEN)
+    s.text(mc, y + 4, "mesh shader", size=14, bold=True, anchor="middle", fill=GREEN)
+    s.text(mc, y + 22, "EmitMeshTasksEXT(survivors, 1, 1)", size=12.5, anchor="middle", mono=True,
            fill=MUTED)
     for k in range(5):
-        s.rect(566 + k * 40, y + 36, 34, 22, fill="#ffffff", stroke=GREEN, width=1.3, rx=3)
-    s.text(663, y + 78, "one workgroup per meshlet kept:", size=11.5, anchor="middle")
-    s.text(663, y + 95, "SetMeshOutputsEXT(vertices, triangles)", size=9.8, anchor="middle", mono=True)
-    s.text(663, y + 111, "gl_MeshVerticesEXT[i].gl_Position", size=10.5, anchor="middle", mono=True)
-    s.text(663, y + 127, "gl_PrimitiveTriangleIndicesEXT[i]", size=10.5, anchor="middle", mono=True)
+        s.rect(mc - (4 * 40 + 34) / 2 + k * 40, y + 36, 34, 22, fill="#ffffff", stroke=GREEN, width=1.3,
+               rx=3)
+    s.text(mc, y + 78, "one workgroup per meshlet kept:", size=12.5, anchor="middle")
+    s.text(mc, y + 95, "SetMeshOutputsEXT(vertices, triangles)", size=12.5, anchor="middle", mono=True)
+    s.text(mc, y + 112, "gl_MeshVerticesEXT[i].gl_Position", size=12.5, anchor="middle", mono=True)
+    s.text(mc, y + 129, "gl_PrimitiveTriangleIndicesEXT[i]", size=12.5, anchor="middle", mono=True)
 
-    s.line(778, y + 32, 818, y + 32, stroke=INK, width=1.6, arrow="end")
-    s.box(818, y, 162, 64, ["rasteriser", "and fragment shader"], fill=ORANGE_FILL, stroke=ORANGE,
+    s.line(mx + mw, y + 32, 836, y + 32, stroke=INK, width=1.6, arrow="end")
+    s.box(836, y, 144, 64, ["rasteriser", "and fragment", "shader"], fill=ORANGE_FILL, stroke=ORANGE,
           size=12.5, bold_first=True)
 
     s.text(20, y + 190, "The default view: 65 of 389 meshlets culled in the task shader (they face away);"
-           " 324 drawn, 26,766 of 30,720 triangles reach the rasteriser.", size=12)
+           " 324 drawn, 26,766 of 30,720 triangles reach the rasteriser.", size=12.5)
     s.text(20, y + 210, "No vertex buffer, index buffer, vertex input or input assembly: the mesh shader"
-           " reads the buffers above and writes its primitives itself.", size=12, fill=MUTED)
+           " reads the buffers above and writes its primitives itself.", size=12.5, fill=MUTED)
 
     # ---- The vertex pipeline, for comparison --------------------------------------------
     y2 = 430
@@ -90,12 +97,12 @@ def main() -> None:
              ("rasteriser", "30,720 triangles", ORANGE_FILL, ORANGE)]
     x = 20
     for i, (title, note, fill, stroke) in enumerate(steps):
-        s.box(x, y2, 210, 56, [title, note], fill=fill, stroke=stroke, size=12, bold_first=i > 0)
+        s.box(x, y2, 210, 56, [title, note], fill=fill, stroke=stroke, size=12.5, bold_first=i > 0)
         if i < len(steps) - 1:
             s.line(x + 210, y2 + 28, x + 247, y2 + 28, stroke=INK, width=1.6, arrow="end")
         x += 247
     s.text(20, y2 + 86, "Back faces are still culled one triangle at a time by the rasteriser, after the "
-           "vertex shader has run for them.", size=12, fill=MUTED)
+           "vertex shader has run for them.", size=12.5, fill=MUTED)
     s.write()
 
 

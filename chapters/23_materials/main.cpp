@@ -378,7 +378,7 @@ int main(int argc, char** argv) {
     // [spec]
     vkt::ChapterSpec spec{.name = "23_materials",
                           .title = "23 - Physically based materials and HDR"};
-    spec.overlay = true;  // in a window: the exposure, the tone curve and the sky, live
+    spec.overlay = true;  // in a window: the exposure, the tone curve, the bloom and the sky, live
     // maintenance4, as chapter 13: glslang writes the bloom's workgroup size
     // as LocalSizeId, which needs it (every Vulkan 1.3 device has it).
     spec.requirements.features = {VKT_FEATURE_12(separateDepthStencilLayouts),

@@ -2,8 +2,9 @@
 // Chapter 23's --verify: the last frame's HDR target read back (chapter 16's
 // host copies) and compared with the CPU reference, vkt/scene/pbr.hpp.
 //
-//   cpu      at three points of each sphere (its centre and two points half
-//            a radius off it), the radiance the GPU wrote against
+//   cpu      at three points of each sphere (its centre, and its centre moved
+//            by (-0.5, 0.5) and (0.5, 0) radii in world x and y: 0.71 and
+//            0.5 radii off it), the radiance the GPU wrote against
 //            vkt::pbr::shade for the point the pixel's centre sees on the
 //            exact sphere: within 2% + 0.005 in every channel
 //   furnace  every pixel of the white sphere under the white sky, where it

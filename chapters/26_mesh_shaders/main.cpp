@@ -137,7 +137,8 @@ public:
                              std::to_string(mesh_properties.maxMeshOutputVertices) +
                              " vertices and " +
                              std::to_string(mesh_properties.maxMeshOutputPrimitives) +
-                             " primitives, fewer than the 64 and 124 meshlets.mesh writes");
+                             " primitives, fewer than the " + std::to_string(kMeshVertices) +
+                             " and " + std::to_string(kMeshTriangles) + " meshlets.mesh writes");
         // [/limits]
 
         // [build-meshlets]

@@ -20,10 +20,16 @@ struct Object {
 };
 layout(set = 0, binding = 4, std430) readonly buffer Objects { Object objects[]; };
 
+// [declarations]
+// The payload this shader was run for (the tracer's, of the same type,
+// whatever its location there), two payloads of its own for the rays it
+// traces (traceRayEXT's last argument names one by location), and the hit's
+// two barycentric coordinates, which the triangle intersection fills in.
 layout(location = 0) rayPayloadInEXT Hit hit;
 layout(location = 1) rayPayloadEXT Hit reflected;
 layout(location = 2) rayPayloadEXT uint shadowed;
 hitAttributeEXT vec2 barycentrics;
+// [/declarations]
 
 uint index_at(uint i) {
     return (index_words[i / 2] >> (16 * (i % 2))) & 0xffffu;

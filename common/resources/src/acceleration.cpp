@@ -222,6 +222,7 @@ AccelerationScene build_scene(const Gpu& gpu, const AccelerationCommands& comman
             create_structure(gpu, commands, p, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR));
     }
 
+    // [instance-records]
     // The instances, in the layout the device reads: each refers to its
     // bottom level by that structure's device address.
     std::vector<VkAccelerationStructureInstanceKHR> records;
@@ -234,6 +235,7 @@ AccelerationScene build_scene(const Gpu& gpu, const AccelerationCommands& comman
             .flags = 0,
             .accelerationStructureReference = scene.bottom.at(instance.mesh).address(),
         });
+    // [/instance-records]
     const Buffer instance_buffer = create_addressable_buffer(
         gpu, records.size() * sizeof(records[0]),
         VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR, records.data());

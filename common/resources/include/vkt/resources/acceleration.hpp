@@ -76,6 +76,7 @@ struct TriangleMesh {
     uint32_t triangle_count = 0;
 };
 
+// [mesh-instance]
 // One placement of a mesh in the top level. custom_index is what a hit
 // shader reads as gl_InstanceCustomIndexEXT; hit_group_offset is added to
 // the hit group a ray asks for (instanceShaderBindingTableRecordOffset).
@@ -86,6 +87,7 @@ struct MeshInstance {
     uint32_t hit_group_offset = 0;
     uint8_t mask = 0xff;
 };
+// [/mesh-instance]
 
 // The row-major 3x4 matrix of an instance: GLM's column-major mat4 without
 // its last row (which for an affine transform is 0 0 0 1).
