@@ -121,6 +121,7 @@ if [ -x "$bin/26_mesh_shaders" ]; then
     if [ -n "$golden" ]; then
       check "26_mesh_shaders.$name" 26_mesh_shaders "$golden" "--pixel 0,0,196,206,218,1" "$m26 $extra"; rc=$?
     else
+      # shellcheck disable=SC2086  # the arguments are words
       "$bin/26_mesh_shaders" $m26 $extra >"$out/gpu.26_mesh_shaders.$name.stderr" 2>&1; rc=$?
     fi
     echo "26_mesh_shaders $extra: exit $rc; $(grep -h -E '^picture|^FAIL' "$out/gpu.26_mesh_shaders.$name.check.txt" 2>/dev/null | tr '\n' ' ')"

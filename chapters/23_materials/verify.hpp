@@ -75,12 +75,12 @@ inline void check(const std::string& which, const std::vector<glm::vec3>& hdr, V
         if (which == "cpu") {
             for (glm::vec2 offset : {glm::vec2(0.0f), glm::vec2(-0.5f, 0.5f), glm::vec2(0.5f, 0)}) {
                 const glm::vec4 p = clip * glm::vec4(s.centre + s.radius * glm::vec3(offset, 0), 1);
-                pixels.push_back(glm::ivec2((glm::vec2(p) / p.w * 0.5f + 0.5f) *
-                                            glm::vec2(float(extent.width), float(extent.height))));
+                pixels.emplace_back((glm::vec2(p) / p.w * 0.5f + 0.5f) *
+                                    glm::vec2(float(extent.width), float(extent.height)));
             }
         } else {  // furnace: every pixel
             for (int y = 0; y < int(extent.height); ++y)
-                for (int x = 0; x < int(extent.width); ++x) pixels.push_back({x, y});
+                for (int x = 0; x < int(extent.width); ++x) pixels.emplace_back(x, y);
         }
         for (glm::ivec2 pixel : pixels) {
             const std::optional<glm::vec3> p = hit(world_from_clip, extent, pixel.x, pixel.y, s);

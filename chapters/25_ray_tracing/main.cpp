@@ -182,6 +182,7 @@ private:
                                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                                   scene.objects.data());
         std::vector<vkt::TriangleMesh> meshes;
+        meshes.reserve(scene.ranges.size());
         for (const vkt::shapes::MeshRange& range : scene.ranges)
             meshes.push_back({.vertices = vkt::buffer_address(gpu_.device, vertices_.buffer),
                               .vertex_stride = sizeof(vkt::shapes::Vertex),

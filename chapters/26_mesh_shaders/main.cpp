@@ -181,7 +181,7 @@ public:
         buffers_.push_back(vkt::create_device_buffer(
             gpu, built.triangles.data(), built.triangles.size() * sizeof(uint32_t), storage));
         counters_ = vkt::create_host_buffer(
-            gpu, context.frames_in_flight * kCounters * sizeof(uint32_t), storage);
+            gpu, std::size_t(context.frames_in_flight) * kCounters * sizeof(uint32_t), storage);
         std::memset(counters_.mapped, 0, counters_.size);
         index_buffer_ =
             vkt::create_device_buffer(gpu, indices.data(), indices.size() * sizeof(uint32_t),
@@ -253,7 +253,8 @@ public:
         // This slot's counters were last written two frames ago, and the
         // runner has waited for that frame: zero them for this one (host
         // writes before the submit are visible to the GPU).
-        auto* counters = static_cast<uint32_t*>(counters_.mapped) + frame.slot * kCounters;
+        auto* counters =
+            static_cast<uint32_t*>(counters_.mapped) + std::size_t(frame.slot) * kCounters;
         std::fill(counters, counters + kCounters, 0u);
         // [/counters]
 
@@ -301,7 +302,7 @@ public:
         }
         // [report]
         const auto* counters =
-            static_cast<const uint32_t*>(counters_.mapped) + last_slot_ * kCounters;
+            static_cast<const uint32_t*>(counters_.mapped) + std::size_t(last_slot_) * kCounters;
         std::fprintf(stderr,
                      "26_mesh_shaders: the last frame culled %u of %u meshlets (%u outside the "
                      "frustum, %u facing away), drew %u meshlets, submitted %u of %u triangles\n",

@@ -97,8 +97,7 @@ TEST_CASE("a box dropped at any orientation bounces at every point it lands on",
         World world = floor_world();
         const float height = random(0.8f, 1.2f);
         // Half a diagonal (0.43 m) clears the floor whatever the turn.
-        world.add_box({0, height + 0.45f, 0}, glm::vec3(0.25f), 500.0f,
-                      random_orientation(random));
+        world.add_box({0, height + 0.45f, 0}, glm::vec3(0.25f), 500.0f, random_orientation(random));
         float worst = 0.0f;  // the largest error of e found, as a share of e
         int points = 0;
         for (int i = 0; i < 120 && points == 0; ++i) {

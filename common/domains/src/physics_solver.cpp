@@ -176,7 +176,7 @@ void Solver::restitution(const SolverSettings& s) {
         for (uint32_t k = 0; k < contacts_[i].count; ++k) {
             const Point& p = points_[contacts_[i].first + k];
             if (p.approach < -s.restitution_threshold && p.most_impulse > 0.0f)
-                bouncing_.push_back({i, contacts_[i].first + k});
+                bouncing_.emplace_back(i, contacts_[i].first + k);
         }
     // Many passes, as for any impulse solved point by point: a box landing
     // on an edge or three corners needs them to give each point e (four

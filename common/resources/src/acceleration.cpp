@@ -258,6 +258,7 @@ AccelerationScene build_scene(const Gpu& gpu, const AccelerationCommands& comman
     // rounded up to the alignment too (a buffer's own is only its memory's).
     const VkDeviceSize alignment = limits.minAccelerationStructureScratchOffsetAlignment;
     std::vector<VkDeviceSize> sizes;
+    sizes.reserve(pending.size());
     for (const Pending& p : pending) sizes.push_back(p.sizes.buildScratchSize);
     const std::vector<VkDeviceSize> offsets = scratch_offsets(sizes, alignment);
     const Buffer scratch = create_addressable_buffer(gpu, offsets.back() + alignment,
