@@ -54,9 +54,10 @@ struct Tuning {
     // scenes fastest on each kind of device (the performance part has the
     // measurements). On a CPU device the compute rasteriser, in every scene:
     // the graphics pipeline's lines and the binned tiles both cost more
-    // there. On a GPU the binned one from 100,000 lines on (250 8-cubes and
-    // more), where a tile gathers enough lines to pay for the binning; below
-    // that, and where the device cannot bin, the compute one.
+    // there. On a GPU the binned one from 100,000 lines on (250 7-cubes,
+    // 112,000 lines, and more; 250 6-cubes are 48,000), where a tile gathers
+    // enough lines to pay for the binning; below that, and where the device
+    // cannot bin, the compute one.
     std::string auto_raster(uint64_t lines, bool can_bin) const {
         if (cpu_device) return "compute";
         return can_bin && lines >= 100000 ? "binned" : "compute";

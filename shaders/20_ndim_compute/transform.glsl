@@ -81,7 +81,7 @@ void main() {
     ivec2 box_lo = ivec2(push.size), box_hi = ivec2(-1);  // empty
 #endif
     for (uint v = gl_GlobalInvocationID.x; v < o.vertex_count; v += stride) {
-        // x' = p + M x: N * N multiply-adds with the matrix the CPU built
+        // x' = p + M x: N * N multiply-adds with the matrix pose.comp built
         // once for the whole object. No sine, no cosine, no plane loop.
         const uint source = (o.first_vertex + v) * uint(N);
         float x[N];
