@@ -54,12 +54,14 @@ def main() -> None:
     s.text(x_end, y_at(up, x_end) - 8, "top-row plane", size=12, anchor="end", fill=PURPLE)
     s.text(x_end, y_at(down, x_end) + 18, "bottom-row plane", size=12, anchor="end", fill=PURPLE)
 
-    # What the tile's pixels see: an object's front, and the floor behind it.
+    # What the tile's pixels see: an object's front, and the farthest surface
+    # behind it (the floor, say, seen from above: a side view of depth only).
     oy0, oy1 = y_at(up, near) - 6, (y_at(up, near) + y_at(down, near)) / 2
     s.rect(near, oy0, 44, oy1 - oy0, fill="#c8d3df", stroke=GREY)
     s.text(near + 22, oy0 - 8, "object", size=12, anchor="middle", fill=MUTED)
     s.line(far, y_at(up, far) + 2, far, y_at(down, far) + 14, stroke=GREY, width=5)
-    s.text(far - 6, y_at(down, far) + 30, "floor", size=12, anchor="end", fill=MUTED)
+    s.text(far - 6, y_at(down, far) + 30, "farthest surface", size=12, anchor="end", fill=MUTED)
+    s.text(far - 6, y_at(down, far) + 45, "(e.g. the floor)", size=12, anchor="end", fill=MUTED)
 
     # The depth range.
     ry = ey + 138

@@ -70,6 +70,7 @@ inline void verify_brute(const vkt::Gpu& gpu, VkExtent2D e, uint32_t light_count
     const auto brute = vkt::deferred::host_colours(copies[0]),
                fragment = vkt::deferred::host_colours(copies[1]),
                compute = vkt::deferred::host_colours(copies[2]);
+    // [compare]
     const struct {
         const char* what;
         float difference;
@@ -97,6 +98,7 @@ inline void verify_brute(const vkt::Gpu& gpu, VkExtent2D e, uint32_t light_count
         if (!(r.difference <= tolerance))
             throw vkt::Error(std::string("--verify brute: ") + r.what + " differ by " +
                              std::to_string(r.difference) + ", above " + std::to_string(tolerance));
+    // [/compare]
 }
 // [/verify]
 

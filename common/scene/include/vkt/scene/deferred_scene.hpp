@@ -74,10 +74,12 @@ inline std::vector<Object> make_objects(float t) {
     return objects;
 }
 
-// N lights spread evenly over the floor (a sunflower spiral, a golden angle
-// apart), each circling its own spot at its own speed and height. More lights
-// get smaller radii, so that any point is reached by about 4 of them, and the
-// picture stays about as bright at any count.
+// N lights spread evenly over a disc of radius 5.5 in the middle of the
+// floor (a sunflower spiral, a golden angle apart), each circling its own spot
+// at its own speed and height. More lights get smaller radii: their circles
+// share 4 x 144, four times the square floor's area, so that a point inside
+// the disc (about 95 of those 144) is within about 6 lights' spheres and the
+// picture stays about as bright at any count; the floor's corners lie outside.
 inline std::vector<vkt::PointLight> make_lights(uint32_t count, float t) {
     const float radius = std::min(6.0f, std::sqrt(4.0f * 144.0f / (pi * float(count))));
     std::vector<vkt::PointLight> lights(count);
