@@ -17,6 +17,7 @@
 // more (what the fill could not store is dropped, and reported).
 
 #include "tile_pass.hpp"
+#include "vkt/core/barrier.hpp"
 #include "vkt/resources/compute.hpp"
 
 #include <algorithm>
@@ -88,21 +89,21 @@ public:
         constexpr auto write = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
         constexpr auto read_write = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | write;
         constexpr auto transfer = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;  // the fill's stage
-        memory_barrier(cmd, compute, write, transfer | compute,
-                       VK_ACCESS_2_TRANSFER_WRITE_BIT | read_write);
+        vkt::memory_barrier(cmd, compute, write, transfer | compute,
+                            VK_ACCESS_2_TRANSFER_WRITE_BIT | read_write);
         vkCmdFillBuffer(cmd, counts_.buffer, 0, VK_WHOLE_SIZE, 0);  // every bin empty
-        memory_barrier(cmd, transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT, compute, read_write);
+        vkt::memory_barrier(cmd, transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT, compute, read_write);
         const uint32_t groups = uint32_t(vkt::dispatch_count(light_count_, bin_group));
         const int32_t unused = 0;  // the layout's push constants; these shaders read none
         sets.bind(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, count_, &unused, sizeof unused);
         vkCmdDispatch(cmd, groups, 1, 1);
-        memory_barrier(cmd, compute, write, compute, read_write);
+        vkt::memory_barrier(cmd, compute, write, compute, read_write);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, scan_);
         vkCmdDispatch(cmd, 1, 1, 1);
-        memory_barrier(cmd, compute, write, compute, read_write);
+        vkt::memory_barrier(cmd, compute, write, compute, read_write);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, fill_);
         vkCmdDispatch(cmd, groups, 1, 1);
-        memory_barrier(cmd, compute, write, compute, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+        vkt::memory_barrier(cmd, compute, write, compute, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
     }
     // [/bin-record]
 
@@ -124,20 +125,6 @@ public:
     }
 
 private:
-    static void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage,
-                               VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage,
-                               VkAccessFlags2 dst_access) {
-        const VkMemoryBarrier2 barrier{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-                                       .srcStageMask = src_stage,
-                                       .srcAccessMask = src_access,
-                                       .dstStageMask = dst_stage,
-                                       .dstAccessMask = dst_access};
-        const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
-                                          .memoryBarrierCount = 1,
-                                          .pMemoryBarriers = &barrier};
-        vkCmdPipelineBarrier2(cmd, &dependency);
-    }
-
     // A device-local storage buffer, refused with its name where one
     // descriptor cannot see it whole.
     vkt::Buffer storage(VkDeviceSize bytes, const char* what, VkBufferUsageFlags more = 0) const {
