@@ -14,9 +14,10 @@
 // first use (07 and 08 read in 48-64 KiB more of libm around frame 3,700,
 // when their angles grow past where sin and cos change method), bounded by
 // the size of the files. Each block of 50 frames keeps its least sample;
-// growth is the rise from the second quarter's least to the last quarter's,
-// per frame, times the frames measured (soak_growth.hpp says why: a steady
-// leak reads at its full size). Live Vulkan objects and device allocations are exact counts,
+// growth is the lesser of two rises, second quarter's least to the third's and
+// third's to the last's, each per frame times the frames measured
+// (soak_growth.hpp says why: a steady leak reads at its full size, memory kept
+// once as none). Live Vulkan objects and device allocations are exact counts,
 // compared at frame VKT_SOAK_FROM and at the last frame. At exit it prints
 //   vkt_soak: frames 500..10000: resident +0 KiB (limit 64; file-backed +0
 //   KiB), heap +272 bytes (limit 16 KiB), Vulkan objects 18 -> 18, device
