@@ -77,19 +77,26 @@ if [ -x "$bin/16_deferred" ]; then
     [ $rc -eq 0 ] || status=1
   done
 fi
-# Chapter 23: the sphere grid against the CPU reference, the white furnace,
-# and the glTF model's and the bloom's pictures against their lavapipe goldens.
+# Chapter 23: the sphere grid against the CPU reference and the white furnace
+# (uniform sky), the furnace and the BRDF table through the image-based light,
+# the start-up cost of the image-based light in GPU time, and the uniform
+# sky's, the glTF model's and the bloom's pictures against their lavapipe
+# goldens.
 if [ -x "$bin/23_materials" ]; then
-  for v in "cpu" "furnace --scene furnace"; do
+  for v in "cpu --sky uniform" "furnace --scene furnace --sky uniform" \
+           "furnace --scene furnace --sky environment" "lut"; do
+    name=$(echo "$v" | tr -d -- '-' | tr ' ' '_')
     # shellcheck disable=SC2086  # the check and its scene are words
     "$bin/23_materials" --offscreen --validation --frames 10 --size 320x240 --verify $v \
-      >"$out/23_materials.verify_${v%% *}.txt" 2>&1; rc=$?
-    echo "23_materials --verify $v: exit $rc; $(grep -h -i -E 'verify|error' "$out/23_materials.verify_${v%% *}.txt" | tail -n 2 | tr '\n' ' ')"
+      >"$out/23_materials.verify_$name.txt" 2>&1; rc=$?
+    echo "23_materials --verify $v: exit $rc; $(grep -h -i -E 'verify|error|image-based' "$out/23_materials.verify_$name.txt" | tail -n 3 | tr '\n' ' ')"
     [ $rc -eq 0 ] || status=1
   done
   # NAME|PIXELS|ARGS, as tests/chapters/23_materials.cmake has them (the bloom
   # lights the corner a little: no hand-worked pixel there).
-  for run in "model|--pixel 0,0,59,69,92|--model assets/gltf/pbr_cubes.gltf" "bloom||--bloom 0.3"; do
+  for run in "uniform|--pixel 0,0,59,69,92|--sky uniform" \
+             "model|--pixel 0,0,59,69,92|--sky uniform --model assets/gltf/pbr_cubes.gltf" \
+             "bloom||--sky uniform --bloom 0.3"; do
     IFS='|' read -r name pixels extra <<<"$run"
     check "23_materials.$name" 23_materials "tests/golden/23_materials_$name.png" "$pixels" \
       "--headless --validation --frames 10 --size 320x240 $extra"; rc=$?

@@ -5,11 +5,15 @@
 // roughness 1, metallic 0, under a sky of radiance 1 and no lights).
 
 #include "vkt/scene/camera_math.hpp"
+#include "vkt/scene/gltf.hpp"
+#include "vkt/scene/meshes.hpp"
 #include "vkt/scene/pbr.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace grid {
@@ -59,6 +63,41 @@ inline glm::vec3 sky(bool furnace) {
 inline glm::mat4 clip_from_world(float aspect) {
     return vkt::vulkan_perspective(fov_y, aspect, 0.1f, 50.0f) *
            glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+}
+
+struct Camera {
+    glm::mat4 clip_from_world;
+    glm::vec3 eye;
+};
+inline Camera camera(float aspect) {
+    return {clip_from_world(aspect), eye};
+}
+// A glTF model's bounds, framed from in front, a little above and to the right.
+inline Camera frame_model(const vkt::GltfScene& scene, float aspect) {
+    const glm::vec3 centre = 0.5f * (scene.bounds_min + scene.bounds_max);
+    const float size = std::max(0.5f * glm::length(scene.bounds_max - scene.bounds_min), 1e-4f);
+    const float distance = size / std::sin(0.5f * fov_y * std::min(aspect, 1.0f));
+    const glm::vec3 at = centre + distance * glm::normalize(glm::vec3(0.35f, 0.3f, 1.0f));
+    return {vkt::vulkan_perspective(fov_y, aspect, 0.05f * size, distance + 2 * size) *
+                glm::lookAt(at, centre, glm::vec3(0.0f, 1.0f, 0.0f)),
+            at};
+}
+
+// The sphere grid (or the furnace's one sphere) as a glTF-like scene: one
+// UV sphere of diameter 1, drawn once per sphere, scaled to its radius.
+inline vkt::GltfScene sphere_scene(bool furnace) {
+    vkt::shapes::MeshBuilder builder;
+    const vkt::shapes::MeshRange sphere = builder.sphere(64, 32);
+    vkt::GltfScene scene;
+    for (const vkt::shapes::Vertex& v : builder.vertices)
+        scene.vertices.push_back({v.position, v.normal, glm::vec2(0.0f), glm::vec4(0.0f)});
+    scene.indices.assign(builder.indices.begin(), builder.indices.end());
+    scene.primitives.push_back(
+        {sphere.first_index, sphere.index_count, 0, uint32_t(scene.vertices.size()), 0});
+    for (const grid::Sphere& s : spheres(furnace))
+        scene.draws.push_back(
+            {0, glm::scale(glm::translate(glm::mat4(1.0f), s.centre), glm::vec3(2.0f * s.radius))});
+    return scene;
 }
 
 }  // namespace grid

@@ -11,6 +11,7 @@
 
 #include "blocks.hpp"
 #include "bloom.hpp"
+#include "environment.hpp"
 #include "grid.hpp"
 #include "materials.hpp"
 #include "verify.hpp"
@@ -24,14 +25,13 @@
 #include "vkt/resources/rendering.hpp"
 #include "vkt/resources/shader.hpp"
 #include "vkt/resources/upload.hpp"
-#include "vkt/scene/gltf.hpp"
-#include "vkt/scene/meshes.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -49,25 +49,16 @@ void check_flags(const vkt::Options& options) {
         throw vkt::UsageError("--model draws a glTF file: leave out --scene furnace");
     if (model && options.has("--verify"))
         throw vkt::UsageError("--verify checks the generated spheres: leave out --model");
-    if (options.has("--verify") && options.text("--verify") == "furnace" && !furnace)
+    const std::string verify = options.has("--verify") ? options.text("--verify") : "";
+    const bool uniform = options.text("--sky") == "uniform";
+    if (verify == "furnace" && !furnace)
         throw vkt::UsageError("--verify furnace needs --scene furnace");
-}
-
-// The sphere grid (or the furnace's one sphere) as a glTF-like scene: one
-// UV sphere of diameter 1, drawn once per sphere, scaled to its radius.
-vkt::GltfScene sphere_scene(bool furnace) {
-    vkt::shapes::MeshBuilder builder;
-    const vkt::shapes::MeshRange sphere = builder.sphere(64, 32);
-    vkt::GltfScene scene;
-    for (const vkt::shapes::Vertex& v : builder.vertices)
-        scene.vertices.push_back({v.position, v.normal, glm::vec2(0.0f), glm::vec4(0.0f)});
-    scene.indices.assign(builder.indices.begin(), builder.indices.end());
-    scene.primitives.push_back(
-        {sphere.first_index, sphere.index_count, 0, uint32_t(scene.vertices.size()), 0});
-    for (const grid::Sphere& s : grid::spheres(furnace))
-        scene.draws.push_back(
-            {0, glm::scale(glm::translate(glm::mat4(1.0f), s.centre), glm::vec3(2.0f * s.radius))});
-    return scene;
+    if (verify == "cpu" && !uniform)
+        throw vkt::UsageError(
+            "--verify cpu checks the uniform sky's CPU reference: add --sky uniform");
+    if (verify == "lut" && uniform)
+        throw vkt::UsageError(
+            "--verify lut checks the environment's BRDF table: leave out --sky uniform");
 }
 
 class Materials : public vkt::Renderer {
@@ -77,6 +68,7 @@ public:
           furnace_(context.options.text("--scene") == "furnace"),
           spheres_(grid::spheres(furnace_)),
           model_(context.options.has("--model")),
+          ibl_(context.options.text("--sky") == "environment"),
           verify_(context.options.has("--verify") ? context.options.text("--verify") : ""),
           exposure_(float(context.options.number("--exposure"))),
           tone_map_(context.options.text("--tone-map") == "aces" ? 0 : 1),
@@ -93,10 +85,16 @@ public:
                 std::fprintf(stderr, "23_materials: %s: warning: %s\n", path.c_str(),
                              warning.c_str());
         } else {
-            scene_ = sphere_scene(furnace_);
+            scene_ = grid::sphere_scene(furnace_);
         }
         // [/load]
         materials_.emplace(gpu_, scene_.materials, scene_.images);
+        // [make-environment]
+        // --sky environment: the sky and the split sum's three images, made
+        // before the first frame (environment.hpp); the sun is the key light's.
+        if (ibl_)
+            environment_.emplace(gpu_, context.chapter, grid::lights(false)[0].direction, furnace_);
+        // [/make-environment]
         vertices_ = vkt::create_device_buffer(gpu_, scene_.vertices.data(),
                                               scene_.vertices.size() * sizeof(vkt::GltfVertex),
                                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
@@ -142,12 +140,15 @@ public:
         };
         const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                        sizeof(DrawPush)};
-        const VkDescriptorSetLayout scene_sets[] = {frame_layout_, materials_->layout()};
-        scene_layout_ = vkt::create_pipeline_layout(gpu_.device, scene_sets, {&push, 1});
+        // Set 2, under the environment: its sky and the split sum's images.
+        const VkDescriptorSetLayout scene_sets[] = {frame_layout_, materials_->layout(),
+                                                    ibl_ ? environment_->layout() : VK_NULL_HANDLE};
+        scene_layout_ = vkt::create_pipeline_layout(
+            gpu_.device, std::span(scene_sets, ibl_ ? 3 : 2), {&push, 1});
         const vkt::ShaderModule vertex =
             vkt::load_shader(gpu_.device, context.chapter, "scene.vert");
         const vkt::ShaderModule fragment =
-            vkt::load_shader(gpu_.device, context.chapter, "scene.frag");
+            vkt::load_shader(gpu_.device, context.chapter, ibl_ ? "scene_ibl.frag" : "scene.frag");
         depth_format_ = vkt::choose_depth_format(gpu_.physical);
         scene_pipeline_ = vkt::create_graphics_pipeline(
             gpu_.device, {.vertex = vertex,
@@ -159,6 +160,13 @@ public:
                           .color_formats = {hdr_format},
                           .depth_format = depth_format_});
         // [/scene-pipeline]
+        const vkt::ShaderModule fullscreen =
+            vkt::load_shader(gpu_.device, context.chapter, "fullscreen.vert");
+        if (ibl_)
+            environment_->make_background(
+                scene_layout_, fullscreen,
+                vkt::load_shader(gpu_.device, context.chapter, "background.frag"), hdr_format,
+                depth_format_);
 
         // [tonemap-pipeline]
         // The second pass: one full-screen triangle into the _SRGB target,
@@ -168,8 +176,6 @@ public:
         const VkDescriptorSetLayout tonemap_sets[] = {hdr_layout_};
         tonemap_layout_ =
             vkt::create_pipeline_layout(gpu_.device, tonemap_sets, {&tonemap_push, 1});
-        const vkt::ShaderModule fullscreen =
-            vkt::load_shader(gpu_.device, context.chapter, "fullscreen.vert");
         const vkt::ShaderModule tonemap =
             vkt::load_shader(gpu_.device, context.chapter, "tonemap.frag");
         tonemap_pipeline_ =
@@ -191,12 +197,13 @@ public:
         // [/check-format]
         resize(context.extent);
         std::fprintf(stderr,
-                     "23_materials: %s, HDR target R16G16B16A16_SFLOAT, exposure %+.2f EV (x%.3f), "
-                     "tone map %s, bloom %.2f\n",
+                     "23_materials: %s, sky %s, HDR target R16G16B16A16_SFLOAT, exposure %+.2f EV "
+                     "(x%.3f), tone map %s, bloom %.2f\n",
                      model_     ? "a glTF model"
                      : furnace_ ? "the white furnace"
                                 : "the sphere grid",
-                     double(exposure_), std::exp2(double(exposure_)),
+                     ibl_ ? "environment (image-based light)" : "uniform", double(exposure_),
+                     std::exp2(double(exposure_)),
                      tone_map_ == 0 ? "ACES (Narkowicz's fit)" : "clamp", double(bloom_strength_));
     }
 
@@ -254,14 +261,15 @@ public:
             auto scope = frame.gpu_scope("scene");
             vkt::begin_rendering(cmd, hdr_.view, frame.extent, {{sky.r, sky.g, sky.b, 1.0f}},
                                  depth_.view);
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, scene_pipeline_);
             vkt::set_viewport_and_scissor(cmd, frame.extent);
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, scene_layout_, 0, 1,
+                                    &frame_set_, 0, nullptr);
+            if (ibl_) environment_->draw_background(cmd, scene_layout_);
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, scene_pipeline_);
             const VkBuffer buffer = vertices_.buffer;
             const VkDeviceSize offset = 0;
             vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
             vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
-            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, scene_layout_, 0, 1,
-                                    &frame_set_, 0, nullptr);
             for (size_t d = 0; d < scene_.draws.size(); ++d) {
                 const vkt::GltfDraw& draw = scene_.draws[d];
                 const vkt::GltfPrimitive& primitive = scene_.primitives[draw.primitive];
@@ -317,6 +325,11 @@ public:
     // --verify: the last frame's HDR image against the CPU reference.
     void verify() override {
         if (verify_.empty()) return;
+        if (verify_ == "lut")
+            return verify::check_lut(
+                verify::read_hdr(gpu_, environment_->lut(),
+                                 {Environment::lut_size, Environment::lut_size}),
+                Environment::lut_size, Environment::lut_samples);
         verify::check(verify_, verify::read_hdr(gpu_, hdr_.image, extent_), extent_, furnace_);
     }
 
@@ -326,25 +339,20 @@ private:
     void write_frame_block() {
         const float aspect = float(extent_.width) / float(extent_.height);
         FrameBlock block{};
-        block.clip_from_world = grid::clip_from_world(aspect);
-        block.eye = glm::vec4(grid::eye, 1.0f);
-        if (model_) {
-            const glm::vec3 centre = 0.5f * (scene_.bounds_min + scene_.bounds_max);
-            const float radius =
-                std::max(0.5f * glm::length(scene_.bounds_max - scene_.bounds_min), 1e-4f);
-            const float distance = radius / std::sin(0.5f * grid::fov_y * std::min(aspect, 1.0f));
-            const glm::vec3 eye = centre + distance * glm::normalize(glm::vec3(0.35f, 0.3f, 1.0f));
-            block.clip_from_world = vkt::vulkan_perspective(grid::fov_y, aspect, 0.05f * radius,
-                                                            distance + 2 * radius) *
-                                    glm::lookAt(eye, centre, glm::vec3(0.0f, 1.0f, 0.0f));
-            block.eye = glm::vec4(eye, 1.0f);
-        }
+        const grid::Camera camera =
+            model_ ? grid::frame_model(scene_, aspect) : grid::camera(aspect);
+        block.clip_from_world = camera.clip_from_world;
+        block.eye = glm::vec4(camera.eye, 1.0f);
         const auto lights = grid::lights(furnace_);
         for (int i = 0; i < 2; ++i) {
             block.light_direction[i] = glm::vec4(lights[size_t(i)].direction, 0.0f);
             block.light_radiance[i] = glm::vec4(lights[size_t(i)].radiance, 0.0f);
         }
-        block.sky = glm::vec4(sky_scale_ * grid::sky(furnace_), float(grid::sky_samples));
+        block.world_from_clip = glm::inverse(block.clip_from_world);
+        block.viewport = glm::vec4(float(extent_.width), float(extent_.height), 0.0f, 0.0f);
+        // The uniform sky and its samples, or the environment's strength.
+        block.sky = ibl_ ? glm::vec4(glm::vec3(sky_scale_), 0.0f)
+                         : glm::vec4(sky_scale_ * grid::sky(furnace_), float(grid::sky_samples));
         std::memcpy(frame_buffer_.mapped, &block, sizeof block);
     }
 
@@ -352,6 +360,7 @@ private:
     bool furnace_;
     std::vector<grid::Sphere> spheres_;  // the grid's materials (or the furnace's one)
     bool model_;
+    bool ibl_;            // --sky environment
     std::string verify_;  // the check, or empty
     float exposure_;      // in stops (EV): the tone-mapping pass multiplies by 2^exposure_
     uint32_t tone_map_;   // 0: ACES, 1: clamp
@@ -361,6 +370,7 @@ private:
     VkExtent2D extent_{};
     vkt::GltfScene scene_;
     std::optional<MaterialSets> materials_;
+    std::optional<Environment> environment_;
     vkt::Buffer vertices_, indices_, frame_buffer_;
     vkt::DescriptorSetLayout frame_layout_, hdr_layout_;
     vkt::DescriptorPool pool_;
@@ -404,6 +414,13 @@ int main(int argc, char** argv) {
          .help = "grid: spheres, metallic x roughness; furnace: a white sphere under a white sky",
          .default_value = "grid",
          .choices = {"grid", "furnace"}},
+        {.name = "--sky",
+         .type = vkt::OptionType::choice,
+         .value_name = "SKY",
+         .help = "environment: a generated HDR sky, image-based light (split sum); uniform: one "
+                 "radiance from everywhere, sampled per pixel",
+         .default_value = "environment",
+         .choices = {"environment", "uniform"}},
         {.name = "--bloom",
          .type = vkt::OptionType::number,
          .value_name = "F",
@@ -419,8 +436,9 @@ int main(int argc, char** argv) {
         {.name = "--verify",
          .type = vkt::OptionType::choice,
          .value_name = "CHECK",
-         .help = "check the last frame: cpu (against the CPU reference), furnace",
-         .choices = {"cpu", "furnace"}},
+         .help = "check the last frame: cpu (against the CPU reference), furnace; or lut (the "
+                 "BRDF table against the CPU's)",
+         .choices = {"cpu", "furnace", "lut"}},
     };
     spec.check_options = check_flags;
     // [/spec]

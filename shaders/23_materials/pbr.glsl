@@ -94,6 +94,33 @@ vec3 environment(vec3 n, vec3 v, Material m, vec3 sky, uint count) {
 }
 // [/environment]
 
+// [split-sum-lut]
+// The split sum's second factor, for the view at n.v and a roughness: the
+// specular lobe's integral of F V n.l / pdf with Schlick's F written as
+// F0 (1 - Fc) + Fc, Fc = (1 - v.h)^5, so that F0 comes out of it:
+// F0 A + B is the share of the light the lobe reflects (GGX half vectors,
+// each weighing 4 V n.l v.h / n.h, as environment() above).
+vec2 split_sum_lut(float n_dot_v, float roughness, uint count) {
+    vec3 v = vec3(sqrt(1.0 - n_dot_v * n_dot_v), 0.0, n_dot_v);  // n = (0, 0, 1)
+    float alpha = max(roughness * roughness, 1e-3);
+    vec2 sum = vec2(0.0);
+    for (uint i = 0u; i < count; ++i) {
+        vec2 u = hammersley(i, count);
+        float phi = 2.0 * PI * u.y;
+        float cos_h = sqrt((1.0 - u.x) / (1.0 + (alpha * alpha - 1.0) * u.x));
+        float sin_h = sqrt(max(0.0, 1.0 - cos_h * cos_h));
+        vec3 h = vec3(sin_h * cos(phi), sin_h * sin(phi), cos_h);
+        float v_dot_h = dot(v, h);
+        float n_dot_l = 2.0 * v_dot_h * cos_h - n_dot_v;  // l = 2 (v.h) h - v
+        if (n_dot_l <= 0.0 || v_dot_h <= 0.0) continue;
+        float g = visibility_smith(n_dot_l, n_dot_v, alpha) * (4.0 * n_dot_l * v_dot_h / cos_h);
+        float fc = pow(1.0 - v_dot_h, 5.0);
+        sum += vec2(1.0 - fc, fc) * g;
+    }
+    return sum / float(count);
+}
+// [/split-sum-lut]
+
 // [aces]
 // Krzysztof Narkowicz's fit of the ACES filmic curve (2015).
 vec3 aces_narkowicz(vec3 x) {

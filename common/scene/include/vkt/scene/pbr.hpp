@@ -3,9 +3,9 @@
 // BRDF (Cook-Torrance with the GGX distribution, Smith's height-correlated
 // masking-shadowing and Schlick's Fresnel, as glTF 2.0's appendix B writes
 // it), the uniform environment the chapter integrates by a fixed set of
-// samples, and the ACES tone curve. shaders/23_materials/pbr.glsl is the
-// same mathematics in GLSL, line for line; the chapter's --verify compares
-// the two, and tests/unit/test_pbr.cpp checks the properties the page derives.
+// samples, the split sum's BRDF table, and the ACES tone curve. shaders/23_materials/pbr.glsl is
+// the same mathematics in GLSL, line for line; the chapter's --verify compares the two, and
+// tests/unit/test_pbr.cpp checks the properties the page derives.
 
 #include <glm/glm.hpp>
 
@@ -129,6 +129,32 @@ inline glm::vec3 environment(glm::vec3 n, glm::vec3 v, const Material& m, glm::v
                    (4.0f * n_dot_l * v_dot_h / cos_h);
     }
     return sky * sum / float(count);
+}
+
+// The split sum's second factor (chapter 23's BRDF lookup table), for the
+// view at n.v and a roughness: the specular lobe's integral of F V n.l / pdf
+// with Schlick's F written as F0 (1 - Fc) + Fc, Fc = (1 - v.h)^5, so that
+// F0 A + B is the share of the light the lobe reflects; `count` GGX half
+// vectors, each weighing 4 V n.l v.h / n.h, as environment() above.
+inline glm::vec2 split_sum_lut(float n_dot_v, float roughness, uint32_t count) {
+    const glm::vec3 v(std::sqrt(1.0f - n_dot_v * n_dot_v), 0.0f, n_dot_v);  // n = (0, 0, 1)
+    const float alpha = std::max(roughness * roughness, 1e-3f);
+    glm::vec2 sum(0.0f);
+    for (uint32_t i = 0; i < count; ++i) {
+        const glm::vec2 u = hammersley(i, count);
+        const float phi = 2.0f * pi * u.y;
+        const float cos_h = std::sqrt((1.0f - u.x) / (1.0f + (alpha * alpha - 1.0f) * u.x));
+        const float sin_h = std::sqrt(std::max(0.0f, 1.0f - cos_h * cos_h));
+        const glm::vec3 h(sin_h * std::cos(phi), sin_h * std::sin(phi), cos_h);
+        const float v_dot_h = glm::dot(v, h);
+        const float n_dot_l = 2.0f * v_dot_h * cos_h - n_dot_v;  // l = 2 (v.h) h - v
+        if (n_dot_l <= 0.0f || v_dot_h <= 0.0f) continue;
+        const float g =
+            visibility_smith(n_dot_l, n_dot_v, alpha) * (4.0f * n_dot_l * v_dot_h / cos_h);
+        const float fc = std::pow(1.0f - v_dot_h, 5.0f);
+        sum += glm::vec2(1.0f - fc, fc) * g;
+    }
+    return sum / float(count);
 }
 
 // The radiance leaving a surface point towards v: every light, and the sky.
