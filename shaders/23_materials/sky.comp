@@ -3,7 +3,7 @@
 // Chapter 23's environment: level 0 of the sky's cube map, made at start-up
 // from a formula (no file): a blue gradient above the horizon, a bright sun
 // where the key light is, and a darker ground. Radiance, as the scene pass
-// writes it: the sun's disc is 60 times as bright as the sky around it.
+// writes it: the sun's disc is over a hundred times as bright as the sky.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "pbr.glsl"
 #include "cube.glsl"
