@@ -1,8 +1,8 @@
 """Chapter 23: the split sum's BRDF table, drawn with matplotlib when the book is built.
 
 A and B of split_sum_lut (shaders/23_materials/pbr.glsl, and in C++
-common/scene/include/vkt/scene/pbr.hpp), the same formula and the same 1024
-Hammersley samples the chapter's table takes per texel, against n.v for three
+common/scene/include/vkt/scene/pbr.hpp), the same formula and the same Hammersley samples (Environment::lut_samples)
+the chapter's table takes per texel, against n.v for three
 roughnesses. F0 A + B is the share of the light the specular lobe reflects.
 Prints the SVG; text stays text (the ids title, x-axis-label, y-axis-label and
 legend, as the book's other charts). Needs python3-matplotlib (and numpy,
@@ -11,8 +11,13 @@ which it brings).
 
 import io
 import sys
+from pathlib import Path
 
-SAMPLES = 1024  # Environment::lut_samples in chapters/23_materials/environment.hpp
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+from source_constants import constant  # noqa: E402  (book/, above this folder)
+
+ENVIRONMENT_HPP = Path(__file__).resolve().parents[2] / "chapters" / "23_materials" / "environment.hpp"
+SAMPLES = int(constant(ENVIRONMENT_HPP, "lut_samples"))  # Environment::lut_samples
 
 
 def hammersley(count: int):
