@@ -21,9 +21,9 @@ and title). Needs Debian's python3-matplotlib; run it with /usr/bin/python3.
 
 The charts (CHARTS below):
   14_physics_bench.svg                   results/physics.jsonl (physics_bench)
-  17_tiled_deferred_bench_lavapipe.svg   results/17_tiled_deferred-lavapipe.md (bench-lights.sh --tiled)
+  17_tiled_deferred_bench_lavapipe.svg   results/2026-11-27-quiet-17_tiled_deferred-lavapipe.md (bench-lights.sh --tiled)
   17_tiled_deferred_bench_h100.svg       results/17_tiled_deferred-h100.md
-  20_ndim_compute_bench.svg              results/2026-11-23-idle-{18,19,20}_*-lavapipe.txt
+  20_ndim_compute_bench.svg              results/2026-11-27-quiet-{18,19,20}_*-lavapipe.txt
 """
 
 from __future__ import annotations
@@ -95,7 +95,8 @@ def number(cell: str) -> float | None:
 
 
 def table_rows(path: Path) -> list[dict]:
-    """The rows of a Markdown table, as {header: cell}."""
+    """The rows of a Markdown table, as {header: cell}; a file of several runs holds one
+    table per run, each with the same header, and gives all their rows."""
     rows, header = [], None
     for line in path.read_text().splitlines():
         if not line.startswith("|"):
@@ -103,7 +104,7 @@ def table_rows(path: Path) -> list[dict]:
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
         if header is None:
             header = cells
-        elif not set("".join(cells)) <= set("-: "):
+        elif cells != header and not set("".join(cells)) <= set("-: "):
             rows.append(dict(zip(header, cells)))
     return rows
 
@@ -153,24 +154,42 @@ def draw_physics(chart: Chart, ax) -> tuple[str, str]:
 
 
 def draw_lights(chart: Chart, ax) -> tuple[str, str]:
+    """GPU time against lights for chapter 16's paths and 17's; where the file holds several
+    runs (one table each), each point is the median of the runs' medians, with a bar from
+    the fastest run to the slowest."""
     path = chart.paths()[0]
     rows = table_rows(path)
-    lights = [number(r["lights"]) for r in rows]
-    series = [("forward ms", "forward (chapter 16's forward path)", RED, "o"),
-              ("deferred ms (G-buffer + lighting)", "deferred (chapter 16)", ORANGE, "o"),
-              ("tiled fragment ms", "tiled, fragment lighting", BLUE, "s"),
-              ("tiled compute ms", "tiled, compute lighting", CYAN, "s")]
+    lights = sorted({number(r["lights"]) for r in rows})
+    series = [("forward ms", "forward (chapter 16's forward path)", RED, "o", -0.06),
+              ("deferred ms (G-buffer + lighting)", "deferred (chapter 16)", ORANGE, "o", -0.02),
+              ("tiled fragment ms", "tiled, fragment lighting", BLUE, "s", 0.02),
+              ("tiled compute ms", "tiled, compute lighting", CYAN, "s", 0.06)]
     missing: dict[float, list[str]] = {}
-    for column, label, colour, marker in series:
-        points = [(x, number(r[column])) for x, r in zip(lights, rows) if number(r[column]) is not None]
-        ax.plot([p[0] for p in points], [p[1] for p in points], "-", marker=marker, color=colour, label=label,
-                linewidth=2, markersize=5)
-        for x, r in zip(lights, rows):
-            if number(r[column]) is None:
+    runs = set()
+    for column, label, colour, marker, shift in series:
+        points = {}
+        for r in rows:
+            value = number(r[column])
+            if value is not None:
+                points.setdefault(number(r["lights"]), []).append(value)
+        xs = sorted(points)
+        ms = [statistics.median(points[x]) for x in xs]
+        ax.plot(xs, ms, "-", marker=marker, color=colour, label=label, linewidth=2, markersize=5)
+        for x, m in zip(xs, ms):
+            runs.add(len(points[x]))
+            if len(points[x]) > 1:  # the spread, offset a little sideways per series (log axis)
+                low, high = min(points[x]), max(points[x])
+                ax.errorbar([x * 4 ** shift], [m], yerr=[[m - low], [high - m]], fmt="none",
+                            ecolor=colour, elinewidth=1.3, capsize=4, capthick=1.3, zorder=3)
+        for x in lights:
+            if x not in points:
                 missing.setdefault(x, []).append(label.split(" (")[0])
     # Every point the table lacks is named under the chart, with the reason the results give.
     notes = [f"No {' or '.join(names)} point at {int(x):,} lights: {chart.options.get('missing', 'not measured')}"
              for x, names in sorted(missing.items())]
+    if max(runs) > 1:
+        notes.append(f"Each point: the median of {max(runs)} runs' medians (3 frames each), the bar from "
+                     f"the fastest run to the slowest.")
     if chart.options.get("repeats"):
         notes.append(chart.options["repeats"])
     chart.options["notes"] = notes
@@ -257,16 +276,16 @@ CHARTS = [
     Chart("14_physics_bench.svg", ["physics.jsonl"], draw_physics,
           {"title": "Chapter 14: one physics step against the number of boxes",
            "device": "CPU only: AMD EPYC, one thread", "budgets": PHYSICS_BUDGETS}),
-    Chart("17_tiled_deferred_bench_lavapipe.svg", ["17_tiled_deferred-lavapipe.md"], draw_lights,
+    Chart("17_tiled_deferred_bench_lavapipe.svg", ["2026-11-27-quiet-17_tiled_deferred-lavapipe.md"],
+          draw_lights,
           {"title": "Chapters 16 and 17: GPU time per frame against the number of lights",
-           "missing": "not run (minutes a frame; 16,384 lights took 132 s forward)",
-           "repeats": "One run per point (the median of 3 frames; 1 at 16,384), on a machine under load: "
-                      "no spread measured, so wiggles between neighbouring points may be noise."}),
+           "repeats": "65,536 lights not run: forward and deferred take 16-21 s a frame at 16,384 "
+                      "lights, about four times that at 65,536."}),
     Chart("17_tiled_deferred_bench_h100.svg", ["17_tiled_deferred-h100.md"], draw_lights,
           {"title": "Chapters 16 and 17: GPU time per frame against the number of lights"}),
-    Chart("20_ndim_compute_bench.svg", ["2026-11-23-idle-18_ndim_cpu-lavapipe.txt",
-                                        "2026-11-23-idle-19_ndim_gpu-lavapipe.txt",
-                                        "2026-11-23-idle-20_ndim_compute-lavapipe.txt"], draw_ndim,
+    Chart("20_ndim_compute_bench.svg", ["2026-11-27-quiet-18_ndim_cpu-lavapipe.txt",
+                                        "2026-11-27-quiet-19_ndim_gpu-lavapipe.txt",
+                                        "2026-11-27-quiet-20_ndim_compute-lavapipe.txt"], draw_ndim,
           {"title": "Chapters 18 to 20: frame time against the number of dimensions"}),
 ]
 

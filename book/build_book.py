@@ -99,7 +99,8 @@ except ImportError as missing:  # pragma: no cover - depends on the machine
 # The folders whose markers must all be quoted by some page, and the files
 # there that can hold markers.
 MARKER_DIRS = ("chapters", "common", "shaders")
-MARKER_SUFFIXES = (".cpp", ".hpp", ".vert", ".frag", ".comp", ".glsl")
+MARKER_SUFFIXES = (".cpp", ".hpp", ".vert", ".frag", ".comp", ".glsl", ".task", ".mesh", ".rgen", ".rchit",
+                   ".rmiss")
 
 MARKER_RE = re.compile(r"^// \[(/?)([A-Za-z0-9_-]+)\]$")
 # A comment line that is only a bracketed word but not exactly "// [name]":

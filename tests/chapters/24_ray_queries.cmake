@@ -70,6 +70,14 @@ foreach(missing VK_KHR_ray_query VK_KHR_acceleration_structure VK_KHR_deferred_h
     ARGS --headless --frames 1 ENV VKT_HIDE_FEATURES=${missing}
     EXPECT "no Vulkan device can run this chapter; .* lacks the extension ${missing} \\(hidden by VKT_HIDE_FEATURES\\)")
 endforeach()
+foreach(missing rayQuery:VK_KHR_ray_query accelerationStructure:VK_KHR_acceleration_structure)
+  string(REPLACE ":" ";" pair ${missing})
+  list(GET pair 0 feature)
+  list(GET pair 1 extension)
+  vkt_chapter_test(bad_input.24_ray_queries.no_${feature} 24_ray_queries EXIT 1
+    ARGS --headless --frames 1 ENV VKT_HIDE_FEATURES=${feature}
+    EXPECT "no Vulkan device can run this chapter; .* lacks the ${feature} feature of ${extension} \\(hidden by VKT_HIDE_FEATURES\\)")
+endforeach()
 vkt_chapter_test(bad_input.24_ray_queries.no_bufferDeviceAddress 24_ray_queries EXIT 1
   ARGS --headless --frames 1 ENV VKT_HIDE_FEATURES=bufferDeviceAddress
   EXPECT "no Vulkan device can run this chapter; .* lacks the bufferDeviceAddress feature")

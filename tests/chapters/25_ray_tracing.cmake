@@ -45,6 +45,9 @@ vkt_chapter_test(chapter.25_ray_tracing.help 25_ray_tracing EXIT 0 ARGS --help
 vkt_chapter_test(bad_input.25_ray_tracing.no_pipeline 25_ray_tracing EXIT 1
   ARGS --headless --frames 1 ENV VKT_HIDE_FEATURES=VK_KHR_ray_tracing_pipeline
   EXPECT "lacks the extension VK_KHR_ray_tracing_pipeline \\(hidden by VKT_HIDE_FEATURES\\)")
+vkt_chapter_test(bad_input.25_ray_tracing.no_pipeline_feature 25_ray_tracing EXIT 1
+  ARGS --headless --frames 1 ENV VKT_HIDE_FEATURES=rayTracingPipeline
+  EXPECT "lacks the rayTracingPipeline feature of VK_KHR_ray_tracing_pipeline \\(hidden by VKT_HIDE_FEATURES\\)")
 vkt_chapter_test(bad_input.25_ray_tracing.no_structures 25_ray_tracing EXIT 1
   ARGS --headless --frames 1 ENV VKT_HIDE_FEATURES=VK_KHR_acceleration_structure
   EXPECT "lacks the extension VK_KHR_acceleration_structure \\(hidden by VKT_HIDE_FEATURES\\)")

@@ -1,4 +1,5 @@
 #include "vkt/core/device.hpp"
+#include "vkt/core/extension_features.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -152,6 +153,12 @@ static std::string why_unsuitable(VkPhysicalDevice device, VkSurfaceKHR surface,
     const std::vector<VkExtensionProperties> offered = extensions_of(device);
     for (const char* wanted : requirements.extensions)
         if (!offers(offered, wanted) || hidden_by_tests(wanted)) return lacks_extension(wanted);
+    // The features of those extensions that the chapter turns on
+    // (vkt/core/extension_features.hpp): asked only now that the device is
+    // known to offer the extensions.
+    if (std::string missing = extension_feature_shortfall(device, requirements.extension_features);
+        !missing.empty())
+        return missing;
     std::string shortfall = portability_shortfall(offered, portability_features_of(device, offered),
                                                   requirements.portability_features);
     if (!shortfall.empty()) return shortfall;
