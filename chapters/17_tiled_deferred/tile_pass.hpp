@@ -208,6 +208,11 @@ private:
                 "to the target");
     }
 
+    // [tiles-to-write]
+    // Before a dispatch writes the lists: the last frame's lighting (a
+    // fragment pass, or --shade lists' compute pass) must have finished
+    // reading them, a write after a read; the source access also orders
+    // these writes after the last frame's cull wrote them.
     void tiles_to_write(VkCommandBuffer cmd) const {
         const VkBuffer buffers[] = {counts_.buffer, lists_.buffer};
         for (VkBuffer buffer : buffers)
@@ -217,6 +222,7 @@ private:
                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     }
+    // [/tiles-to-write]
 
     static void stats_to_host(VkCommandBuffer cmd, VkBuffer stats) {
         vkt::buffer_barrier(cmd, stats, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,

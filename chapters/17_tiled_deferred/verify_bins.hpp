@@ -95,7 +95,8 @@ inline void verify_bins(const vkt::Gpu& gpu, VkExtent2D e, uint32_t light_count,
 
     // Tile by tile: the same count, and the same lights in any order (each
     // list is in the order its tile's atomics ran). A list that overflowed
-    // keeps whichever 1,024 came first, so there only the counts must agree.
+    // keeps whichever 2,048 (max_tile_lights) came first, so there only the
+    // counts must agree.
     const auto* counts = static_cast<const uint32_t*>(lists[0].counts.mapped);
     const auto* binned_counts = static_cast<const uint32_t*>(lists[1].counts.mapped);
     uint32_t differ = 0, overflowed = 0, first_differ = 0;

@@ -31,11 +31,13 @@ shared uint list[MAX_TILE_LIGHTS];              // the first MAX_TILE_LIGHTS of 
 #define TILE_LIGHT(i) list[i]
 #include "tiled_shading.glsl"
 
+// [keep]
 // Appends a light that touches the tile to the shared list.
 void keep(uint light) {
     uint slot = atomicAdd(found, 1);
     if (slot < MAX_TILE_LIGHTS) list[slot] = light;  // beyond: counted, not stored
 }
+// [/keep]
 
 // [cull-binned]
 // --cull binned: the test is the same, but only the tile's candidates take it,

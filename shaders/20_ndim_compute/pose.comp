@@ -8,7 +8,7 @@
 // changes only entries i and j of a column). The transform pass reads M and
 // the position as before (transform.glsl).
 
-layout(local_size_x = 32) in;  // a column each: n is at most 20
+layout(local_size_x = 32) in;  // a column each: --dim is at most 12
 layout(constant_id = 0) const int N = 4;
 const int PLANES = N * (N - 1) / 2;
 

@@ -31,12 +31,14 @@ layout(std430, set = 0, binding = 3) writeonly buffer Out { Projected projected[
 #include "bins.glsl"
 #endif
 
+// [pose-rows]
 // This workgroup's object's pose, read from memory once per workgroup: the
 // rows of M, each padded with zeros to whole vec4s, then p. A GPU reads
 // shared memory 16 bytes at a time as cheaply as 4, and every invocation
 // reads the whole matrix for each vertex: vec4s take a quarter of the loads.
 const int Q = (N + 3) / 4;  // vec4s per row
 shared vec4 pose[N * Q + Q];
+// [/pose-rows]
 #ifdef BOXES
 // The workgroup's box, merged from its subgroups' (bins.glsl's order:
 // 0xffff - lo.x, 0xffff - lo.y, hi.x, hi.y; all zeros is empty).

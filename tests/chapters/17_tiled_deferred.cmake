@@ -17,6 +17,10 @@ vkt_chapter_window_test(17_tiled_deferred PIXEL 0,0,39,39,56)
 # too, where the blit's target is then copied to the swapchain image.
 vkt_chapter_test(chapter.17_tiled_deferred.compute 17_tiled_deferred GOLDEN ${VKT_17_PIXEL}
   ARGS ${headless} --shade compute EXPECT "shade compute")
+# --shade lists with the default --cull binned: the same golden image too
+# (the cull_tiled_* tests below run every --shade with --cull tiled).
+vkt_chapter_test(chapter.17_tiled_deferred.lists 17_tiled_deferred GOLDEN ${VKT_17_PIXEL}
+  ARGS ${headless} --shade lists EXPECT "shade lists, view lit, cull binned")
 if(XVFB_RUN)
   set(test chapter.17_tiled_deferred.window_compute)
   add_test(NAME ${test}

@@ -86,10 +86,12 @@ TEST_CASE("a tower of 20 boxes stands still for 30 s", "[physics]") {
         // sinks about 8 mm (19 soft contacts, each under the boxes above it).
         for (int i = 0; i < 120; ++i) world.step();
         CHECK(world.bodies()[20].position.y == Approx(9.75f).margin(0.01f));
-        // Then it stands: for 30 s more no box moves a millimetre asleep, or
-        // 5 mm awake, and none turns half a degree.
+        // Then it stands: for 30 s more no box moves a millimetre, asleep or
+        // awake, and none turns half a degree. (Awake, the top box swayed
+        // 1-4 mm while every pass solved each contact's points in the same
+        // order; the solver's passes now start at each point in turn.)
         const Stillness s = watch(world, 30.0f);
-        CHECK(s.most_moved < (sleeping ? 0.001f : 0.005f));
+        CHECK(s.most_moved < 0.001f);
         CHECK(s.most_turned < 0.5f);
     }
 }

@@ -105,11 +105,20 @@ void apply(State& a, State& b, const Row& row, glm::vec3 d, float impulse) {
 // friction at each. `soft`: with the
 // spring that pushes overlap apart; without it (relaxing), the normal only
 // stops the approach, so the push's speed does not stay in the bodies.
+// Each pass starts at the next of a contact's points: the point solved first
+// in a pass takes more of the load than its share (the others then correct
+// for it), and always the same one would tip the box a little towards it,
+// every pass. A 20-box tower, awake, swayed 1-2 mm at the top that way; with
+// the start going round, 0.03 mm in 30 s.
 void Solver::solve_contacts(const SolverSettings& s, float h, bool soft) {
+    const uint32_t start = passes_++;
     for (const Contact& c : contacts_) {
         State a = states_[c.a], b = states_[c.b];  // copies, stored back below
         const Softness& spring = c.static_other ? soft_static_ : soft_;
-        for (uint32_t k = 0; k < c.count; ++k) {
+        // The first point this pass, then round: at most 4 points, so no
+        // division per point (the modulo per point cost 4% of a step).
+        uint32_t k = c.count == 4 ? start & 3u : start % c.count;
+        for (uint32_t i = 0; i < c.count; ++i, k = k + 1 == c.count ? 0 : k + 1) {
             Point& p = points_[c.first + k];
             // The separation now, to first order: the step's start plus how
             // far the two bodies have moved and turned along the normal since.

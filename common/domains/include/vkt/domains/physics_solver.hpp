@@ -89,6 +89,9 @@ private:
     std::vector<glm::vec3> centres_;           // at the step's start
     std::vector<glm::mat3> inverse_inertias_;  // world space, fixed for the step
     std::vector<Contact> contacts_;
+    // Passes made over the contacts so far: where each pass starts among a
+    // contact's points (solve_contacts says why).
+    uint32_t passes_ = 0;
     std::vector<Point> points_;
     std::vector<std::pair<uint32_t, uint32_t>> bouncing_;  // (contact, point) that bounce this step
     Softness soft_{}, soft_static_{};

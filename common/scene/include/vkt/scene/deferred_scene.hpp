@@ -78,8 +78,10 @@ inline std::vector<Object> make_objects(float t) {
 // floor (a sunflower spiral, a golden angle apart), each circling its own spot
 // at its own speed and height. More lights get smaller radii: their circles
 // share 4 x 144, four times the square floor's area, so that a point inside
-// the disc (about 95 of those 144) is within about 6 lights' spheres and the
-// picture stays about as bright at any count; the floor's corners lie outside.
+// the disc (about 95 of those 144) lies under about 6 lights' circles (seen
+// from above: the lights hang over the floor, so fewer of their spheres reach
+// it) and the picture stays about as bright at any count; the floor's corners
+// lie outside.
 inline std::vector<vkt::PointLight> make_lights(uint32_t count, float t) {
     const float radius = std::min(6.0f, std::sqrt(4.0f * 144.0f / (pi * float(count))));
     std::vector<vkt::PointLight> lights(count);

@@ -1,7 +1,7 @@
 #pragma once
 // Chapter 16's lights (make_lights in deferred_scene.hpp), made fast enough
 // for chapter 17's million. make_lights works out every light from scratch
-// each frame: eight sines and cosines a light, half a second for 1,048,576 of
+// each frame: seven sines and cosines a light, half a second for 1,048,576 of
 // them on one core. Most of it does not change with time (each light's home
 // spot, speed, radius, colour and intensity), so MovingLights works that out
 // once (its home and its path); a frame then computes only where each light
