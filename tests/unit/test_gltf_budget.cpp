@@ -5,16 +5,13 @@
 // folder, and removed.
 
 #include "base64.hpp"
+#include "peak_resident.hpp"
 #include "vkt/core/check.hpp"
 #include "vkt/core/memory_budget.hpp"
 #include "vkt/scene/gltf.hpp"
 
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
-
-#ifndef _WIN32
-#include <sys/resource.h>
-#endif
 
 #include <cstdio>
 #include <cstring>
@@ -110,18 +107,6 @@ std::string load_error(const fs::path& path, uint64_t max_memory) {
     return "";
 }
 
-// The most memory this process has had resident, in MiB (0 on Windows,
-// where only the messages are checked).
-double peak_resident_mib() {
-#ifndef _WIN32
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return double(usage.ru_maxrss) / 1024.0;
-#else
-    return 0.0;
-#endif
-}
-
 }  // namespace
 
 TEST_CASE("memory budget: charges add up and the one past the limit is refused by name",
@@ -165,9 +150,10 @@ TEST_CASE("gltf budget: a 50 MB data: URI is decoded once and loads within its b
     // 39,321,600 bytes (37.5 MiB) of buffer: 52,428,800 characters of base64.
     const fs::path model = big_data_uri_model(folder.dir / "big.gltf", 39321600);
     REQUIRE(fs::file_size(model) > 50u << 20);
-    const double before = peak_resident_mib();
+    REQUIRE(vkt_test::reset_peak_resident());
+    const double before = vkt_test::peak_resident_mib();
     const vkt::GltfScene scene = vkt::load_gltf(model);
-    const double after = peak_resident_mib();
+    const double after = vkt_test::peak_resident_mib();
     CHECK(scene.vertices.size() == 3);
     std::printf("peak resident memory: %.1f MiB before loading, %.1f MiB after\n", before, after);
     // The file (50 MiB) and the decoded buffer (37.5 MiB), once each. tinygltf
@@ -179,12 +165,13 @@ TEST_CASE("gltf budget: past --max-memory the data: URI is refused before it is 
           "[gltf][budget]") {
     const Folder folder("big_data_uri_refused");
     const fs::path model = big_data_uri_model(folder.dir / "big.gltf", 3 << 20);  // 4 MiB of text
-    const double before = peak_resident_mib();
+    REQUIRE(vkt_test::reset_peak_resident());
+    const double before = vkt_test::peak_resident_mib();
     CHECK_THAT(load_error(model, 6u << 20),
                ContainsSubstring("big.gltf: buffer 0 (\"big\"): its data: URI, decoded: needs "
                                  "3 MiB, which would bring what this file needs to 7 MiB, past "
                                  "the limit of 6 MiB (--max-memory)"));
-    CHECK(peak_resident_mib() < before + 16.0);
+    CHECK(vkt_test::peak_resident_mib() < before + 16.0);
     CHECK(load_error(model, 16u << 20).empty());
 }
 
@@ -197,13 +184,14 @@ TEST_CASE("gltf budget: an accessor of 2^28 zeros is refused before it is alloca
         write_text(folder.dir / "zeros.gltf", triangle_head(44, zeros) +
                                                   "data:application/octet-stream;base64," +
                                                   vkt_test::base64(triangle_bin()) + tail);
-    const double before = peak_resident_mib();
+    REQUIRE(vkt_test::reset_peak_resident());
+    const double before = vkt_test::peak_resident_mib();
     CHECK_THAT(load_error(model, vkt::default_max_memory),
                ContainsSubstring("zeros.gltf: mesh 0 primitive 0 POSITION: accessor 0") &&
                    ContainsSubstring("read as floats: needs 3 GiB, which would bring what this "
                                      "file needs to 3072 MiB, past the limit of 2 GiB "
                                      "(--max-memory)"));
-    CHECK(peak_resident_mib() < before + 16.0);
+    CHECK(vkt_test::peak_resident_mib() < before + 16.0);
 }
 
 TEST_CASE("gltf budget: a file a URI names is charged before it is read", "[gltf][budget]") {

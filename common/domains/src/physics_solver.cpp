@@ -117,9 +117,9 @@ void Solver::solve_contacts(const SolverSettings& s, float h, bool soft) {
         const Softness& spring = c.static_other ? soft_static_ : soft_;
         // The first point this pass, then round: at most 4 points, so no
         // division per point (the modulo per point cost 4% of a step).
-        uint32_t k = c.count == 4 ? start & 3u : start % c.count;
-        for (uint32_t i = 0; i < c.count; ++i, k = k + 1 == c.count ? 0 : k + 1) {
-            Point& p = points_[c.first + k];
+        uint32_t at = c.count == 4 ? start & 3u : start % c.count;
+        for (uint32_t i = 0; i < c.count; ++i, at = at + 1 == c.count ? 0 : at + 1) {
+            Point& p = points_[c.first + at];
             // The separation now, to first order: the step's start plus how
             // far the two bodies have moved and turned along the normal since.
             Row& n = p.normal;
