@@ -1,8 +1,9 @@
 // physics_bench: the time of one physics step (vkt/domains/physics.hpp, chapter 14).
 // Not a test: it prints JSON lines.
 //
-//   build/release/bin/physics_bench [--count N]
-//       Chapter 14's scene (vkt::physics::add_falling_boxes, N = 1000 boxes):
+//   build/release/bin/physics_bench [--count N] [--seed S]
+//       Chapter 14's scene (vkt::physics::add_falling_boxes, N = 1000 boxes,
+//       its boxes' sizes and turns drawn from seed S, 14 by default):
 //       the median step while the boxes collide (the steps from 1.5 s to 4.5 s
 //       of simulated time, when the ten levels land on one another and
 //       tumble), with the shares of the broad phase, the narrow phase and the
@@ -61,9 +62,9 @@ struct Run {
     }
 };
 
-int scene(uint32_t count) {
+int scene(uint32_t count, uint32_t seed) {
     World world;
-    add_falling_boxes(world, count);
+    add_falling_boxes(world, count, seed);
     const int steps_per_second = 120;
     const int first = 3 * steps_per_second / 2, last = 9 * steps_per_second / 2;
     Run colliding;
@@ -186,12 +187,24 @@ int main(int argc, char** argv) {
             if (!parse_count(argv[i], counts.emplace_back())) return 2;
         return scaling(counts);
     }
-    uint32_t count = 1000;
-    if (argc == 3 && std::strcmp(argv[1], "--count") == 0) {
-        if (!parse_count(argv[2], count)) return 2;
-    } else if (argc != 1) {
-        std::fprintf(stderr, "usage: physics_bench [--count N] | --scaling [COUNT...]\n");
-        return 2;
+    uint32_t count = 1000, seed = 14;
+    for (int i = 1; i < argc; i += 2) {
+        if (i + 1 < argc && std::strcmp(argv[i], "--count") == 0) {
+            if (!parse_count(argv[i + 1], count)) return 2;
+        } else if (i + 1 < argc && std::strcmp(argv[i], "--seed") == 0) {
+            char* end = nullptr;
+            const unsigned long value = std::strtoul(argv[i + 1], &end, 10);
+            if (end == argv[i + 1] || *end != '\0' || value > 0xffffffffUL) {
+                std::fprintf(stderr, "physics_bench: a seed is a whole number, not '%s'\n",
+                             argv[i + 1]);
+                return 2;
+            }
+            seed = uint32_t(value);
+        } else {
+            std::fprintf(stderr,
+                         "usage: physics_bench [--count N] [--seed S] | --scaling [COUNT...]\n");
+            return 2;
+        }
     }
-    return scene(count);
+    return scene(count, seed);
 }

@@ -31,7 +31,7 @@ struct SolverSettings {
     float restitution = 0.2f;            // 0: no bounce, 1: elastic
     float restitution_threshold = 1.0f;  // m/s: slower impacts do not bounce (rest, not jitter)
     float friction = 0.5f;               // Coulomb: |friction impulse| <= mu * normal impulse
-    float angular_damping = 0.05f;       // 1/s: spin loses this share of itself per second
+    float angular_damping = 0.2f;        // 1/s: spin loses this share of itself per second
     bool warm_start = true;
 };
 // [/solver-settings]
