@@ -5,12 +5,43 @@
 
 namespace vkt::physics {
 
+namespace {
+// Sine and cosine from + and * alone, so that every platform gets the same
+// bits. The C library's sinf and cosf need not round alike: MinGW-w64's and
+// glibc's differ in the last bit for some arguments, and a heap of boxes
+// turns one bit of a starting orientation into a different heap a few
+// seconds later (the Windows build's chapter 14 picture differed). A Taylor
+// series in double, for |x| <= pi after reduction, is good to about 1e-15,
+// far inside float's rounding; + and * are exact IEEE operations everywhere.
+constexpr double kPi = 3.14159265358979323846;
+
+double series_sin(double x) {
+    constexpr double pi = kPi, tau = 2.0 * kPi;
+    while (x > pi) x -= tau;
+    while (x < -pi) x += tau;
+    const double x2 = x * x;
+    double term = x, sum = x;
+    for (int n = 1; n <= 13; ++n) {  // x^27 / 27! is below 1e-15 for |x| <= pi
+        term *= -x2 / double((2 * n) * (2 * n + 1));
+        sum += term;
+    }
+    return sum;
+}
+
+float portable_sin(float radians) {
+    return float(series_sin(double(radians)));
+}
+float portable_cos(float radians) {
+    return float(series_sin(double(radians) + 0.5 * kPi));
+}
+}  // namespace
+
 glm::quat random_orientation(Random& random) {
     const float u1 = random(0.0f, 1.0f), u2 = random(0.0f, 1.0f), u3 = random(0.0f, 1.0f);
     const float a = std::sqrt(1.0f - u1), b = std::sqrt(u1);
     constexpr float tau = 6.28318530718f;
-    return glm::quat(b * std::cos(tau * u3), a * std::sin(tau * u2), a * std::cos(tau * u2),
-                     b * std::sin(tau * u3));
+    return glm::quat(b * portable_cos(tau * u3), a * portable_sin(tau * u2),
+                     a * portable_cos(tau * u2), b * portable_sin(tau * u3));
 }
 
 namespace {
@@ -42,11 +73,14 @@ Scene add_falling_boxes(World& world, uint32_t count, uint32_t seed) {
     // the floor, under the cluster at (+offset, -offset).
     const float angle = glm::radians(kRampDegrees);
     const glm::vec3 ramp_half(0.55f * width + 1.0f, 0.25f, 0.55f * width + 1.0f);
-    const glm::vec3 up(-std::sin(angle), std::cos(angle), 0.0f);  // its top face's normal
-    const glm::vec3 along(std::cos(angle), std::sin(angle), 0.0f);
+    const float sine = portable_sin(angle), cosine = portable_cos(angle);
+    const glm::vec3 up(-sine, cosine, 0.0f);  // its top face's normal
+    const glm::vec3 along(cosine, sine, 0.0f);
+    // Turned by angle about z: the quaternion of half the angle.
+    const glm::quat turn(portable_cos(0.5f * angle), 0.0f, 0.0f, portable_sin(0.5f * angle));
     const glm::vec3 low_edge(offset - 0.5f * width - 1.0f, 0.0f, -offset);
-    scene.ramp = world.add_box(low_edge + ramp_half.x * along - ramp_half.y * up, ramp_half, 0.0f,
-                               glm::angleAxis(angle, glm::vec3(0.0f, 0.0f, 1.0f)));
+    scene.ramp =
+        world.add_box(low_edge + ramp_half.x * along - ramp_half.y * up, ramp_half, 0.0f, turn);
 
     for (uint32_t cluster = 0; cluster < kClusters; ++cluster) {
         const glm::vec2 centre(cluster % 2 ? offset : -offset, cluster / 2 ? offset : -offset);
@@ -60,7 +94,7 @@ Scene add_falling_boxes(World& world, uint32_t count, uint32_t seed) {
             const float z = centre.y + (float(row) - 0.5f * float(m - 1)) * kSpacing;
             // Over the ramp, start above its surface there.
             const float ground =
-                cluster == 1 ? std::max(0.0f, (x - low_edge.x) * std::tan(angle)) : 0.0f;
+                cluster == 1 ? std::max(0.0f, (x - low_edge.x) * (sine / cosine)) : 0.0f;
             const glm::vec3 half(random(0.15f, 0.45f), random(0.15f, 0.45f), random(0.15f, 0.45f));
             const float y = ground + 1.0f + float(layer) * kSpacing + random(0.0f, 0.05f);
             world.add_box({x, y, z}, half, 500.0f, random_orientation(random));
