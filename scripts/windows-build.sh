@@ -47,10 +47,11 @@ export VKT_MINGW_DEPS=$deps
 
 # --- The test phase (run by this script under tests/with_xvfb.sh) ------------
 # Pictures that differ under Windows for a reason found and understood: still
-# run and reported, but not counted as failures.
-declare -A known=(
-  [14_physics]="MinGW-w64's sinf/cosf/tanf differ from glibc's in the last bit; the boxes' random orientations (common/domains/src/physics_scene.cpp) start that far apart, and 1200 warm-up steps of a chaotic pile settle them elsewhere (with --warmup 0 the two pictures are equal, with 1 s one pixel differs)"
-)
+# run and reported, but not counted as failures. None now: 14_physics was one
+# until its scene stopped calling the C library's sinf/cosf, which round
+# differently in MinGW-w64 (common/domains/src/physics_scene.cpp says why).
+# The form of an entry: [14_physics]="why the picture differs"
+declare -A known=()
 run_tests() {
   local bin=$build/bin
   mkdir -p "$results"
