@@ -169,5 +169,6 @@ fi
 if [ -x "$bin/24_ray_queries" ] && device_offers VK_KHR_ray_query; then
   sweep 24_ray_queries benchmarks/24_ray_queries.sh "$bin" 1280x720 300 5
 fi
+[ -x "$bin/25_ray_tracing" ] && sweep 25_ray_tracing benchmarks/25_ray_tracing.sh "$bin" 1280x720 300 5
 [ -x "$bin/26_mesh_shaders" ] && sweep 26_mesh_shaders benchmarks/26_mesh_shaders.sh "$bin"
 exit $status

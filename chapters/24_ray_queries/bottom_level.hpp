@@ -85,14 +85,17 @@ inline std::vector<AccelerationStructure> build_bottom_levels(
         scratch_offsets[i] = vkt::align_up(scratch_size, scratch_alignment);
         scratch_size = scratch_offsets[i] + sizes.buildScratchSize;
     }
-    // [/sizes]
     report.scratch_bytes = scratch_size;
+    // The buffer's own address is only as aligned as its memory: one
+    // alignment more than the parts need, and the parts start at its
+    // address rounded up.
     AddressBuffer scratch = create_address_buffer(
         gpu, vkt::align_up(scratch_size, scratch_alignment) + scratch_alignment,
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
     const VkDeviceAddress scratch_base = vkt::align_up(scratch.address, scratch_alignment);
     for (size_t i = 0; i < count; ++i)
         builds[i].scratchData.deviceAddress = scratch_base + scratch_offsets[i];
+    // [/sizes]
 
     const VkQueryPoolCreateInfo pool_info{
         .sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO,

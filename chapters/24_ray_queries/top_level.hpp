@@ -79,7 +79,8 @@ public:
     // One VkAccelerationStructureInstanceKHR per object: a 3x4 row-major
     // transform (the top three rows of world_from_object), the address of
     // its mesh's bottom level, a mask every ray accepts, and no face culling
-    // (a shadow ray leaving a surface may meet any side of a caster).
+    // even for a ray that asks for it (a shadow ray must stop at any side of
+    // a caster).
     void write_instances(uint32_t slot, std::span<const glm::mat4> world_from_object,
                          std::span<const VkDeviceAddress> bottom_level) {
         auto* out = static_cast<VkAccelerationStructureInstanceKHR*>(instances_[slot].owner.mapped);

@@ -144,15 +144,17 @@ public:
         // [build-meshlets]
         const ch26::Meshlets built =
             ch26::build_meshlets(positions, indices, max_vertices, max_triangles);
-        // [/build-meshlets]
         meshlets_ = built;
         meshlet_count_ = uint32_t(built.meshlets.size());
+        // One draw launches one task workgroup per 32 meshlets, and a device
+        // allows at most maxTaskWorkGroupCount[0] of them along x.
         task_groups_ = (meshlet_count_ + kTaskGroup - 1) / kTaskGroup;
         if (task_groups_ > mesh_properties.maxTaskWorkGroupCount[0])
             throw vkt::Error(path + ": " + std::to_string(meshlet_count_) +
                              " meshlets need more task workgroups than this device's "
                              "maxTaskWorkGroupCount[0] (" +
                              std::to_string(mesh_properties.maxTaskWorkGroupCount[0]) + ")");
+        // [/build-meshlets]
         triangle_count_ = uint32_t(indices.size() / 3);
         std::fprintf(stderr,
                      "26_mesh_shaders: %s: %u triangles, %zu vertices -> %u meshlets "

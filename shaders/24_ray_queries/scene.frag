@@ -32,9 +32,9 @@ float map_visibility() {
 // The ray query's answer, exactly 0 or 1: a ray from the point towards the
 // light, started a little off the surface so that it does not hit the
 // triangle it leaves. Any hit at all means shadow, so the query stops at the
-// first (TerminateOnFirstHit); every geometry is opaque, so the loop that
-// would let the shader judge candidate hits (alpha-tested leaves, say)
-// finds none to judge.
+// first (TerminateOnFirstHit); the ray is opaque (and so is every
+// geometry), so the loop that would let the shader judge candidate hits
+// (alpha-tested leaves, say) finds none to judge.
 float ray_visibility(vec3 n) {
     rayQueryEXT query;
     rayQueryInitializeEXT(query, scene, gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsOpaqueEXT,
