@@ -165,6 +165,7 @@ fi
 [ -x "$bin/20_ndim_compute" ] && sweep 20_ndim_compute benchmarks/20_ndim_compute.sh "$bin" 1 offscreen
 [ -x "$bin/21_multisampling" ] && sweep 21_multisampling benchmarks/21_multisampling.sh "$bin"
 [ -x "$bin/22_shadows" ] && sweep 22_shadows benchmarks/22_shadows.sh "$bin"
+[ -x "$bin/23_materials" ] && sweep 23_materials benchmarks/23_materials_ibl.sh "$bin"
 if [ -x "$bin/24_ray_queries" ] && device_offers VK_KHR_ray_query; then
   sweep 24_ray_queries benchmarks/24_ray_queries.sh "$bin" 1280x720 300 5
 fi

@@ -10,7 +10,8 @@ layout(set = 0, binding = 0) uniform samplerCube source;  // the sky, every mip 
 layout(set = 0, binding = 1, rgba16f) uniform writeonly imageCube target;
 
 // [irradiance]
-// (1 / pi) * integral of L(l) (n.l) dl: drawn with density n.l / pi (a
+// (1 / pi) * integral of L(l) (n.l) dl, the irradiance divided by pi (the
+// map is usually just called the irradiance): drawn with density n.l / pi (a
 // cosine-distributed direction), each sample weighs exactly L(l), and the
 // sum is a plain mean. A Lambertian surface of colour c under this sky sends
 // back c times it.
