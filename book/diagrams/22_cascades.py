@@ -1,9 +1,13 @@
 """Chapter 22: the view split into cascades, each with its own light box, and the frame's passes.
 
-Distances from chapter 22's defaults: near 0.1, far 60, three cascades, the
-practical split scheme with lambda 0.6 (boundaries 8.5 and 20.3), seen from
-above: distances to scale along the view (one unit = 14 px), widths at a
-fifth of that so the far slice fits.
+The top is computed as chapters/22_shadows/cascades.hpp computes it, from
+the chapter's camera (eye (0, 3, 8), looking along (0, -0.25, -1), 50 degrees
+high, 4:3 as at the default 800x600 and the tests' 320x240), its near 0.1 and
+far 60, three cascades split by the practical scheme with lambda 0.6 (at 8.5
+and 20.3), and its light along (-0.6, -1, -0.45). It is drawn as the light
+sees it, to scale: in the light's x and y (glm::lookAt's axes), each slice of
+the view projected, its bounding sphere (a circle of the same radius) and the
+square of side 2r that is the cascade's shadow map.
 """
 
 import math
@@ -11,45 +15,138 @@ import math
 from svg import (BLUE, BLUE_FILL, GREEN, GREEN_FILL, GREY, INK, MUTED, ORANGE, ORANGE_FILL,
                  PURPLE, RED, Svg)
 
-W, H = 1000, 590
+W, H = 1000, 720
 SPLITS = [0.1, 8.53, 20.28, 60.0]
 COLOURS = [(RED, "#fbe3e1"), (GREEN, GREEN_FILL), (BLUE, BLUE_FILL)]
+EYE = (0.0, 3.0, 8.0)
+LIGHT = (-0.6, -1.0, -0.45)
+FOV_Y, ASPECT = math.radians(50), 4 / 3
+
+
+def add(a, b):
+    return tuple(x + y for x, y in zip(a, b))
+
+
+def mul(k, a):
+    return tuple(k * x for x in a)
+
+
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def unit(a):
+    return mul(1 / math.sqrt(dot(a, a)), a)
+
+
+def slice_corners(d0, d1):
+    """The eight corners of the camera's view between d0 and d1, as slice_corners() makes them."""
+    forward = unit((0.0, -0.25, -1.0))
+    up = unit(cross(cross(forward, (0, 1, 0)), forward))
+    right = unit(cross(forward, up))
+    corners = []
+    for d in (d0, d1):
+        h = d * math.tan(FOV_Y / 2)
+        w = h * ASPECT
+        for sy in (-1, 1):
+            for sx in (-1, 1):
+                corners.append(add(add(add(EYE, mul(d, forward)), mul(sx * w, right)), mul(sy * h, up)))
+    return corners
+
+
+def hull(points):
+    """The convex hull of 2D points, counter-clockwise (Andrew's monotone chain)."""
+    pts = sorted(set(points))
+
+    def half(seq):
+        out = []
+        for p in seq:
+            while len(out) >= 2 and ((out[-1][0] - out[-2][0]) * (p[1] - out[-2][1]) -
+                                     (out[-1][1] - out[-2][1]) * (p[0] - out[-2][0])) <= 0:
+                out.pop()
+            out.append(p)
+        return out
+
+    lower, upper = half(pts), half(reversed(pts))
+    return lower[:-1] + upper[:-1]
 
 
 def main() -> None:
     s = Svg(W, H, "Chapter 22: the view split into three cascades, and the passes of one frame",
-            "Top: the camera's view seen from above, split at 8.5 and 20.3 units into three "
-            "cascades; each slice has its own shadow map, a square box around the slice's bounding "
-            "circle, so the near slice's map covers a small area in fine texels and the far one a "
-            "large area in coarse texels. Bottom: each frame draws the scene from the light into "
-            "each cascade's layer of one depth image, a barrier from depth writes to fragment "
-            "shader reads, then the lit pass, which picks a cascade by distance and compares.")
-    s.text(20, 28, "Seen from above: the view in three cascades, a light box around each", size=14,
-           bold=True)
-    x0, y0, scale, half = 40, 170, 14.0, math.tan(math.radians(50) / 2) * 4 / 3
-    across = scale / 5  # widths drawn at a fifth of the distances' scale
+            "Top, to scale, as the light sees it: the camera's view split at 8.5 and 20.3 units into "
+            "three slices; around each, its bounding circle and the square of the same width that is "
+            "that cascade's shadow map, 1024 texels a side whatever its size. The near slice's square "
+            "is 16 units wide, the middle one's 34, the far one's 101: fine texels near the eye, "
+            "coarse ones far away. Bottom: each frame draws the scene from the light into each "
+            "cascade's layer of one depth image, a barrier from depth writes to fragment shader "
+            "reads, then the lit pass, which picks a cascade by distance and compares.")
+    s.text(20, 28, "Seen from the light, to scale: each slice of the view, its bounding sphere and "
+           "the map around it", size=14, bold=True)
+    # The light's axes, as glm::lookAt(0, light, (0, 1, 0)) makes them: x across, y up the map.
+    f = unit(LIGHT)
+    ax = unit(cross(f, (0, 1, 0)))
+    ay = cross(ax, f)
+    fits = []
     for i in range(3):
-        d0, d1 = SPLITS[i], SPLITS[i + 1]
+        corners = slice_corners(SPLITS[i], SPLITS[i + 1])
+        centre = mul(1 / 8, tuple(map(sum, zip(*corners))))
+        radius = max(math.dist(p, centre) for p in corners)
+        fits.append(([(dot(p, ax), dot(p, ay)) for p in corners], (dot(centre, ax), dot(centre, ay)),
+                     radius))
+    # Fit every square into the drawing area at the left.
+    left = min(c[0] - r for _, c, r in fits)
+    right = max(c[0] + r for _, c, r in fits)
+    top = max(c[1] + r for _, c, r in fits)
+    bottom = min(c[1] - r for _, c, r in fits)
+    area_x, area_y, area_h = 30, 50, 440
+    scale = area_h / (top - bottom)
+
+    def to_page(p):
+        return (area_x + (p[0] - left) * scale, area_y + (top - p[1]) * scale)
+
+    for i in reversed(range(3)):  # the far, large ones first, so the near ones stay on top
+        points, centre, radius = fits[i]
         stroke, fill = COLOURS[i]
-        pts = [(x0 + d0 * scale, y0 - d0 * half * across), (x0 + d1 * scale, y0 - d1 * half * across),
-               (x0 + d1 * scale, y0 + d1 * half * across), (x0 + d0 * scale, y0 + d0 * half * across)]
-        s.polygon(pts, fill=fill, stroke=stroke, width=1.6)
-        # The light's box around the slice (its own shadow map).
-        s.rect(x0 + d0 * scale - 4, y0 - d1 * half * across - 6, (d1 - d0) * scale + 8,
-               2 * d1 * half * across + 12, stroke=stroke, width=1.2, dash="5 4")
-        s.text(x0 + (d0 + d1) / 2 * scale, y0 + 4, f"cascade {i}", size=12.5, anchor="middle",
-               bold=True)
-        s.text(x0 + d1 * scale, y0 + d1 * half * across + 24, f"{d1:.1f}", size=12, anchor="middle",
-               fill=MUTED)
-    s.circle(x0, y0, 4, fill=INK, stroke=INK)
-    s.text(x0 - 4, y0 - 12, "eye", size=12, anchor="middle")
-    s.lines(40, 318, ["Dashed: each cascade's light box, one layer of the shadow map each, the same "
-                      "texel count. Near the eye a box is small: fine texels",
-                      "where the screen shows detail; far away it is large: coarse texels where "
-                      "everything is small on screen."], size=12.5, fill=MUTED)
+        cx, cy = to_page(centre)
+        r = radius * scale
+        s.rect(cx - r, cy - r, 2 * r, 2 * r, stroke=stroke, width=1.4, dash="6 4")
+        s.circle(cx, cy, r, stroke=stroke, width=1.0, opacity=0.7)
+        s.polygon([to_page(p) for p in hull(points)], fill=fill, stroke=stroke, width=1.6)
+    for i, (points, centre, radius) in enumerate(fits):
+        stroke, _ = COLOURS[i]
+        cx, cy = to_page(centre)
+        r = radius * scale
+        s.text(cx + r - 5, cy - r + 16, f"{i}", size=14, anchor="end", bold=True, fill=stroke)
+    ex, ey = to_page((dot(EYE, ax), dot(EYE, ay)))
+    s.circle(ex, ey, 3.5, fill=INK, stroke=INK)
+    s.text(ex - 4, ey + 46, "eye", size=12, anchor="middle")
+    s.line(ex - 2, ey + 34, ex - 1, ey + 6, stroke=INK, width=1.0)
+
+    # The key, at the right of the drawing.
+    kx = area_x + (right - left) * scale + 36
+    s.lines(kx, 80, ["Filled: the slice of the camera's view",
+                     "that each cascade covers: 0.1 to 8.5,",
+                     "8.5 to 20.3 and 20.3 to 60 units."], size=14)
+    s.lines(kx, 162, ["Circle: the slice's bounding sphere.",
+                      "Dashed square: the light's box around it,",
+                      "side 2r: the cascade's shadow map,",
+                      "1024 texels a side."], size=14)
+    y = 262
+    for i, (_, _, radius) in enumerate(fits):
+        stroke, _ = COLOURS[i]
+        s.text(kx, y, f"cascade {i}: {2 * radius:.0f} units wide, texel {2 * radius / 1024:.3f}",
+               size=14, bold=True, fill=stroke)
+        y += 24
+    s.lines(kx, y + 20, ["The square keeps its size as the camera",
+                         "turns, and its centre moves by whole",
+                         "texels only: the shadows' edges stay still."], size=14, fill=MUTED)
 
     # The passes of one frame.
-    y = 410
+    y = 560
     s.text(20, y - 24, "One frame: the shadow pass, the barrier, the lit pass", size=14, bold=True)
     s.box(20, y, 270, 110, ["shadow pass, per cascade c", "depth only into layer c",
                             "light_from_world[c] · world", "depth bias: constant + slope"],

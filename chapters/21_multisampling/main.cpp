@@ -52,8 +52,9 @@ void add_quad(Scene& scene, const glm::vec3 (&corners)[4], glm::vec3 colour, flo
 // Everything an aliased picture gets wrong: twelve spokes two pixels wide
 // (at 240 pixels high) around the origin, turning, so their edges are never
 // along a row or column; two quads that cut through each other, so one edge
-// is made by the depth test alone; stripes on one quad thinner than a pixel,
-// an edge inside a triangle that only sample shading sees.
+// is made by the depth test alone; stripes on one quad 1.25 pixels wide,
+// close to the pixel spacing, an edge inside a triangle that only sample
+// shading sees.
 Scene build_scene() {
     Scene scene;
     const glm::vec3 spoke_colour(1.0f, 0.92f, 0.7f);

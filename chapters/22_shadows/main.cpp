@@ -242,8 +242,8 @@ public:
         const glm::vec3 light = glm::normalize(glm::vec3(-0.6f, -1.0f, -0.45f));
         const std::vector<float> splits = cascade_splits(z_near, z_far, cascades_, 0.6f);
         for (uint32_t i = 0; i < cascades_; ++i)
-            block_.light_from_world[i] =
-                light_from_world(slice_corners(c, splits[i], splits[i + 1]), light, 40.0f);
+            block_.light_from_world[i] = light_from_world(
+                slice_corners(c, splits[i], splits[i + 1]), light, 40.0f, shadow_size);
         // [/fit-cascades]
         for (uint32_t i = 0; i < 4; ++i) block_.splits[int(i)] = splits[std::min(i + 1, cascades_)];
         block_.clip_from_world = vkt::vulkan_perspective(c.fov_y, c.aspect, z_near, z_far) *

@@ -1,8 +1,8 @@
 #version 450
 // Chapter 21's colours: flat, except on the striped quad, whose stripes are
 // decided here, per fragment shader invocation. Multisampling smooths the
-// edges of triangles but runs this shader once per pixel, so stripes thinner
-// than a pixel still alias, unless sample shading runs it per sample.
+// edges of triangles but runs this shader once per pixel, so stripes 1.25
+// pixels wide still alias, unless sample shading runs it per sample.
 
 layout(location = 0) in vec3 colour;
 layout(location = 1) in float striped;

@@ -44,7 +44,7 @@ TEST_CASE("light_from_world puts a slice inside the map, depth growing away from
     // The slice's far corners are 20.28 / 8.53 times as far from the axis.
     CHECK(glm::length(corners[4] - (camera.eye + 20.28f * camera.forward)) ==
           Approx(20.28f / 8.53f * glm::length(corners[0] - (camera.eye + 8.53f * camera.forward))));
-    const glm::mat4 m = light_from_world(corners, light, 40.0f);
+    const glm::mat4 m = light_from_world(corners, light, 40.0f, 1024);
     glm::vec3 centre(0.0f);
     for (const glm::vec3& p : corners) {
         centre += p / 8.0f;
@@ -55,14 +55,63 @@ TEST_CASE("light_from_world puts a slice inside the map, depth growing away from
         CHECK(c.z > 0.0f);
         CHECK(c.z < 1.0f);
     }
+    // The slice's centre is the map's, to within the snap: half a texel,
+    // 1/1024 of clip space's width of 2.
     const glm::vec4 mid = m * glm::vec4(centre, 1.0f);
-    CHECK(mid.x == Approx(0.0f).margin(1e-5));
-    CHECK(mid.y == Approx(0.0f).margin(1e-5));
-    // A step towards the light: nearer (smaller depth), the same texel.
+    CHECK(std::abs(mid.x) <= 1.0f / 1024.0f + 1e-6f);
+    CHECK(std::abs(mid.y) <= 1.0f / 1024.0f + 1e-6f);
+    // A step towards the light: nearer (smaller depth), the same place.
     const glm::vec4 nearer = m * glm::vec4(centre - light, 1.0f);
     CHECK(nearer.z < mid.z);
-    CHECK(nearer.x == Approx(0.0f).margin(1e-5));
-    CHECK(nearer.y == Approx(0.0f).margin(1e-5));
+    CHECK(nearer.x == Approx(mid.x).margin(1e-5));
+    CHECK(nearer.y == Approx(mid.y).margin(1e-5));
+}
+
+TEST_CASE("light_from_world moves the map by whole texels as the camera moves", "[cascades]") {
+    // Without the snap the box follows the slice's centre exactly, so a
+    // fixed world point lands at a new place inside its texel after every
+    // move, and the shadows' edges crawl. With it, the map's texel grid stays
+    // put in the world: the point moves across the map by whole texels only.
+    const glm::vec3 light = glm::normalize(glm::vec3(-0.6f, -1.0f, -0.45f));
+    const uint32_t size = 1024;
+    Camera camera{.eye = {0, 3, 8},
+                  .forward = glm::normalize(glm::vec3(0, -0.25f, -1)),
+                  .up = glm::normalize(glm::vec3(0, 1, -0.25f)),
+                  .fov_y = glm::radians(50.0f),
+                  .aspect = 4.0f / 3.0f,
+                  .z_near = 0.1f,
+                  .z_far = 60.0f};
+    // Where a world point lands in a map, in texels from the map's corner.
+    const auto texel_of = [&](const glm::mat4& m, glm::vec3 p) {
+        const glm::vec4 clip = m * glm::vec4(p, 1.0f);
+        return (glm::vec2(clip) * 0.5f + 0.5f) * float(size);
+    };
+    // How far apart two positions are inside their texels (0 to 0.5).
+    const auto fraction_apart = [](float a, float b) {
+        const float d = (a - b) - std::round(a - b);
+        return std::abs(d);
+    };
+    const std::vector<float> splits = cascade_splits(0.1f, 60.0f, 3, 0.6f);
+    for (uint32_t i = 0; i < 3; ++i) {
+        INFO("cascade " << i);
+        camera.eye = {0, 3, 8};
+        const glm::mat4 before =
+            light_from_world(slice_corners(camera, splits[i], splits[i + 1]), light, 40.0f, size);
+        // A small step sideways and forwards: the slice, and with it its box,
+        // slides by 0.37 units, from a few texels of the far cascade to a few
+        // dozen of the near one.
+        camera.eye += glm::vec3(0.31f, 0.0f, -0.2f);
+        const glm::mat4 after =
+            light_from_world(slice_corners(camera, splits[i], splits[i + 1]), light, 40.0f, size);
+        for (const glm::vec3 p : {glm::vec3(0.0f), glm::vec3(3.0f, 1.5f, 2.0f)}) {
+            const glm::vec2 a = texel_of(before, p), b = texel_of(after, p);
+            // The box moved: the point is at least a texel away in the map...
+            CHECK(glm::length(a - b) >= 1.0f);
+            // ...yet at the same place inside its texel.
+            CHECK(fraction_apart(a.x, b.x) < 0.01f);
+            CHECK(fraction_apart(a.y, b.y) < 0.01f);
+        }
+    }
 }
 
 TEST_CASE("the chapter test's shadowed floor point looks at the light through a pillar",
