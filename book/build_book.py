@@ -836,6 +836,20 @@ def convert(page: Page) -> None:
     page.ids = set(re.findall(r'\bid="([^"]+)"', page.body))
 
 
+def swallowed_list_items(page: Page) -> list[str]:
+    """A list item written right after an indented paragraph, with no blank line
+    between, is read as more of that paragraph: the page shows a literal "- "
+    and the item's text runs on. Found in the HTML, outside code blocks."""
+    text = re.sub(r"<pre[\s\S]*?</pre>", "", page.body)
+    found = []
+    for line in text.splitlines():
+        if re.match(r"\s*- \S", line):
+            shown = re.sub(r"<[^>]+>", "", line).strip()[:60]
+            found.append(f"book/{page.md_name}: the list item '{shown}' runs into the "
+                         "paragraph before it: put a blank line above it")
+    return found
+
+
 def missing_image_placeholders(body: str, missing: dict[str, str]) -> str:
     """Replaces <img> of pictures that do not exist yet by a visible note."""
     def fix(match: re.Match) -> str:
@@ -1207,6 +1221,7 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     page_names = {p.md_name for p in pages}
     for page in pages:
         convert(page)
+        problems.extend(swallowed_list_items(page))
         rewrite_links(root, book, page, page_names, assets, problems, warnings, anchors)
         page.body = polish(missing_image_placeholders(page.body, assets.missing_images))
     by_name = {p.md_name: p for p in pages}
