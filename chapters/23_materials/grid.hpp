@@ -49,7 +49,8 @@ inline std::vector<Sphere> spheres(bool furnace) {
 
 // [lights]
 // A warm key light from the upper left and a cool, dimmer fill from the
-// right: directions towards the lights, radiance in linear RGB.
+// right: directions towards the lights, and the irradiance each delivers to a
+// surface facing it, in linear RGB.
 inline std::array<vkt::pbr::Light, 2> lights(bool furnace) {
     if (furnace) return {{{{0, 0, 1}, glm::vec3(0.0f)}, {{0, 0, 1}, glm::vec3(0.0f)}}};
     return {{{glm::normalize(glm::vec3(-0.5f, 0.7f, 0.6f)), glm::vec3(4.0f, 3.8f, 3.4f)},
