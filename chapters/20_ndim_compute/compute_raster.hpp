@@ -23,6 +23,7 @@
 #include "vkt/resources/shader.hpp"
 #include "vkt/resources/upload.hpp"
 
+#include <cstddef>
 #include <optional>
 #include <span>
 #include <string>
@@ -72,13 +73,20 @@ public:
         while (lanes_ < 32 && uint64_t(line_total_) * lanes_ * 2 <= tuning.raster_invocations)
             lanes_ *= 2;
         // [/lanes]
-        const VkSpecializationMapEntry entry{.constantID = 0, .offset = 0, .size = sizeof(lanes_)};
-        const VkSpecializationInfo lanes{.mapEntryCount = 1,
-                                         .pMapEntries = &entry,
-                                         .dataSize = sizeof(lanes_),
-                                         .pData = &lanes_};
+        // raster.comp's LANES (id 0) and LOOK_FIRST (id 1), laid out by offsetof.
+        struct Constants {
+            int32_t lanes;
+            VkBool32 look_first;
+        } constants{lanes_, line_total_ >= tuning.raster_look_from_lines ? VK_TRUE : VK_FALSE};
+        const VkSpecializationMapEntry entries[] = {
+            {0, offsetof(Constants, lanes), sizeof(Constants::lanes)},
+            {1, offsetof(Constants, look_first), sizeof(Constants::look_first)}};
+        const VkSpecializationInfo specialization{.mapEntryCount = 2,
+                                                  .pMapEntries = entries,
+                                                  .dataSize = sizeof(Constants),
+                                                  .pData = &constants};
         vkt::ShaderModule raster = vkt::load_shader(device_, context.chapter, "raster.comp");
-        pipeline_ = vkt::create_compute_pipeline(device_, raster, layout_, &lanes);
+        pipeline_ = vkt::create_compute_pipeline(device_, raster, layout_, &specialization);
         max_groups_x_ = context.properties.limits.maxComputeWorkGroupCount[0];
         max_storage_range_ = context.properties.limits.maxStorageBufferRange;
         // The resolve pass where the runner gives the target a storage view

@@ -27,6 +27,12 @@ struct Tuning {
     // The compute rasteriser: about how many invocations to launch in all; it
     // gives each line as many lanes (1 to 32) as fit in this.
     uint64_t raster_invocations = uint64_t(1) << 18;
+    // The compute rasteriser looks at a pixel (an atomic load) before its
+    // atomicMax, so that a pixel a nearer line holds costs no write, in
+    // scenes of at least this many lines. On a CPU device an atomic is a loop
+    // over the SIMD lanes and the look a second such loop: it pays only where
+    // lines overlap so densely that most writes would lose anyway.
+    uint64_t raster_look_from_lines = 0;
     // The binned rasteriser: invocations sharing out one tile's lines.
     uint32_t tile_group = 1024;
     // --to-target auto: store the pixels with a compute pass (else copy them).
@@ -41,6 +47,7 @@ struct Tuning {
             t.vertices_per_lane = 16;
             t.own_matrix_copy = VK_TRUE;
             t.raster_invocations = uint64_t(1) << 12;  // enough to keep every core busy
+            t.raster_look_from_lines = 4000000;        // 250 12-cubes (6.1 million), not 11
             t.tile_group = 8;                          // one SIMD vector: no switching at barriers
             t.store_to_target = false;                 // a copy is a memcpy there
         }
@@ -69,7 +76,10 @@ struct Tuning {
                ": transform groups of " + std::to_string(transform_group) + " x " +
                std::to_string(vertices_per_lane) + " vertices" +
                (own_matrix_copy ? " (own matrix copies)" : "") + ", about " +
-               std::to_string(raster_invocations) + " raster invocations, tile groups of " +
+               std::to_string(raster_invocations) +
+               " raster invocations (looking before each "
+               "atomicMax from " +
+               std::to_string(raster_look_from_lines) + " lines on), tile groups of " +
                std::to_string(tile_group) + ", pixels " + (store_to_target ? "stored" : "copied") +
                " into the target by default";
     }

@@ -14,6 +14,10 @@ layout(local_size_x = 64) in;
 // How many invocations share a line (1 to 32, a power of two): chosen when
 // the pipeline is built, from the number of lines.
 layout(constant_id = 0) const uint LANES = 1;
+// Whether to look at a pixel before the atomicMax (tuning.hpp chooses: on a
+// GPU always; on a CPU device only where lines overlap densely, as the look
+// there costs about what the writes it saves do).
+layout(constant_id = 1) const bool LOOK_FIRST = true;
 // The transform pass's output, through its set (TransformPass::projected_binding).
 layout(std430, set = 0, binding = 3) readonly buffer In { Projected projected[]; };
 // Set 1, ComputeRaster's: ends_binding, pixels_binding, palette_binding.
@@ -49,12 +53,13 @@ void main() {
         if (j < 0 || j >= int(w.x_major ? push.size.y : push.size.x)) continue;
         const uint word = walk_word(w, t);
         const uint at = w.x_major ? uint(j) * push.size.x + uint(i) : uint(i) * push.size.x + uint(j);
-        // Look before the read-modify-write: where a nearer line has the
-        // pixel already, which is most pixels where thousands of lines
-        // overlap, a plain (relaxed) atomic load is all it costs. Words only
-        // grow, so a load that misses a newer word only costs an atomicMax.
-        if (atomicLoad(pixels[at], gl_ScopeDevice, gl_StorageSemanticsBuffer,
-                       gl_SemanticsRelaxed) < word)
+        // LOOK_FIRST: look before the read-modify-write. Where a nearer line
+        // has the pixel already, which is most pixels where thousands of
+        // lines overlap, a plain (relaxed) atomic load is all it costs. Words
+        // only grow, so a load that misses a newer word only costs an
+        // atomicMax. Either way the pixel ends with the largest word.
+        if (!LOOK_FIRST || atomicLoad(pixels[at], gl_ScopeDevice, gl_StorageSemanticsBuffer,
+                                      gl_SemanticsRelaxed) < word)
             atomicMax(pixels[at], word);
     }
     // [/pixels]
