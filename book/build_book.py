@@ -542,6 +542,11 @@ def rewrite_links(root: Path, book: Path, page: Page, page_names: set[str], asse
         if not target.is_file():
             problems.append(f"{at(path_text)}: link to {path_text}, which does not exist")
             return match.group(0)
+        if anchor and not re.fullmatch(r"L-\d+", anchor):
+            # A source page's only anchors are its lines (L-N): no headings.
+            problems.append(f"{at(value)}: link to {value}: a source file's page has no "
+                            f"anchor '{anchor}', only lines (#L-N)")
+            return match.group(0)
         assets.source_pages.add(rel)
         new = source_page_name(rel) + (f"#{anchor}" if anchor else "")
         return f'{attr}="{html.escape(new)}"'
