@@ -13,6 +13,19 @@
 
 using Catch::Approx;
 
+namespace {
+// The chapter's view (main.cpp): from (0, 3, 8), looking a little down.
+Camera chapter_camera() {
+    return {.eye = {0, 3, 8},
+            .forward = glm::normalize(glm::vec3(0, -0.25f, -1)),
+            .up = glm::normalize(glm::vec3(0, 1, -0.25f)),
+            .fov_y = glm::radians(50.0f),
+            .aspect = 4.0f / 3.0f,
+            .z_near = 0.1f,
+            .z_far = 60.0f};
+}
+}  // namespace
+
 TEST_CASE("cascade_splits: the practical scheme between uniform and logarithmic", "[cascades]") {
     // n = 0.1, f = 60, three cascades, lambda = 0.6 (the chapter's): the
     // logarithmic boundaries 0.1 * 600^(1/3) = 0.8434 and 600^(2/3) / 10 =
@@ -32,13 +45,7 @@ TEST_CASE("cascade_splits: the practical scheme between uniform and logarithmic"
 
 TEST_CASE("light_from_world puts a slice inside the map, depth growing away from the light",
           "[cascades]") {
-    const Camera camera{.eye = {0, 3, 8},
-                        .forward = glm::normalize(glm::vec3(0, -0.25f, -1)),
-                        .up = glm::normalize(glm::vec3(0, 1, -0.25f)),
-                        .fov_y = glm::radians(50.0f),
-                        .aspect = 4.0f / 3.0f,
-                        .z_near = 0.1f,
-                        .z_far = 60.0f};
+    const Camera camera = chapter_camera();
     const glm::vec3 light = glm::normalize(glm::vec3(-0.6f, -1.0f, -0.45f));
     const auto corners = slice_corners(camera, 8.53f, 20.28f);
     // The slice's far corners are 20.28 / 8.53 times as far from the axis.
@@ -74,13 +81,7 @@ TEST_CASE("light_from_world moves the map by whole texels as the camera moves", 
     // put in the world: the point moves across the map by whole texels only.
     const glm::vec3 light = glm::normalize(glm::vec3(-0.6f, -1.0f, -0.45f));
     const uint32_t size = 1024;
-    Camera camera{.eye = {0, 3, 8},
-                  .forward = glm::normalize(glm::vec3(0, -0.25f, -1)),
-                  .up = glm::normalize(glm::vec3(0, 1, -0.25f)),
-                  .fov_y = glm::radians(50.0f),
-                  .aspect = 4.0f / 3.0f,
-                  .z_near = 0.1f,
-                  .z_far = 60.0f};
+    Camera camera = chapter_camera();
     // Where a world point lands in a map, in texels from the map's corner.
     const auto texel_of = [&](const glm::mat4& m, glm::vec3 p) {
         const glm::vec4 clip = m * glm::vec4(p, 1.0f);
