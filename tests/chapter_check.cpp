@@ -2,30 +2,42 @@
 // chapter regression test and every bad-input test:
 //
 //   vkt_chapter_check --exe PATH --out DIR --name NAME
-//                     [--golden PNG [--exact | --tolerance RMSE,THRESHOLD,FRACTION]]
-//                     [--exit N] [--expect REGEX]... [--pixel X,Y,R,G,B[,TOL]]...
-//                     [--between X,Y,W,H,R,G,B,R,G,B,MIN,MAX]...
+//                     [--golden PNG [--tolerance RMSE,THRESHOLD,FRACTION] [--blesses]]
+//                     [--same-as PNG] [--exit N] [--expect REGEX]...
+//                     [--pixel X,Y,R,G,B[,TOL]]... [--between X,Y,W,H,R,G,B,R,G,B,MIN,MAX]...
 //                     [--isolate DIR] -- ARGS...
 //   vkt_chapter_check --png FILE [--pixel X,Y,R,G,B[,TOL]]... [--between ...]...
+//   vkt_chapter_check --compare REFERENCE PICTURE [--tolerance RMSE,THRESHOLD,FRACTION]
 //
 // It runs PATH ARGS (with --screenshot DIR/NAME.png added when --golden or a
 // --pixel is given and ARGS names no screenshot of its own), keeps its stdout
 // and stderr in DIR/NAME.stdout / .stderr, and fails unless: the exit status
-// is N (default 0); with exit 0 and --validation in ARGS, stderr says
+// is N (default 0); no validation message appears on stdout or stderr,
+// whatever the exit status (a refusal's path is read as closely as a
+// drawing's); with exit 0 and --validation in ARGS, stderr says
 // "validation: 0 warnings, 0 errors"; every REGEX matches stdout or stderr;
 // every --pixel of the screenshot has that colour (within TOL, default 1);
 // in each --between rectangle (W x H pixels from X,Y), where both colours
 // must appear (within 2), from MIN to MAX pixels lie strictly between them
 // (every channel within the two colours' range, give or take 2, and more
 // than 2 from each colour in some channel: an edge's blend, chapter 21);
-// and the screenshot is within vkt::Tolerance of the golden image (with
-// --exact: equal to it in every pixel, for two ways of drawing that must
-// agree to the bit; with --tolerance: within that looser vkt::Tolerance, for
-// two ways of drawing that differ by design, chapter 24's shadow map against
-// its ray-traced shadows, a comparison that never blesses).
-// The --png form checks the pixels of an existing picture.
+// the screenshot is within vkt::Tolerance of the golden image (with
+// --tolerance: within that looser vkt::Tolerance, for two ways of drawing
+// that differ by design, chapter 24's shadow map against its ray-traced
+// shadows, a comparison that never blesses); and with --same-as, the
+// screenshot equals PNG in every pixel. A stored golden is only ever
+// compared with a tolerance, since llvmpipe rounds differently on another
+// processor or LLVM; --same-as names a picture another test drew in this
+// build on this machine (CTest fixtures order the two), for two ways of
+// drawing that must agree to the bit.
+// The --png form checks the pixels of an existing picture; the --compare
+// form compares two pictures with the golden tolerance (or the one given):
+// exit status 0 within it, 1 outside it, 2 for bad input, one line saying why.
 // A failed comparison leaves NAME.png (rendered) and NAME.diff.png.
-// With VKT_BLESS=1 in the environment the screenshot replaces the golden image.
+// With VKT_BLESS=1 in the environment, a test given --blesses (the one test
+// that owns its golden image) replaces the golden image with its screenshot;
+// every other test compares as usual, so blessing one chapter never rewrites
+// another's picture.
 // --isolate DIR runs a copy of the executable from DIR/bin, so that it finds
 // DIR/shaders (prepared by the test: empty, or holding corrupt SPIR-V) instead
 // of the build's.
@@ -221,20 +233,77 @@ int check_blends(const vkt::RgbaImage& actual, const std::vector<std::string>& s
     return 0;
 }
 
+// A message of the validation layer, printed by our debug messenger
+// ("[validation error] ...", vkt/core/instance.hpp) or by the layer itself
+// when no messenger is there yet ("Validation Error: ...").
+std::string validation_message(const std::string& text) {
+    static const std::regex message(
+        R"(\[validation (error|warning)\][^\n]*|Validation (Error|Warning):[^\n]*)");
+    std::smatch found;
+    if (std::regex_search(text, found, message)) return found.str();
+    return {};
+}
+
+bool parse_tolerance(const std::string& spec, vkt::Tolerance& t) {
+    return std::sscanf(spec.c_str(), "%lf,%d,%lf", &t.max_rmse, &t.threshold, &t.max_fraction) == 3;
+}
+
+// Prints how far `actual` is from `expected`; true when within `tolerance`.
+// A tolerance of zero demands the same picture to the bit.
+bool compare_and_report(const vkt::RgbaImage& actual, const vkt::RgbaImage& expected,
+                        const vkt::Tolerance& tolerance) {
+    const vkt::ImageDifference d = vkt::compare_images(actual, expected, tolerance.threshold);
+    std::printf(
+        "picture: RMSE %.3f (max %.1f), %.4f%% of pixels off by more than %d (max %.2f%%), "
+        "largest channel difference %d\n",
+        d.rmse, tolerance.max_rmse, 100 * d.fraction_over_threshold, tolerance.threshold,
+        100 * tolerance.max_fraction, d.max_channel_difference);
+    return vkt::within(d, tolerance);
+}
+
+std::string size_text(const vkt::RgbaImage& image) {
+    return std::to_string(image.width) + "x" + std::to_string(image.height);
+}
+
+// --compare REFERENCE PICTURE [--tolerance ...]: 0 within, 1 outside, 2 bad input.
+int compare_files(const fs::path& reference, const fs::path& picture,
+                  const vkt::Tolerance& tolerance) {
+    vkt::RgbaImage a, b;
+    try {
+        a = vkt::read_png(reference);
+        b = vkt::read_png(picture);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "vkt_chapter_check --compare: %s\n", e.what());
+        return 2;
+    }
+    if (a.width != b.width || a.height != b.height) {
+        std::fprintf(stderr, "vkt_chapter_check --compare: %s is %s, %s is %s\n", reference.c_str(),
+                     size_text(a).c_str(), picture.c_str(), size_text(b).c_str());
+        return 2;
+    }
+    if (compare_and_report(b, a, tolerance)) {
+        std::printf("same: %s is within the tolerance of %s\n", picture.c_str(), reference.c_str());
+        return 0;
+    }
+    std::printf("differs: %s is outside the tolerance of %s\n", picture.c_str(), reference.c_str());
+    return 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    fs::path exe, out_dir, golden;
+    fs::path exe, out_dir, golden, same_as;
     std::string name;
     int expected_exit = 0;
     fs::path isolate, png_only;
-    bool exact = false;
+    bool blesses = false;
     std::optional<vkt::Tolerance> loose;  // --tolerance
+    std::optional<std::pair<fs::path, fs::path>> compare;
     std::vector<std::string> expects, pixels, blends, chapter_args;
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
         auto next = [&]() -> std::string {
-            if (i + 1 >= argc) std::exit(fail(arg + " needs a value"));
+            if (i + 1 >= argc) std::exit(fail(arg + " needs a value") + 1);
             return argv[++i];
         };
         if (arg == "--exe")
@@ -245,6 +314,10 @@ int main(int argc, char** argv) {
             name = next();
         else if (arg == "--golden")
             golden = next();
+        else if (arg == "--same-as")
+            same_as = next();
+        else if (arg == "--blesses")
+            blesses = true;
         else if (arg == "--exit")
             expected_exit = std::stoi(next());
         else if (arg == "--expect")
@@ -257,21 +330,23 @@ int main(int argc, char** argv) {
             blends.push_back(next());
         else if (arg == "--isolate")
             isolate = next();
-        else if (arg == "--exact")
-            exact = true;
-        else if (arg == "--tolerance") {
+        else if (arg == "--compare") {
+            const fs::path reference = next();
+            compare = std::pair{reference, fs::path(next())};
+        } else if (arg == "--tolerance") {
             const std::string spec = next();
             vkt::Tolerance t;
-            if (std::sscanf(spec.c_str(), "%lf,%d,%lf", &t.max_rmse, &t.threshold,
-                            &t.max_fraction) != 3)
-                return fail("bad --tolerance " + spec + ": want RMSE,THRESHOLD,FRACTION");
+            if (!parse_tolerance(spec, t))
+                return fail("bad --tolerance " + spec + ": want RMSE,THRESHOLD,FRACTION") + 1;
             loose = t;
         } else if (arg == "--") {
             chapter_args.assign(argv + i + 1, argv + argc);
             break;
         } else
-            return fail("unknown checker argument " + arg);
+            return fail("unknown checker argument " + arg) + 1;
     }
+    if (compare)
+        return compare_files(compare->first, compare->second, loose.value_or(vkt::Tolerance{}));
     if (!png_only.empty()) {  // no run: only check the pixels of an existing picture
         const vkt::RgbaImage picture = vkt::read_png(png_only);
         if (int failed = check_pixels(picture, pixels)) return failed;
@@ -281,6 +356,7 @@ int main(int argc, char** argv) {
     }
     if (exe.empty() || out_dir.empty() || name.empty())
         return fail("--exe, --out and --name are required");
+    if (loose && golden.empty()) return fail("--tolerance needs --golden (or --compare)");
     fs::create_directories(out_dir);
 
     if (!isolate.empty()) {
@@ -301,15 +377,26 @@ int main(int argc, char** argv) {
     // with --png.
     const bool own_screenshot =
         std::find(chapter_args.begin(), chapter_args.end(), "--screenshot") != chapter_args.end();
-    if (!golden.empty() && own_screenshot)
-        return fail("--golden takes the checker's own screenshot: leave --screenshot out of ARGS");
+    if ((!golden.empty() || !same_as.empty()) && own_screenshot)
+        return fail(
+            "--golden and --same-as take the checker's own screenshot: leave --screenshot out of "
+            "ARGS");
     const bool checks = !pixels.empty() || !blends.empty();
-    const bool picture = !golden.empty() || (checks && !own_screenshot);
+    const bool picture = !golden.empty() || !same_as.empty() || (checks && !own_screenshot);
     if (picture) {
         args.push_back("--screenshot");
         args.push_back(screenshot.string());
     }
 
+#ifndef _WIN32
+    // Mesa 25.0's shader cache key leaves out llvmpipe's vector width (README:
+    // "A processor without AVX"): a reader who sets LP_NATIVE_VECTOR_WIDTH
+    // for the suite gets a cache folder of that width's own, not shaders
+    // another width compiled, which crash lavapipe.
+    if (const char* width = std::getenv("LP_NATIVE_VECTOR_WIDTH"); width && *width)
+        if (const char* cache = std::getenv("MESA_SHADER_CACHE_DIR"); cache && *cache)
+            setenv("MESA_SHADER_CACHE_DIR", (std::string(cache) + "_lp" + width).c_str(), 1);
+#endif
     const fs::path out_file = out_dir / (name + ".stdout"), err_file = out_dir / (name + ".stderr");
     const int status = run(args, out_file, err_file);
     const std::string out = slurp(out_file), err = slurp(err_file);
@@ -320,6 +407,12 @@ int main(int argc, char** argv) {
 
     if (status >= 128)
         return fail("the chapter crashed (signal " + std::to_string(status - 128) + ")");
+    // Read before the exit status: a refusal that leaves a validation message
+    // behind fails as surely as a drawing run would.
+    for (const std::string* text : {&err, &out})
+        if (const std::string message = validation_message(*text); !message.empty())
+            return fail("a validation message (exit status " + std::to_string(status) +
+                        "): " + message);
     if (status != expected_exit)
         return fail("exit status " + std::to_string(status) + ", expected " +
                     std::to_string(expected_exit));
@@ -339,20 +432,39 @@ int main(int argc, char** argv) {
         return fail(
             "--pixel and --between need the checker's own screenshot; check a picture the chapter "
             "wrote itself with --png FILE");
-    if (picture && golden.empty()) {
-        if (!fs::exists(screenshot)) return fail("the chapter wrote no screenshot");
-        const vkt::RgbaImage actual = vkt::read_png(screenshot);
-        if (int failed = check_pixels(actual, pixels)) return failed;
-        if (int failed = check_blends(actual, blends)) return failed;
+    if (!picture) {
+        std::printf("PASS\n");
+        return 0;
+    }
+    if (!fs::exists(screenshot)) return fail("the chapter wrote no screenshot");
+    // The hand-worked pixels come first: not even blessing may contradict them.
+    const vkt::RgbaImage actual = vkt::read_png(screenshot);
+    if (int failed = check_pixels(actual, pixels)) return failed;
+    if (int failed = check_blends(actual, blends)) return failed;
+    const auto against = [&](const fs::path& reference, const vkt::Tolerance& tolerance) {
+        const vkt::RgbaImage expected = vkt::read_png(reference);
+        if (actual.width != expected.width || actual.height != expected.height)
+            return fail("picture is " + size_text(actual) + ", " + reference.string() + " is " +
+                        size_text(expected));
+        if (!compare_and_report(actual, expected, tolerance)) {
+            vkt::write_png(diff, vkt::difference_image(actual, expected));
+            return fail("picture differs from " + reference.string() + "; see " +
+                        screenshot.string() + " and " + diff.string());
+        }
+        return 0;
+    };
+    if (!same_as.empty()) {
+        if (!fs::exists(same_as))
+            return fail("no picture " + same_as.string() +
+                        " to compare with: its test must run first (a CTest fixture orders them)");
+        if (int failed = against(
+                same_as, vkt::Tolerance{.max_rmse = 0.0, .threshold = 0, .max_fraction = 0.0}))
+            return failed;
+        std::printf("the same picture as %s, to the bit\n", same_as.c_str());
     }
     if (!golden.empty()) {
-        if (!fs::exists(screenshot)) return fail("the chapter wrote no screenshot");
-        // The hand-worked pixels come first: not even blessing may contradict them.
-        const vkt::RgbaImage actual = vkt::read_png(screenshot);
-        if (int failed = check_pixels(actual, pixels)) return failed;
-        if (int failed = check_blends(actual, blends)) return failed;
         if (const char* bless = std::getenv("VKT_BLESS");
-            bless && std::string(bless) == "1" && !loose) {
+            bless && std::string(bless) == "1" && blesses && !loose) {
             fs::create_directories(golden.parent_path());
             fs::copy_file(screenshot, golden, fs::copy_options::overwrite_existing);
             std::printf("blessed %s: look at it before you commit it\n", golden.c_str());
@@ -360,25 +472,7 @@ int main(int argc, char** argv) {
         }
         if (!fs::exists(golden))
             return fail("no golden image " + golden.string() + " (scripts/bless-goldens.sh)");
-        const vkt::RgbaImage expected = vkt::read_png(golden);
-        if (actual.width != expected.width || actual.height != expected.height)
-            return fail("picture is " + std::to_string(actual.width) + "x" +
-                        std::to_string(actual.height) + ", golden is " +
-                        std::to_string(expected.width) + "x" + std::to_string(expected.height));
-        const vkt::Tolerance tolerance =
-            exact ? vkt::Tolerance{.max_rmse = 0.0, .threshold = 0, .max_fraction = 0.0}
-                  : loose.value_or(vkt::Tolerance{});
-        const vkt::ImageDifference d = vkt::compare_images(actual, expected, tolerance.threshold);
-        std::printf(
-            "picture: RMSE %.3f (max %.1f), %.4f%% of pixels off by more than %d (max %.2f%%), "
-            "largest channel difference %d\n",
-            d.rmse, tolerance.max_rmse, 100 * d.fraction_over_threshold, tolerance.threshold,
-            100 * tolerance.max_fraction, d.max_channel_difference);
-        if (!vkt::within(d, tolerance)) {
-            vkt::write_png(diff, vkt::difference_image(actual, expected));
-            return fail("picture differs from " + golden.string() + "; see " + screenshot.string() +
-                        " and " + diff.string());
-        }
+        if (int failed = against(golden, loose.value_or(vkt::Tolerance{}))) return failed;
     }
     std::printf("PASS\n");
     return 0;

@@ -12,7 +12,7 @@ set(VKT_07_PIXEL PIXEL 0,0,39,39,56 319,239,39,39,56 190,130,89,124,231 115,130,
                        160,70,89,218,89 275,134,196,203,243)
 vkt_chapter_test(chapter.07_uniform_buffers 07_uniform_buffers GOLDEN BLESS ${VKT_07_PIXEL}
   ARGS ${headless})
-vkt_chapter_test(chapter.07_uniform_buffers.offscreen 07_uniform_buffers GOLDEN ${VKT_07_PIXEL}
+vkt_chapter_test(chapter.07_uniform_buffers.offscreen 07_uniform_buffers SAME_AS chapter.07_uniform_buffers ${VKT_07_PIXEL}
   ARGS ${offscreen})
 vkt_chapter_window_test(07_uniform_buffers PIXEL 190,130,89,124,231)
 

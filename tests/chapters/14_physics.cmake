@@ -9,7 +9,7 @@
 set(VKT_14_ARGS --warmup 10 --scene stacks)
 vkt_chapter_test(chapter.14_physics 14_physics GOLDEN BLESS ARGS ${headless} ${VKT_14_ARGS}
   EXPECT "14_physics: 1000 boxes and the stacks, sort-and-sweep, 120 steps/s, 1200 warm-up steps, [0-9]+ contact points, 0 awake")
-vkt_chapter_test(chapter.14_physics.offscreen 14_physics GOLDEN ARGS ${offscreen} ${VKT_14_ARGS})
+vkt_chapter_test(chapter.14_physics.offscreen 14_physics SAME_AS chapter.14_physics ARGS ${offscreen} ${VKT_14_ARGS})
 vkt_chapter_window_test(14_physics ARGS ${VKT_14_ARGS})
 # P, in a real window driven by events (window_physics_keys.sh): the chapter
 # says it added the pyramid and the tower (75 boxes), a second P adds nothing,
@@ -24,7 +24,7 @@ if(XVFB_RUN AND XDOTOOL AND OPENBOX)
 endif()
 # Brute force finds the same pairs in the same order, so the world, and the
 # picture, are the same bit for bit.
-vkt_chapter_test(chapter.14_physics.brute 14_physics GOLDEN ARGS ${headless} ${VKT_14_ARGS}
+vkt_chapter_test(chapter.14_physics.brute 14_physics SAME_AS chapter.14_physics ARGS ${headless} ${VKT_14_ARGS}
   --broadphase brute EXPECT "1000 boxes and the stacks, brute force")
 vkt_chapter_test(chapter.14_physics.help 14_physics EXIT 0 ARGS --help
   EXPECT "usage: 14_physics" "--count N" "--broadphase sap\\|brute" "--warmup SECONDS"

@@ -10,16 +10,17 @@ set(VKT_17_PIXEL PIXEL 0,0,39,39,56 319,0,39,39,56)
 vkt_chapter_test(chapter.17_tiled_deferred 17_tiled_deferred GOLDEN BLESS ${VKT_17_PIXEL}
   ARGS ${headless} EXPECT "17_tiled_deferred: 1024 lights, shade fragment, view lit, cull binned"
   "tiles overflowed: 0" "frames that dropped candidates: 0")
-vkt_chapter_test(chapter.17_tiled_deferred.offscreen 17_tiled_deferred GOLDEN ${VKT_17_PIXEL}
+vkt_chapter_test(chapter.17_tiled_deferred.offscreen 17_tiled_deferred SAME_AS chapter.17_tiled_deferred ${VKT_17_PIXEL}
   ARGS ${offscreen})
 vkt_chapter_window_test(17_tiled_deferred PIXEL 0,0,39,39,56)
-# The compute path: the same picture, so the same golden image; in a window
-# too, where the blit's target is then copied to the swapchain image.
-vkt_chapter_test(chapter.17_tiled_deferred.compute 17_tiled_deferred GOLDEN ${VKT_17_PIXEL}
+# The compute path: the same picture, to the bit (compared with the run
+# above); in a window too, where the blit's target is then copied to the
+# swapchain image.
+vkt_chapter_test(chapter.17_tiled_deferred.compute 17_tiled_deferred SAME_AS chapter.17_tiled_deferred ${VKT_17_PIXEL}
   ARGS ${headless} --shade compute EXPECT "shade compute")
-# --shade lists with the default --cull binned: the same golden image too
+# --shade lists with the default --cull binned: the same picture too
 # (the cull_tiled_* tests below run every --shade with --cull tiled).
-vkt_chapter_test(chapter.17_tiled_deferred.lists 17_tiled_deferred GOLDEN ${VKT_17_PIXEL}
+vkt_chapter_test(chapter.17_tiled_deferred.lists 17_tiled_deferred SAME_AS chapter.17_tiled_deferred ${VKT_17_PIXEL}
   ARGS ${headless} --shade lists EXPECT "shade lists, view lit, cull binned")
 if(XVFB_RUN)
   set(test chapter.17_tiled_deferred.window_compute)
@@ -27,17 +28,18 @@ if(XVFB_RUN)
     COMMAND ${XVFB_RUN} -a -s "-screen 0 640x480x24"
             $<TARGET_FILE:vkt_chapter_check> --exe $<TARGET_FILE:17_tiled_deferred>
             --out ${VKT_TEST_OUTPUT} --name ${test}
-            --golden ${VKT_GOLDEN_DIR}/17_tiled_deferred.png --pixel 0,0,39,39,56
+            --same-as ${VKT_TEST_OUTPUT}/chapter.17_tiled_deferred.png --pixel 0,0,39,39,56
             --expect "17_tiled_deferred: .*, window B8G8R8A8_" --expect "shade compute" --
             --validation --frames ${VKT_TEST_FRAMES} --size ${VKT_TEST_SIZE} --shade compute)
   set_tests_properties(${test} PROPERTIES
     ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS "chapter;window")
+  vkt_same_picture(${test} chapter.17_tiled_deferred)
 endif()
 
 # --cull tiled, every tile testing every light: the same picture, both ways.
 foreach(shade fragment compute lists)
   vkt_chapter_test(chapter.17_tiled_deferred.cull_tiled_${shade} 17_tiled_deferred
-    GOLDEN ${VKT_17_PIXEL} ARGS ${headless} --cull tiled --shade ${shade}
+    SAME_AS chapter.17_tiled_deferred ${VKT_17_PIXEL} ARGS ${headless} --cull tiled --shade ${shade}
     EXPECT "shade ${shade}, view lit, cull tiled")
 endforeach()
 
@@ -53,18 +55,20 @@ foreach(shade fragment compute lists)
     LABELS "chapter")
 endforeach()
 
-# The heat map: lights per tile, one golden image for both paths. Hand-worked
-# pixel: the top-left tile holds no geometry, so it kept 0 lights: the ramp's
-# (0, 0, 0.5), shown 75% over a black albedo as (0, 0, 0.375), sRGB-encoded
-# (0, 0, 164); its border pixel (0, 0) is half that, 0.1875, encoded 121.
-foreach(shade fragment compute lists)
-  set(test chapter.17_tiled_deferred.view_heat_${shade})
-  add_test(NAME ${test} COMMAND vkt_chapter_check --exe $<TARGET_FILE:17_tiled_deferred>
-    --out ${VKT_TEST_OUTPUT} --name ${test} --golden ${VKT_GOLDEN_DIR}/17_tiled_deferred_heat.png
-    --pixel 8,8,0,0,164 --pixel 0,0,0,0,121 --expect "view heat"
-    -- ${headless} --view heat --shade ${shade})
-  set_tests_properties(${test} PROPERTIES ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}"
-    LABELS "chapter;bless")
+# The heat map: lights per tile, one golden image for all three paths (the
+# fragment path's run owns it; the others must equal that run to the bit).
+# Hand-worked pixel: the top-left tile holds no geometry, so it kept 0
+# lights: the ramp's (0, 0, 0.5), shown 75% over a black albedo as
+# (0, 0, 0.375), sRGB-encoded (0, 0, 164); its border pixel (0, 0) is half
+# that, 0.1875, encoded 121.
+set(VKT_17_HEAT PIXEL 8,8,0,0,164 0,0,0,0,121)
+vkt_chapter_test(chapter.17_tiled_deferred.view_heat_fragment 17_tiled_deferred
+  GOLDEN_FILE 17_tiled_deferred_heat.png LABELS bless ${VKT_17_HEAT}
+  ARGS ${headless} --view heat --shade fragment EXPECT "view heat")
+foreach(shade compute lists)
+  vkt_chapter_test(chapter.17_tiled_deferred.view_heat_${shade} 17_tiled_deferred
+    SAME_AS chapter.17_tiled_deferred.view_heat_fragment ${VKT_17_HEAT}
+    ARGS ${headless} --view heat --shade ${shade} EXPECT "view heat")
 endforeach()
 
 # --verify brute: the last frame again, into float images: chapter 16's

@@ -14,7 +14,7 @@
 set(VKT_22_PIXEL PIXEL 0,0,179,203,231 272,228,214,214,208,2 235,166,111,111,108,2)
 vkt_chapter_test(chapter.22_shadows 22_shadows GOLDEN BLESS ${VKT_22_PIXEL} ARGS ${headless}
   EXPECT "22_shadows: 3 cascades of 1024x1024, splits at 8.5 20.3 60.0 60.0, bias 4.00 \\+ 4.00 x slope")
-vkt_chapter_test(chapter.22_shadows.offscreen 22_shadows GOLDEN ${VKT_22_PIXEL} ARGS ${offscreen})
+vkt_chapter_test(chapter.22_shadows.offscreen 22_shadows SAME_AS chapter.22_shadows ${VKT_22_PIXEL} ARGS ${offscreen})
 vkt_chapter_window_test(22_shadows PIXEL 0,0,179,203,231)
 # The cascade view: each cascade tinted; its own golden (LABELS bless).
 vkt_chapter_test(chapter.22_shadows.cascades 22_shadows GOLDEN_FILE 22_shadows_cascades.png
