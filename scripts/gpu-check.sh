@@ -38,6 +38,7 @@ device_offers() {  # device_offers EXTENSION: vulkaninfo lists it (or cannot say
 check() {  # check NAME CHAPTER GOLDEN PIXELS ARGS: one run against one reference
   # shellcheck disable=SC2086  # pixels and args are words
   "$bin/vkt_chapter_check" --exe "$bin/$2" --out "$out" --name "gpu.$1" --golden "$3" \
+    --tolerance across-devices \
     $4 -- $5 >"$out/gpu.$1.check.txt" 2>&1
 }
 while IFS='|' read -r c pixels args; do

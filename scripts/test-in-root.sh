@@ -142,9 +142,13 @@ else
   tail -n 20 "$logs/quickstart.log" >&2
 fi
 
-# "100% tests passed, 0 tests failed out of 537", CTest's own summary.
+# The accounting step's line ("release on debian:trixie: 782 tests, 782 run,
+# 782 passed, 0 skipped as expected"), else CTest's own summary of the test
+# step ("100% tests passed, 0 tests failed out of 537"), the first one.
 tests='no tests ran'
-if ctest_line=$(grep -E '[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$logs/workflow.log" 2>/dev/null | tail -n 1); then
+if account_line=$(grep -E '^account_tests: release on ' "$logs/workflow.log" 2>/dev/null | tail -n 1); then
+  tests=${account_line#account_tests: release on }
+elif ctest_line=$(grep -E '[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$logs/workflow.log" 2>/dev/null | head -n 1); then
   total=$(sed -E 's/.* out of ([0-9]+).*/\1/' <<<"$ctest_line")
   failed=$(sed -E 's/.*passed, ([0-9]+) tests? failed.*/\1/' <<<"$ctest_line")
   tests="$((total - failed)) of $total tests passed"

@@ -2,12 +2,15 @@
 // chapter regression test and every bad-input test:
 //
 //   vkt_chapter_check --exe PATH --out DIR --name NAME
-//                     [--golden PNG [--tolerance RMSE,THRESHOLD,FRACTION] [--blesses]]
+//                     [--golden PNG [--tolerance
+//                     RMSE,THRESHOLD,FRACTION[,BIAS,TILE]|across-devices]
+//                                   [--blesses]]
 //                     [--same-as PNG] [--exit N] [--expect REGEX]...
 //                     [--pixel X,Y,R,G,B[,TOL]]... [--between X,Y,W,H,R,G,B,R,G,B,MIN,MAX]...
 //                     [--isolate DIR] -- ARGS...
 //   vkt_chapter_check --png FILE [--pixel X,Y,R,G,B[,TOL]]... [--between ...]...
-//   vkt_chapter_check --compare REFERENCE PICTURE [--tolerance RMSE,THRESHOLD,FRACTION]
+//   vkt_chapter_check --compare REFERENCE PICTURE [--tolerance
+//   RMSE,THRESHOLD,FRACTION|across-devices]
 //
 // It runs PATH ARGS (with --screenshot DIR/NAME.png added when --golden or a
 // --pixel is given and ARGS names no screenshot of its own), keeps its stdout
@@ -244,8 +247,26 @@ std::string validation_message(const std::string& text) {
     return {};
 }
 
+// "RMSE,THRESHOLD,FRACTION": two ways of drawing that differ by design, with no
+// bias or tile limit (vkt::Tolerance::loose), or with them given after it
+// (",BIAS,TILE_MEDIAN"); "across-devices": a GPU's
+// picture against lavapipe's golden (vkt::Tolerance::across_devices).
 bool parse_tolerance(const std::string& spec, vkt::Tolerance& t) {
-    return std::sscanf(spec.c_str(), "%lf,%d,%lf", &t.max_rmse, &t.threshold, &t.max_fraction) == 3;
+    if (spec == "across-devices") {
+        t = vkt::Tolerance::across_devices();
+        return true;
+    }
+    double rmse = 0, fraction = 0, bias = 0;
+    int threshold = 0, tile = 0;
+    const int fields =
+        std::sscanf(spec.c_str(), "%lf,%d,%lf,%lf,%d", &rmse, &threshold, &fraction, &bias, &tile);
+    if (fields != 3 && fields != 5) return false;
+    t = vkt::Tolerance::loose(rmse, threshold, fraction);
+    if (fields == 5) {  // ",BIAS,TILE_MEDIAN": those limits too
+        t.max_bias = bias;
+        t.max_tile_median = tile;
+    }
+    return true;
 }
 
 // Prints how far `actual` is from `expected`; true when within `tolerance`.
@@ -255,9 +276,10 @@ bool compare_and_report(const vkt::RgbaImage& actual, const vkt::RgbaImage& expe
     const vkt::ImageDifference d = vkt::compare_images(actual, expected, tolerance.threshold);
     std::printf(
         "picture: RMSE %.3f (max %.1f), %.4f%% of pixels off by more than %d (max %.2f%%), "
-        "largest channel difference %d\n",
+        "largest channel difference %d, bias %.3f (max %.2f), tile median %d at %u,%u (max %d)\n",
         d.rmse, tolerance.max_rmse, 100 * d.fraction_over_threshold, tolerance.threshold,
-        100 * tolerance.max_fraction, d.max_channel_difference);
+        100 * tolerance.max_fraction, d.max_channel_difference, d.max_bias, tolerance.max_bias,
+        d.max_tile_median, d.tile_x, d.tile_y, tolerance.max_tile_median);
     return vkt::within(d, tolerance);
 }
 
@@ -337,7 +359,9 @@ int main(int argc, char** argv) {
             const std::string spec = next();
             vkt::Tolerance t;
             if (!parse_tolerance(spec, t))
-                return fail("bad --tolerance " + spec + ": want RMSE,THRESHOLD,FRACTION") + 1;
+                return fail("bad --tolerance " + spec +
+                            ": want RMSE,THRESHOLD,FRACTION[,BIAS,TILE_MEDIAN] or across-devices") +
+                       1;
             loose = t;
         } else if (arg == "--") {
             chapter_args.assign(argv + i + 1, argv + argc);

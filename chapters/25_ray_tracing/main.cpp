@@ -10,6 +10,7 @@
 // ray is read from a table in GPU memory, the shader binding table, laid out
 // to the device's alignments.
 
+#include "binding_table.hpp"
 #include "scene.hpp"
 
 #include "vkt/core/barrier.hpp"
@@ -283,20 +284,14 @@ private:
     }
 
     void create_binding_table() {
-        // [sbt-layout]
-        // Each record is a group's handle (opaque bytes the device hands
-        // out), padded to shaderGroupHandleAlignment; each table (ray
-        // generation, miss, hit) starts at a multiple of
-        // shaderGroupBaseAlignment. The ray-generation table holds one
-        // record, and its stride must equal its size.
+        // The layout (binding_table.hpp): records padded to the handle
+        // alignment, each table at a multiple of the base alignment.
         const VkDeviceSize handle = rt_limits_.shaderGroupHandleSize;
         const VkDeviceSize base = rt_limits_.shaderGroupBaseAlignment;
-        const VkDeviceSize record = vkt::align_up(handle, rt_limits_.shaderGroupHandleAlignment);
-        const VkDeviceSize raygen_size = vkt::align_up(record, base);
-        const VkDeviceSize miss_offset = raygen_size, miss_size = vkt::align_up(2 * record, base);
-        const VkDeviceSize hit_offset = miss_offset + miss_size, hit_size = record;
-        const VkDeviceSize table_size = hit_offset + hit_size;
-        // [/sbt-layout]
+        const BindingTableLayout layout =
+            binding_table_layout(handle, rt_limits_.shaderGroupHandleAlignment, base);
+        const VkDeviceSize record = layout.record, miss_offset = layout.miss_offset;
+        const VkDeviceSize hit_offset = layout.hit_offset, table_size = layout.size;
 
         // [sbt-fill]
         // The handles of the four groups, one after another, copied to
@@ -315,9 +310,9 @@ private:
         std::memcpy(table + miss_offset + record, &handles[2 * handle], handle);  // shadow
         std::memcpy(table + hit_offset, &handles[3 * handle], handle);            // hit group
         vkt::upload_to_buffer(gpu_, table_.buffer, bytes.data(), bytes.size());
-        raygen_region_ = {start, raygen_size, raygen_size};
-        miss_region_ = {start + miss_offset, record, miss_size};
-        hit_region_ = {start + hit_offset, record, hit_size};
+        raygen_region_ = {start, layout.raygen_size, layout.raygen_size};
+        miss_region_ = {start + miss_offset, record, layout.miss_size};
+        hit_region_ = {start + hit_offset, record, layout.hit_size};
         // [/sbt-fill]
         std::fprintf(stderr,
                      "25_ray_tracing: shader binding table: handles %u bytes, records %u "

@@ -37,7 +37,7 @@
 
 namespace {
 
-// Must match meshlet_data.glsl and meshlets.mesh's max_vertices/max_primitives.
+// Must match meshlet_data.glsl.
 struct Push {
     glm::mat4 clip_from_world;
     glm::vec4 eye;
@@ -47,7 +47,7 @@ struct Push {
 struct GpuVertex {
     glm::vec4 position, normal;
 };
-constexpr uint32_t kMeshVertices = 64, kMeshTriangles = 124, kTaskGroup = 32;
+using ch26::kMeshVertices, ch26::kMeshTriangles, ch26::kTaskGroup;
 constexpr uint32_t kCounters = 4;  // per frame: frustum, cone, triangles, meshlets drawn
 constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_TASK_BIT_EXT | VK_SHADER_STAGE_MESH_BIT_EXT |
                                        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;

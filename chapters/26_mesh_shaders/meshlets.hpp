@@ -17,6 +17,11 @@
 
 namespace ch26 {
 
+// What meshlets.mesh declares (max_vertices, max_primitives, local_size_x)
+// and meshlets.task's workgroup size: the shaders' numbers, which
+// tests/unit/test_meshlets.cpp reads back from the compiled SPIR-V.
+constexpr uint32_t kMeshVertices = 64, kMeshTriangles = 124, kTaskGroup = 32;
+
 // [meshlet]
 // One meshlet as the shaders read it (std430: 48 bytes, vec3 + float pairs).
 // Its vertices are vertex_count entries of Meshlets::vertices from

@@ -10,11 +10,13 @@ vkt_chapter_test(chapter.09_textures 09_textures GOLDEN BLESS ${VKT_09_PIXEL} AR
 vkt_chapter_test(chapter.09_textures.offscreen 09_textures SAME_AS chapter.09_textures ${VKT_09_PIXEL} ARGS ${offscreen})
 vkt_chapter_window_test(09_textures PIXEL 0,0,137,179,231)
 
-# The CPU fallback (a box filter averaging in linear light) makes the same
-# mips as lavapipe's linear blits, to within the golden tolerance: the same
-# golden image.
+# The CPU fallback (a box filter averaging in linear light) makes nearly the
+# same mips as lavapipe's linear blits: against the same golden image, 12% of
+# the pixels a level or two apart, a bias of 0.09 (the two filters round the
+# far floor's texels differently), so the golden tolerance with a bias of
+# up to 0.2 (a picture 2% brighter moves it by 1.7).
 vkt_chapter_test(chapter.09_textures.cpu_mips 09_textures GOLDEN ${VKT_09_PIXEL}
-  ARGS ${headless} --mips cpu EXPECT "9 mip levels \\(cpu\\)")
+  TOLERANCE 2,24,0.002,0.2,1 ARGS ${headless} --mips cpu EXPECT "9 mip levels \\(cpu\\)")
 # Without mips the far floor aliases (the book shows it): no golden image,
 # but it must run cleanly and say what it does.
 vkt_chapter_test(chapter.09_textures.no_mips 09_textures ${VKT_09_PIXEL}

@@ -58,8 +58,15 @@ string(REPLACE "@EXTRA@" "" vkt_10_bad_image "${vkt_10_bad_image}")
 file(WRITE ${vkt_10_dir}/bad_image.gltf "${vkt_10_bad_image}")
 
 set(vkt_10_run --headless --validation --frames 1 --size ${VKT_TEST_SIZE})
-# The template itself is fine: one orange triangle.
+# The template itself is fine: one orange triangle. Worked by hand: it has
+# no normals, so it is flat shaded with its face normal, +z for the
+# counter-clockwise (0,0,0) (1,0,0) (0,1,0), facing the camera; the fixed sun
+# normalize(0.4, 1, 0.7) gives cos = 0.7 / 1.2845 = 0.5450, light
+# 0.25 + 0.75 x 0.5450 = 0.6587, so the base colour (1, 0.5, 0) becomes
+# linear (0.6587, 0.3294, 0), stored sRGB-encoded as (212, 155, 0); the
+# background is the clear colour (39, 39, 56).
 vkt_chapter_test(chapter.10_gltf.small_file 10_gltf ARGS ${vkt_10_run} --model ${vkt_10_dir}/good.gltf
+  PIXEL 140,130,212,155,0 0,0,39,39,56 300,30,39,39,56
   EXPECT "good.gltf: draws 1, primitives 1, materials 1, images 0, vertices 3, indices 3")
 vkt_chapter_test(bad_input.10_gltf.missing_model 10_gltf EXIT 1
   ARGS ${vkt_10_run} --model ${vkt_10_dir}/no-such-model.gltf

@@ -6,8 +6,15 @@
 # --warmup 10 simulates 10 s (1200 steps) before the first frame: the heaps have
 # settled and every box is asleep ("0 awake"), so frame 10 is a still picture
 # of them, with the pyramid and the tower of --scene stacks beside them.
+#
+# Hand-worked pixels: the sky in the top corners is the clear colour, linear
+# (0.30, 0.45, 0.65), stored sRGB-encoded as (149, 179, 211); the bare floor
+# in the bottom corners is its grey 0x59 (linear 0.349, the instance colour
+# is UNORM) lit from above: Lambert n . l = 1 / |(0.4, 1, 0.3)| = 0.894,
+# ambient 0.25 + 0.75 x 0.894 = 0.921, so linear 0.321, stored (154, 154, 154).
 set(VKT_14_ARGS --warmup 10 --scene stacks)
-vkt_chapter_test(chapter.14_physics 14_physics GOLDEN BLESS ARGS ${headless} ${VKT_14_ARGS}
+set(VKT_14_PIXEL PIXEL 0,0,149,179,211 319,0,149,179,211 5,230,154,154,154 300,225,154,154,154)
+vkt_chapter_test(chapter.14_physics 14_physics GOLDEN BLESS ${VKT_14_PIXEL} ARGS ${headless} ${VKT_14_ARGS}
   EXPECT "14_physics: 1000 boxes and the stacks, sort-and-sweep, 120 steps/s, 1200 warm-up steps, [0-9]+ contact points, 0 awake")
 vkt_chapter_test(chapter.14_physics.offscreen 14_physics SAME_AS chapter.14_physics ARGS ${offscreen} ${VKT_14_ARGS})
 vkt_chapter_window_test(14_physics ARGS ${VKT_14_ARGS})

@@ -31,10 +31,21 @@ vkt_chapter_test(chapter.26_mesh_shaders.indirect 26_mesh_shaders SAME_AS chapte
   EXPECT "one vkCmdDrawIndexedIndirect \\(vertex shader\\)" "submitted 30720 triangles \\(the whole model\\)")
 # The gaze turned 30 degrees left: the right part of the knot leaves the
 # frustum. Turned 180 degrees: everything lies behind the camera.
-vkt_chapter_test(chapter.26_mesh_shaders.turn_30 26_mesh_shaders ARGS ${headless} --turn 30
+vkt_chapter_test(chapter.26_mesh_shaders.turn_30 26_mesh_shaders ${VKT_26_PIXEL}
+  ARGS ${headless} --turn 30
   EXPECT "culled 174 of 389 meshlets \\(127 outside the frustum, 47 facing away\\), drew 215 meshlets, submitted 17932 of 30720 triangles"
          "the CPU culls 174 for that view \\(127 outside the frustum, 47 facing away\\)")
-vkt_chapter_test(chapter.26_mesh_shaders.turn_180 26_mesh_shaders ARGS ${headless} --turn 180
+# There, where the task shader culls 174 meshlets, drawing all 389 must give
+# the same picture to the bit: no culled meshlet had a visible pixel.
+vkt_chapter_test(chapter.26_mesh_shaders.turn_30_no_culling 26_mesh_shaders
+  SAME_AS chapter.26_mesh_shaders.turn_30 ARGS ${headless} --turn 30 --cull off
+  EXPECT "culled 0 of 389 meshlets")
+# Turned 180 degrees, nothing is drawn: the whole picture is the clear colour,
+# the centre and the corners included.
+vkt_chapter_test(chapter.26_mesh_shaders.turn_180 26_mesh_shaders
+  PIXEL 0,0,196,206,218,1 319,0,196,206,218,1 0,239,196,206,218,1 319,239,196,206,218,1
+        160,120,196,206,218,1
+  ARGS ${headless} --turn 180
   EXPECT "culled 389 of 389 meshlets \\(389 outside the frustum, 0 facing away\\), drew 0 meshlets, submitted 0 of 30720 triangles"
          "the CPU culls 389 for that view \\(389 outside the frustum, 0 facing away\\)")
 # Any glTF: chapter 10's scene (five meshes in a node tree) as one mesh.

@@ -118,4 +118,46 @@ inline std::map<std::string, uint32_t> offsets(const std::vector<uint32_t>& word
     return out;
 }
 
+// The literal operands of the first OpExecutionMode (opcode 16) that sets
+// `mode` on any entry point: e.g. LocalSize (17) gives x, y, z, OutputVertices
+// (26) and OutputPrimitivesEXT (5270) one number each. Empty if none does.
+constexpr uint32_t op_execution_mode = 16, mode_local_size = 17, mode_output_vertices = 26,
+                   mode_output_primitives = 5270;
+inline std::vector<uint32_t> execution_mode(const std::vector<uint32_t>& words, uint32_t mode) {
+    for (size_t i = 5; i < words.size();) {
+        const uint32_t length = words[i] >> 16, opcode = words[i] & 0xffffu;
+        if (length == 0 || i + length > words.size())
+            throw std::runtime_error("malformed SPIR-V instruction");
+        if (opcode == op_execution_mode && length >= 3 && words[i + 2] == mode)
+            return {words.begin() + long(i) + 3, words.begin() + long(i + length)};
+        i += length;
+    }
+    return {};
+}
+
+// The workgroup size: LocalSize's three numbers, or, as glslang writes it for
+// SPIR-V 1.4 and later, OpExecutionModeId (331) LocalSizeId (38) naming three
+// OpConstant (43) ids, whose values are looked up.
+inline std::vector<uint32_t> local_size(const std::vector<uint32_t>& words) {
+    if (auto sizes = execution_mode(words, mode_local_size); !sizes.empty()) return sizes;
+    constexpr uint32_t op_execution_mode_id = 331, mode_local_size_id = 38, op_constant = 43;
+    std::map<uint32_t, uint32_t> constants;  // result id -> value (32-bit constants)
+    std::vector<uint32_t> ids;
+    for (size_t i = 5; i < words.size();) {
+        const uint32_t length = words[i] >> 16, opcode = words[i] & 0xffffu;
+        if (length == 0 || i + length > words.size())
+            throw std::runtime_error("malformed SPIR-V instruction");
+        if (opcode == op_constant && length == 4) constants[words[i + 2]] = words[i + 3];
+        if (opcode == op_execution_mode_id && length == 6 && words[i + 2] == mode_local_size_id)
+            ids.assign(words.begin() + long(i) + 3, words.begin() + long(i) + 6);
+        i += length;
+    }
+    std::vector<uint32_t> sizes;
+    for (uint32_t id : ids) {
+        if (!constants.count(id)) throw std::runtime_error("LocalSizeId names no OpConstant");
+        sizes.push_back(constants[id]);
+    }
+    return sizes;
+}
+
 }  // namespace spirv

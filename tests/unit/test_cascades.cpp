@@ -3,13 +3,16 @@
 // orthographic box around each slice of the view; and the geometry behind
 // the chapter test's two hand-picked pixels.
 #include "../../chapters/22_shadows/cascades.hpp"
+#include "../../chapters/22_shadows/scene.hpp"
 #include "../../chapters/22_shadows/uniforms.hpp"
 #include "spirv_reflect.hpp"
 
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
 
+#include <cmath>
 #include <cstddef>
+#include <utility>
 
 using Catch::Approx;
 
@@ -115,22 +118,60 @@ TEST_CASE("light_from_world moves the map by whole texels as the camera moves", 
     }
 }
 
+namespace {
+
+// The nearest of chapter 22's objects (make_scene, in world space) that the
+// ray from `origin` towards the light meets, other than the floor: its
+// colour and distance, or a negative distance if it meets none.
+// Möller-Trumbore over every triangle of every draw.
+std::pair<glm::vec4, float> first_blocker(glm::vec3 origin) {
+    vkt::shapes::MeshBuilder meshes;
+    const std::vector<Draw> draws = make_scene(meshes);
+    const glm::vec3 dir = -light_direction();
+    std::pair<glm::vec4, float> nearest{glm::vec4(0), -1.0f};
+    for (size_t d = 1; d < draws.size(); ++d) {  // draws[0] is the floor
+        const Draw& draw = draws[d];
+        for (uint32_t i = 0; i < draw.mesh.index_count; i += 3) {
+            glm::vec3 v[3];
+            for (uint32_t k = 0; k < 3; ++k)
+                v[k] = glm::vec3(
+                    draw.world_from_object *
+                    glm::vec4(
+                        meshes.vertices[meshes.indices[draw.mesh.first_index + i + k]].position,
+                        1.0f));
+            const glm::vec3 e1 = v[1] - v[0], e2 = v[2] - v[0], p = glm::cross(dir, e2);
+            const float det = glm::dot(e1, p);
+            if (std::abs(det) < 1e-9f) continue;
+            const glm::vec3 t0 = origin - v[0], q = glm::cross(t0, e1);
+            const float u = glm::dot(t0, p) / det, w = glm::dot(dir, q) / det;
+            const float t = glm::dot(e2, q) / det;
+            if (u < 0 || w < 0 || u + w > 1 || t <= 1e-4f) continue;
+            if (nearest.second < 0 || t < nearest.second) nearest = {draw.colour, t};
+        }
+    }
+    return nearest;
+}
+
+}  // namespace
+
 TEST_CASE("the chapter test's shadowed floor point looks at the light through a pillar",
           "[cascades]") {
-    // tests/chapters/22_shadows.cmake: (2.1, 0, 1.325) is in shadow because
-    // the ray to the light, along (0.6, 1, 0.45), reaches the centre of the
-    // right front pillar (3, 1.5, 2) (0.6 x 3 x 0.6) after 1.5 units.
-    const glm::vec3 point(2.1f, 0.0f, 1.325f), to_light(0.6f, 1.0f, 0.45f);
-    const glm::vec3 hit = point + 1.5f * to_light;
-    CHECK(hit.x == Approx(3.0f));
-    CHECK(hit.y == Approx(1.5f));
-    CHECK(hit.z == Approx(2.0f));
-    // The lit point (2, 0, 4): every object ends before z = 4 (the pillars
-    // at z 2.3, the sphere at 3.7, the torus at 1.8), and the ray towards
-    // the light only moves to larger z.
-    CHECK(to_light.z > 0.0f);
+    // tests/chapters/22_shadows.cmake (and 24's): the floor point
+    // (2.1, 0, 1.325) must be in shadow, (2, 0, 4) lit. A ray to the light
+    // through the scene the chapter draws (make_scene, light_direction):
+    // the first meets the right front pillar, colour (0.85, 0.45, 0.3), at
+    // its centre (3, 1.5, 2) 1.5 units of (0.6, 1, 0.45) away, so well inside
+    // it (its faces are 0.3 from the centre in x); the second meets nothing.
+    const auto [colour, t] = first_blocker({2.1f, 0.0f, 1.325f});
+    REQUIRE(t > 0.0f);
+    CHECK(colour == glm::vec4(0.85f, 0.45f, 0.3f, 1.0f));
+    const glm::vec3 centre = glm::vec3(2.1f, 0.0f, 1.325f) + 1.5f * glm::vec3(0.6f, 1.0f, 0.45f);
+    CHECK(centre.x == Approx(3.0f));
+    CHECK(centre.y == Approx(1.5f));
+    CHECK(centre.z == Approx(2.0f));
+    CHECK(first_blocker({2.0f, 0.0f, 4.0f}).second < 0.0f);
     // The floor's Lambert term: n . -light = 1 / |(-0.6, -1, -0.45)| = 0.8.
-    CHECK(glm::dot(glm::vec3(0, 1, 0), -glm::normalize(-to_light)) == Approx(0.8f));
+    CHECK(glm::dot(glm::vec3(0, 1, 0), -light_direction()) == Approx(0.8f));
 }
 
 TEST_CASE("chapter 22's FrameBlock matches both compiled shaders' block", "[cascades]") {

@@ -90,15 +90,76 @@ TEST_CASE("each half of the tolerance fails a picture on its own", "[image]") {
 }
 
 TEST_CASE("the tolerance lets rounding through and catches a wrong pixel block", "[image]") {
+    // Rounding: every other pixel one level up, the rest one down (bias 0,
+    // each tile's median 1 or -1 at most).
     RgbaImage a = solid(100, 100, 50, 50, 50), b = a;
-    for (auto& p : b.pixels) p = uint8_t(p + 1);  // everything off by one: rounding
-    CHECK(vkt::within(vkt::compare_images(a, b, 24), {}));
+    for (size_t p = 0; p < b.pixels.size(); p += 4)
+        for (size_t c = 0; c < 3; ++c) b.pixels[p + c] = uint8_t(50 + ((p / 4) % 2 ? 1 : -1));
+    auto d = vkt::compare_images(a, b, 24);
+    CHECK(d.max_bias == Catch::Approx(0.0));
+    CHECK(d.max_tile_median == 1);
+    CHECK(vkt::within(d, {}));
     RgbaImage c = a;  // a 5x5 block (0.25% of the pixels) entirely wrong
     for (int y = 0; y < 5; ++y)
         for (int x = 0; x < 5; ++x) c.pixels[(y * 100 + x) * 4] = 255;
-    auto d = vkt::compare_images(a, c, 24);
+    d = vkt::compare_images(a, c, 24);
     CHECK(d.pixels_over_threshold == 25);
     CHECK_FALSE(vkt::within(d, {}));
+}
+
+TEST_CASE("a picture one level brighter everywhere is refused by its bias", "[image]") {
+    // Every channel of every pixel +1: RMSE 1.0 and no pixel past 24, which
+    // the first two limits allow, but a bias of 1.0 (a - b: -1 in size).
+    RgbaImage a = solid(100, 100, 50, 50, 50), b = a;
+    for (size_t i = 0; i < b.pixels.size(); ++i)
+        if (i % 4 != 3) b.pixels[i] = 51;
+    const auto d = vkt::compare_images(a, b, 24);
+    CHECK(d.rmse == Catch::Approx(1.0));
+    CHECK(d.max_bias == Catch::Approx(1.0));
+    CHECK_FALSE(vkt::within(d, {}));
+    // One channel only, in one pixel in 10: a bias of 0.1, past 0.08.
+    RgbaImage e = a;
+    for (size_t p = 0; p < 10000; p += 10) e.pixels[p * 4 + 2] = 51;
+    CHECK(vkt::compare_images(a, e, 24).max_bias == Catch::Approx(0.1));
+    CHECK_FALSE(vkt::within(vkt::compare_images(a, e, 24), {}));
+}
+
+TEST_CASE("a patch two levels off moves its tiles' medians; a moved edge does not", "[image]") {
+    // 100 x 100: tiles of 16, the last row and column 4 wide. A 32 x 32 patch
+    // two levels darker in green from (32, 48): its tiles' median is 2.
+    RgbaImage a = solid(100, 100, 80, 80, 80), patch = a;
+    for (int y = 48; y < 80; ++y)
+        for (int x = 32; x < 64; ++x) patch.pixels[(y * 100 + x) * 4 + 1] = 78;
+    auto d = vkt::compare_images(a, patch, 24);
+    CHECK(d.max_tile_median == 2);
+    CHECK(d.tile_x == 32);
+    CHECK(d.tile_y == 48);
+    CHECK(d.max_bias == Catch::Approx(2.0 * 1024 / 10000));
+    CHECK_FALSE(vkt::within(d, {}));
+    // An edge: a column of 100 pixels off by 200 moves no tile's median.
+    RgbaImage edge = a;
+    for (int y = 0; y < 100; ++y) edge.pixels[(y * 100 + 40) * 4] = 255;
+    d = vkt::compare_images(a, edge, 24);
+    CHECK(d.max_tile_median == 0);
+    // The last, narrower column of tiles counts too: x 96..99.
+    RgbaImage corner = a;
+    for (int y = 0; y < 16; ++y)
+        for (int x = 96; x < 100; ++x) corner.pixels[(y * 100 + x) * 4] = 90;
+    d = vkt::compare_images(a, corner, 24);
+    CHECK(d.max_tile_median == 10);
+    CHECK(d.tile_x == 96);
+}
+
+TEST_CASE("the tolerances for other uses keep what they promise", "[image]") {
+    const vkt::Tolerance across = vkt::Tolerance::across_devices();
+    CHECK(across.max_rmse == 2.0);
+    CHECK(across.max_bias == 1.0);
+    CHECK(across.max_tile_median == 2);
+    const vkt::Tolerance loose = vkt::Tolerance::loose(8, 24, 0.02);
+    CHECK(loose.max_rmse == 8);
+    CHECK(loose.max_fraction == 0.02);
+    CHECK(loose.max_bias >= 255);
+    CHECK(loose.max_tile_median >= 255);
 }
 
 TEST_CASE("pictures of different sizes cannot be compared", "[image]") {

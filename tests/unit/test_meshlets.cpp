@@ -5,6 +5,7 @@
 // meshlet culled as back-facing has only triangles that face away; and on a
 // flat grid the counts are known by hand.
 #include "../../chapters/26_mesh_shaders/meshlets.hpp"
+#include "spirv_reflect.hpp"
 
 #include "vkt/scene/camera_math.hpp"
 #include "vkt/scene/gltf.hpp"
@@ -178,4 +179,73 @@ TEST_CASE("cull_on_cpu: a flat grid seen from behind, in front and from far away
     ch26::frustum_planes(projection, planes);
     CHECK(std::abs(planes[4].w + 0.1f) < 1e-4f);  // near: -z - 0.1 >= 0
     CHECK(std::abs(planes[0].x - std::sqrt(0.5f)) < 1e-4f);
+}
+
+TEST_CASE("the mesh and task shaders declare the limits the C++ builds meshlets for",
+          "[meshlets]") {
+    // SetMeshOutputsEXT past max_vertices or max_primitives is undefined
+    // behaviour that lavapipe may forgive; the numbers are written in the
+    // shaders and in meshlets.hpp, so they are read back from the SPIR-V.
+    const std::string dir = std::string(VKT_BINARY_DIR) + "/shaders/26_mesh_shaders/";
+    const auto mesh_spirv = spirv::read(dir + "meshlets.mesh.spv");
+    CHECK(spirv::execution_mode(mesh_spirv, spirv::mode_output_vertices) ==
+          std::vector<uint32_t>{ch26::kMeshVertices});
+    CHECK(spirv::execution_mode(mesh_spirv, spirv::mode_output_primitives) ==
+          std::vector<uint32_t>{ch26::kMeshTriangles});
+    CHECK(spirv::local_size(mesh_spirv) == std::vector<uint32_t>{ch26::kTaskGroup, 1, 1});
+    const auto task = spirv::read(dir + "meshlets.task.spv");
+    CHECK(spirv::local_size(task) == std::vector<uint32_t>{ch26::kTaskGroup, 1, 1});
+    // And the builder keeps to them: no meshlet of the knot goes past either.
+    const Mesh mesh = knot();
+    const Meshlets out = ch26::build_meshlets(mesh.positions, mesh.indices, ch26::kMeshVertices,
+                                              ch26::kMeshTriangles);
+    REQUIRE(!out.meshlets.empty());
+    for (const Meshlet& m : out.meshlets) {
+        CHECK(m.vertex_count <= ch26::kMeshVertices);
+        CHECK(m.triangle_count <= ch26::kMeshTriangles);
+    }
+}
+
+TEST_CASE("over many views, no meshlet culled by the frustum has a vertex inside it",
+          "[meshlets]") {
+    // The task shader's frustum test (outside_frustum, the same formula) is
+    // conservative: a meshlet it drops has no vertex that a camera could
+    // see. Checked against the clip-space definition of inside (-w <= x, y
+    // <= w, 0 <= z <= w) for every vertex, from 200 views around and inside
+    // the knot, pseudo-random but the same on every run.
+    const Mesh mesh = knot();
+    const Meshlets out = ch26::build_meshlets(mesh.positions, mesh.indices, 64, 124);
+    uint32_t state = 12345u, culled = 0, kept = 0;
+    const auto next = [&]() {  // a linear congruential generator, 0..1
+        state = state * 1664525u + 1013904223u;
+        return float(state >> 8) / float(1u << 24);
+    };
+    for (int view = 0; view < 200; ++view) {
+        const glm::vec3 eye(6 * next() - 3, 6 * next() - 3, 6 * next() - 3);
+        const glm::vec3 target(2 * next() - 1, 2 * next() - 1, 2 * next() - 1);
+        if (glm::length(target - eye) < 0.1f) continue;
+        const glm::mat4 clip_from_world =
+            vkt::vulkan_perspective(glm::radians(30.0f + 60.0f * next()), 0.5f + next(), 0.05f,
+                                    2.0f + 6.0f * next()) *
+            glm::lookAt(eye, target, glm::vec3(0, 1, 0));
+        glm::vec4 planes[6];
+        ch26::frustum_planes(clip_from_world, planes);
+        for (const Meshlet& m : out.meshlets) {
+            if (!ch26::outside_frustum(planes, m)) {
+                ++kept;
+                continue;
+            }
+            ++culled;
+            for (uint32_t i = 0; i < m.vertex_count; ++i) {
+                const glm::vec4 c = clip_from_world *
+                                    glm::vec4(mesh.positions[out.vertices[m.vertex_offset + i]], 1);
+                const bool inside = -c.w <= c.x && c.x <= c.w && -c.w <= c.y && c.y <= c.w &&
+                                    0 <= c.z && c.z <= c.w;
+                CHECK_FALSE(inside);
+            }
+        }
+    }
+    // The views did cull, and did keep: the check was not empty either way.
+    CHECK(culled > 1000);
+    CHECK(kept > 1000);
 }

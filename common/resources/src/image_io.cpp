@@ -5,6 +5,7 @@
 #include <png.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -30,6 +31,21 @@ RgbaImage read_png(const std::filesystem::path& path) {
     return load_image_file(path);
 }
 
+namespace {
+
+// The median of the values counted in `histogram` (a - b + 255, 511 bins):
+// the middle one, the upper of the two middle ones for an even count.
+int histogram_median(const std::array<uint32_t, 511>& histogram, uint32_t count) {
+    uint32_t seen = 0;
+    for (int i = 0; i < 511; ++i) {
+        seen += histogram[size_t(i)];
+        if (seen > count / 2) return i - 255;
+    }
+    return 0;
+}
+
+}  // namespace
+
 ImageDifference compare_images(const RgbaImage& a, const RgbaImage& b, int threshold) {
     if (a.width != b.width || a.height != b.height)
         throw Error("images differ in size: " + std::to_string(a.width) + "x" +
@@ -37,27 +53,53 @@ ImageDifference compare_images(const RgbaImage& a, const RgbaImage& b, int thres
                     std::to_string(b.height));
     ImageDifference out;
     double sum_squares = 0;
+    std::array<double, 3> sum{};
     const size_t pixel_count = size_t{a.width} * a.height;
+    const auto difference = [&](size_t p, size_t c) {
+        return int(a.pixels[p * 4 + c]) - int(b.pixels[p * 4 + c]);
+    };
     for (size_t p = 0; p < pixel_count; ++p) {
         int worst = 0;
         for (size_t c = 0; c < 3; ++c) {
-            int d = std::abs(int(a.pixels[p * 4 + c]) - int(b.pixels[p * 4 + c]));
+            const int d = difference(p, c);
             sum_squares += double(d) * d;
-            worst = std::max(worst, d);
+            sum[c] += d;
+            worst = std::max(worst, std::abs(d));
         }
         out.max_channel_difference = std::max(out.max_channel_difference, worst);
         if (worst > threshold) ++out.pixels_over_threshold;
     }
-    if (pixel_count > 0) {
-        out.rmse = std::sqrt(sum_squares / double(pixel_count * 3));
-        out.fraction_over_threshold = double(out.pixels_over_threshold) / double(pixel_count);
-    }
+    if (pixel_count == 0) return out;
+    out.rmse = std::sqrt(sum_squares / double(pixel_count * 3));
+    out.fraction_over_threshold = double(out.pixels_over_threshold) / double(pixel_count);
+    for (size_t c = 0; c < 3; ++c)
+        out.max_bias = std::max(out.max_bias, std::abs(sum[c] / double(pixel_count)));
+
+    constexpr uint32_t tile = 16;
+    for (uint32_t y0 = 0; y0 < a.height; y0 += tile)
+        for (uint32_t x0 = 0; x0 < a.width; x0 += tile) {
+            const uint32_t x1 = std::min(a.width, x0 + tile), y1 = std::min(a.height, y0 + tile);
+            for (size_t c = 0; c < 3; ++c) {
+                std::array<uint32_t, 511> histogram{};
+                for (uint32_t y = y0; y < y1; ++y)
+                    for (uint32_t x = x0; x < x1; ++x)
+                        ++histogram[size_t(difference(size_t{y} * a.width + x, c) + 255)];
+                const int median = std::abs(histogram_median(histogram, (x1 - x0) * (y1 - y0)));
+                if (median > out.max_tile_median) {
+                    out.max_tile_median = median;
+                    out.tile_x = x0;
+                    out.tile_y = y0;
+                }
+            }
+        }
     return out;
 }
 
 bool within(const ImageDifference& difference, const Tolerance& tolerance) {
     return difference.rmse <= tolerance.max_rmse &&
-           difference.fraction_over_threshold <= tolerance.max_fraction;
+           difference.fraction_over_threshold <= tolerance.max_fraction &&
+           difference.max_bias <= tolerance.max_bias &&
+           difference.max_tile_median <= tolerance.max_tile_median;
 }
 
 RgbaImage difference_image(const RgbaImage& a, const RgbaImage& b) {
