@@ -146,8 +146,8 @@ fi
 # 782 passed, 0 skipped as expected"), else CTest's own summary of the test
 # step ("100% tests passed, 0 tests failed out of 537"), the first one.
 tests='no tests ran'
-if account_line=$(grep -E '^account_tests: release on ' "$logs/workflow.log" 2>/dev/null | tail -n 1); then
-  tests=${account_line#account_tests: release on }
+if account_line=$(grep -E '^([0-9]+: )?account_tests: release on ' "$logs/workflow.log" 2>/dev/null | tail -n 1); then
+  tests=$(sed -E 's/^.*account_tests: release on //' <<<"$account_line")
 elif ctest_line=$(grep -E '[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$logs/workflow.log" 2>/dev/null | head -n 1); then
   total=$(sed -E 's/.* out of ([0-9]+).*/\1/' <<<"$ctest_line")
   failed=$(sed -E 's/.*passed, ([0-9]+) tests? failed.*/\1/' <<<"$ctest_line")

@@ -82,8 +82,10 @@ ImageDifference compare_images(const RgbaImage& a, const RgbaImage& b, int thres
             for (size_t c = 0; c < 3; ++c) {
                 std::array<uint32_t, 511> histogram{};
                 for (uint32_t y = y0; y < y1; ++y)
-                    for (uint32_t x = x0; x < x1; ++x)
-                        ++histogram[size_t(difference(size_t{y} * a.width + x, c) + 255)];
+                    for (uint32_t x = x0; x < x1; ++x) {
+                        const int bin = difference(size_t{y} * a.width + x, c) + 255;  // 0..510
+                        ++histogram[size_t(bin)];
+                    }
                 const int median = std::abs(histogram_median(histogram, (x1 - x0) * (y1 - y0)));
                 if (median > out.max_tile_median) {
                     out.max_tile_median = median;
