@@ -2,6 +2,7 @@
 // shapes' windings and normals, and its blocks' C++ mirrors
 // (chapters/12_lighting/blocks.hpp) against the offsets in the compiled SPIR-V.
 #include "../../chapters/12_lighting/blocks.hpp"
+#include "../../chapters/12_lighting/scene.hpp"
 #include "spirv_reflect.hpp"
 #include "vkt/scene/lighting.hpp"
 #include "vkt/scene/meshes.hpp"
@@ -10,6 +11,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -235,4 +237,93 @@ TEST_CASE("the SPIR-V reader refuses what is not SPIR-V", "[lighting]") {
     CHECK_THROWS(spirv::read(VKT_SOURCE_DIR "/shaders/12_lighting/lit.vert"));  // GLSL text
     const auto words = spirv::read(spv("lit.frag"));
     CHECK_THROWS(spirv::offsets(words, "NoSuchBlock"));
+}
+
+namespace {
+
+// Chapter 12's colour at pixel (x, y) of a 320x240 frame at time t, worked out
+// on the CPU: the ray through the pixel's centre meets the nearest triangle
+// of the given object's mesh (the very triangles the chapter draws), whose
+// vertices' positions and normals are interpolated there (a ray's barycentrics
+// in world space are the rasteriser's perspective-correct ones), the normals
+// turned by `normals`; then vkt::shade with the chapter's lights.
+struct CpuPixel {
+    bool hit = false;
+    glm::vec3 linear{0.0f};
+};
+CpuPixel shade_pixel(int x, int y, float t, size_t object_index, bool inverse_transpose) {
+    vkt::shapes::MeshBuilder builder;
+    vkt::shapes::MeshRange meshes[ch12::mesh_count];
+    ch12::build_meshes(builder, meshes);
+    const ch12::Object object = ch12::make_objects(t)[object_index];
+    const glm::mat4 clip_from_world =
+        vkt::vulkan_perspective(glm::radians(45.0f), 320.0f / 240.0f, 0.1f, 100.0f) *
+        glm::lookAt(ch12::eye, glm::vec3(0.0f), glm::vec3(0, 1, 0));
+    const glm::mat4 world_from_clip = glm::inverse(clip_from_world);
+    const glm::vec2 ndc(2.0f * (float(x) + 0.5f) / 320.0f - 1.0f,
+                        2.0f * (float(y) + 0.5f) / 240.0f - 1.0f);
+    const glm::vec4 near_point = world_from_clip * glm::vec4(ndc, 0.0f, 1.0f);
+    const glm::vec4 far_point = world_from_clip * glm::vec4(ndc, 1.0f, 1.0f);
+    const glm::vec3 origin = glm::vec3(near_point) / near_point.w;
+    const glm::vec3 dir = glm::normalize(glm::vec3(far_point) / far_point.w - origin);
+    const glm::mat3 normals =
+        inverse_transpose ? vkt::normal_matrix(object.model) : glm::mat3(object.model);
+    const vkt::shapes::MeshRange range = meshes[object.mesh];
+    CpuPixel out;
+    float nearest = 1e30f;
+    for (uint32_t i = 0; i < range.index_count; i += 3) {
+        glm::vec3 p[3], n[3];
+        for (uint32_t k = 0; k < 3; ++k) {
+            const vkt::shapes::Vertex& v =
+                builder.vertices[builder.indices[range.first_index + i + k]];
+            p[k] = glm::vec3(object.model * glm::vec4(v.position, 1.0f));
+            n[k] = normals * v.normal;
+        }
+        const glm::vec3 e1 = p[1] - p[0], e2 = p[2] - p[0], q = glm::cross(dir, e2);
+        const float det = glm::dot(e1, q);
+        if (std::abs(det) < 1e-12f) continue;
+        const glm::vec3 s = origin - p[0], r = glm::cross(s, e1);
+        const float u = glm::dot(s, q) / det, v = glm::dot(dir, r) / det, d = glm::dot(e2, r) / det;
+        if (u < 0 || v < 0 || u + v > 1 || d <= 0 || d >= nearest) continue;
+        nearest = d;
+        const glm::vec3 position = (1 - u - v) * p[0] + u * p[1] + v * p[2];
+        const glm::vec3 normal = (1 - u - v) * n[0] + u * n[1] + v * n[2];
+        const std::vector<vkt::PointLight> lights = ch12::make_lights(5, t);
+        out = {true, vkt::shade(position, normal, object.albedo, ch12::eye, lights)};
+    }
+    return out;
+}
+
+int srgb_byte(float linear) {
+    const float l = std::clamp(linear, 0.0f, 1.0f);
+    const float s = l <= 0.0031308f ? 12.92f * l : 1.055f * std::pow(l, 1 / 2.4f) - 0.055f;
+    return int(std::lround(s * 255.0f));
+}
+
+}  // namespace
+
+TEST_CASE("chapter 12's squashed sphere: its pixel (174, 88) shaded on the CPU", "[lighting]") {
+    // tests/chapters/12_lighting.cmake checks this pixel of the chapter's
+    // picture (frame 9, per fragment on the right half) with the numbers
+    // below: with the inverse transpose the normals stay perpendicular to the
+    // squashed surface and the top of the ellipsoid, facing the lights, is
+    // bright green; turned by the model matrix itself they lean towards the
+    // flattened axis and the same point is a dull grey, 150 levels darker.
+    // Over the 517 pixels of the ellipsoid's right half this reference gives
+    // lavapipe's colour exactly for 418 and within 1 for the rest, both ways.
+    const float t = 9.0f / 60.0f;
+    const CpuPixel right = shade_pixel(174, 88, t, 1, true);
+    const CpuPixel wrong = shade_pixel(174, 88, t, 1, false);
+    REQUIRE(right.hit);
+    CHECK(srgb_byte(right.linear.x) == 207);
+    CHECK(srgb_byte(right.linear.y) == 238);
+    CHECK(srgb_byte(right.linear.z) == 182);
+    CHECK(srgb_byte(wrong.linear.x) == 83);
+    CHECK(srgb_byte(wrong.linear.y) == 86);
+    CHECK(srgb_byte(wrong.linear.z) == 84);
+    // The object is the squashed sphere, scaled (2.6, 0.9, 1.3): non-uniform.
+    const ch12::Object ellipsoid = ch12::make_objects(t)[1];
+    CHECK(ellipsoid.mesh == ch12::sphere_mesh);
+    CHECK(glm::length(glm::vec3(ellipsoid.model[0])) == Approx(2.6f));
+    CHECK(glm::length(glm::vec3(ellipsoid.model[1])) == Approx(0.9f));
 }
