@@ -3,8 +3,12 @@
 #
 # Hand-worked pixels: the top corners show no geometry, so the lighting pass
 # writes the background (0.02, 0.02, 0.04), stored sRGB-encoded as (39, 39, 56),
-# the same colour the forward path clears to.
-set(VKT_16_PIXEL PIXEL 0,0,39,39,56 319,0,39,39,56)
+# the same colour the forward path clears to. And two pixels of bare floor
+# lit by the moving lights at frame 9, worked out on the CPU from the camera,
+# the floor's material and make_lights (tests/unit/test_deferred.cpp,
+# "chapters 16 and 17: lit floor pixels"): a pink pool at (234, 165),
+# (242, 94, 188), and a cyan one at (159, 156), (125, 194, 193).
+set(VKT_16_PIXEL PIXEL 0,0,39,39,56 319,0,39,39,56 234,165,242,94,188,2 159,156,125,194,193,2)
 vkt_chapter_test(chapter.16_deferred 16_deferred GOLDEN BLESS ${VKT_16_PIXEL} ARGS ${headless}
   EXPECT "16_deferred: 32 lights, path deferred, view lit")
 vkt_chapter_test(chapter.16_deferred.offscreen 16_deferred SAME_AS chapter.16_deferred ${VKT_16_PIXEL}
