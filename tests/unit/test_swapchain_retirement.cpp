@@ -24,22 +24,31 @@ struct Token {
     }
 };
 
+// An instance and the device the loader offers: the test is skipped without one.
+struct AnyDevice {
+    std::optional<vkt::Instance> instance;
+    std::optional<vkt::Device> device;
+    AnyDevice() {
+        try {
+            instance.emplace(vkt::InstanceConfig{.application_name = "test_swapchain_retirement"});
+        } catch (const std::exception& e) {
+            SKIP("no Vulkan instance: " << e.what());
+        }
+        const vkt::DeviceRequirements requirements{};
+        const auto candidates = vkt::survey_devices(*instance, VK_NULL_HANDLE, requirements);
+        bool any = false;
+        for (const auto& candidate : candidates) any = any || candidate.unsuitable.empty();
+        if (!any) SKIP("no Vulkan device");
+        device.emplace(vkt::choose_device(candidates, ""), requirements);
+    }
+};
+
 }  // namespace
 
 TEST_CASE("without present fences, a retired swapchain goes once a later present is proven over",
           "[swapchain][gpu]") {
-    std::optional<vkt::Instance> instance;
-    try {
-        instance.emplace(vkt::InstanceConfig{.application_name = "test_swapchain_retirement"});
-    } catch (const std::exception& e) {
-        SKIP("no Vulkan instance: " << e.what());
-    }
-    const vkt::DeviceRequirements requirements{};
-    const auto candidates = vkt::survey_devices(*instance, VK_NULL_HANDLE, requirements);
-    bool any = false;
-    for (const auto& candidate : candidates) any = any || candidate.unsuitable.empty();
-    if (!any) SKIP("no Vulkan device");
-    vkt::Device device(vkt::choose_device(candidates, ""), requirements);
+    const AnyDevice any;
+    const vkt::Device& device = *any.device;
 
     bool first_gone = false, second_gone = false;
     {
@@ -101,18 +110,8 @@ TEST_CASE("with present fences, a retired swapchain goes once its presents' fenc
     // takes only in a window under a 1.3.290+ layer: each present's fence is
     // taken from the pNext chain present() returns, and signalled here by an
     // empty submission, as the driver would once the present let go.
-    std::optional<vkt::Instance> instance;
-    try {
-        instance.emplace(vkt::InstanceConfig{.application_name = "test_swapchain_retirement"});
-    } catch (const std::exception& e) {
-        SKIP("no Vulkan instance: " << e.what());
-    }
-    const vkt::DeviceRequirements requirements{};
-    const auto candidates = vkt::survey_devices(*instance, VK_NULL_HANDLE, requirements);
-    bool any = false;
-    for (const auto& candidate : candidates) any = any || candidate.unsuitable.empty();
-    if (!any) SKIP("no Vulkan device");
-    vkt::Device device(vkt::choose_device(candidates, ""), requirements);
+    const AnyDevice any;
+    const vkt::Device& device = *any.device;
     const auto fence_of = [](const void* next) {
         const auto* info = static_cast<const VkSwapchainPresentFenceInfoEXT*>(next);
         REQUIRE(info != nullptr);
