@@ -4,11 +4,20 @@
 # The sky is the clear colour, linear (0.30, 0.45, 0.65), stored sRGB-encoded
 # as (149, 179, 211) in the top corners. By frame 10 every texture is
 # resident (8 arrive per frame from frame 0), so the picture is the final one.
-set(VKT_15_PIXEL PIXEL 0,0,149,179,211 319,0,149,179,211)
+#
+# Two lit floor pixels, worked out by hand from bindless.frag: the floor is
+# slot 0's grey checker (sRGB 110 and 150, linear 0.1559 and 0.3050) with
+# tint 1; its normal is +y, so lambert = dot(+y, normalize(0.4, 1, 0.3)) =
+# 1 / sqrt(1.25) = 0.8944 and the light is 0.3 + 0.7 * 0.8944 = 0.9261.
+# Dark square: 0.1559 * 0.9261 = 0.1444, sRGB 106; light square: 0.3050 *
+# 0.9261 = 0.2825, sRGB 145. (Unlit they would be 110 and 150; with no
+# ambient 88 and 121; lambert alone 104 and 143.) Both pixels lie in the middle of a checker square
+# near the bottom, 7 x 7 pixels of one value around them.
+set(VKT_15_PIXEL PIXEL 0,0,149,179,211 319,0,149,179,211 297,236,106,106,106 190,236,145,145,145)
 vkt_chapter_test(chapter.15_bindless 15_bindless GOLDEN BLESS ${VKT_15_PIXEL} ARGS ${headless}
   EXPECT "15_bindless: 1025 objects \\(32 x 32 and the floor\\), 49 texture slots \\(48 textures and the loading one\\), one vkCmdDrawIndexedIndirect for all")
 vkt_chapter_test(chapter.15_bindless.offscreen 15_bindless SAME_AS chapter.15_bindless ${VKT_15_PIXEL} ARGS ${offscreen})
-vkt_chapter_window_test(15_bindless PIXEL 0,0,149,179,211)
+vkt_chapter_window_test(15_bindless PIXEL 0,0,149,179,211 297,236,106,106,106)
 # A loop of 1025 vkCmdDrawIndexed draws exactly what the one indirect call
 # draws: the same golden image.
 vkt_chapter_test(chapter.15_bindless.loop 15_bindless SAME_AS chapter.15_bindless ${VKT_15_PIXEL}

@@ -49,10 +49,36 @@ vkt_chapter_test(chapter.26_mesh_shaders.turn_180 26_mesh_shaders
   EXPECT "culled 389 of 389 meshlets \\(389 outside the frustum, 0 facing away\\), drew 0 meshlets, submitted 0 of 30720 triangles"
          "the CPU culls 389 for that view \\(389 outside the frustum, 0 facing away\\)")
 # Any glTF: chapter 10's scene (five meshes in a node tree) as one mesh.
-vkt_chapter_test(chapter.26_mesh_shaders.other_model 26_mesh_shaders
+vkt_chapter_test(chapter.26_mesh_shaders.other_model 26_mesh_shaders ${VKT_26_PIXEL}
   ARGS ${headless} --model ${PROJECT_SOURCE_DIR}/assets/gltf/scene.gltf
   EXPECT "scene.gltf: 1056 triangles, 631 vertices -> 32 meshlets"
          "the last frame culled 12 of 32 meshlets" "the CPU culls 12 for that view")
+# There too, drawing every meshlet gives the same picture to the bit.
+vkt_chapter_test(chapter.26_mesh_shaders.other_model_no_culling 26_mesh_shaders
+  SAME_AS chapter.26_mesh_shaders.other_model
+  ARGS ${headless} --model ${PROJECT_SOURCE_DIR}/assets/gltf/scene.gltf --cull off
+  EXPECT "culled 0 of 32 meshlets")
+# The triangle and vertex counts above, checked against the files' own
+# accessor counts (tests/chapters/gltf_counts.py reads only the JSON, walks
+# the node tree, counts a mesh once per node using it), and the meshlet count
+# against the bounds any builder with 64 vertices and 124 triangles must
+# keep. A stand-in chapter that miscounts by one triangle is refused.
+find_package(Python3 COMPONENTS Interpreter QUIET)  # required (tests/CMakeLists.txt says so)
+add_test(NAME chapter.26_mesh_shaders.counts_match_gltf
+  COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/chapters/gltf_counts.py
+          $<TARGET_FILE:26_mesh_shaders> ${PROJECT_SOURCE_DIR}/assets/gltf/knot.glb
+          ${PROJECT_SOURCE_DIR}/assets/gltf/scene.gltf ${PROJECT_SOURCE_DIR}/assets/gltf/scene.glb
+          ${PROJECT_SOURCE_DIR}/assets/gltf/pbr_cubes.gltf)
+set_tests_properties(chapter.26_mesh_shaders.counts_match_gltf PROPERTIES
+  ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}"
+  LABELS chapter
+  PASS_REGULAR_EXPRESSION "pbr_cubes.gltf: the JSON says 24 triangles, 48 vertices .*; the chapter says 24, 48, ")
+add_test(NAME chapter.26_mesh_shaders.counts_can_fail
+  COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/chapters/gltf_counts.py
+          ${CMAKE_CURRENT_SOURCE_DIR}/chapters/gltf_counts_wrong.sh
+          ${PROJECT_SOURCE_DIR}/assets/gltf/scene.gltf)
+set_tests_properties(chapter.26_mesh_shaders.counts_can_fail PROPERTIES LABELS chapter
+  PASS_REGULAR_EXPRESSION "scene.gltf: the chapter's counts differ from the file's")
 # --benchmark reports the "draw" scope.
 vkt_chapter_test(chapter.26_mesh_shaders.benchmark 26_mesh_shaders
   ARGS --headless --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark
