@@ -3,7 +3,7 @@
 # the chapter runs, the script sends resizes as fast as xdotool can, without
 # waiting for any, so that they land on every part of the frame loop; then one
 # last size that the storm never used, and waits until the chapter has
-# presented a frame at it. Whatever happened in between, the end is known:
+# presented a frame at it and kept at most one retired swapchain. Whatever happened in between, the end is known:
 # close, exit 0, clean validation, and a screenshot of the triangle at the last
 # size. One storm size is larger than the start (the read-back buffers grow).
 #   window_resize_storm.sh CHAPTER_EXE OUT_DIR TITLE RESIZES CHECKER [PICTURE: triangle (default) or any]
@@ -25,6 +25,11 @@ for i in $(seq 0 $((resizes - 1))); do
 done
 resize "$window" 301 199
 echo "$(grep -c 'swapchain recreated' "$err") recreations for $resizes + 1 resize requests"
+# The storm retired many swapchains; as frames go on at the last size their
+# presents end and they must go, down to at most the newest one.
+last=$(grep -n 'swapchain recreated' "$err" | tail -n 1 | cut -d: -f1)
+wait_line "$((last - 1))" "retired swapchains down to [01] kept"
+grep 'retired swapchains down to' "$err" | tail -n 1
 # STORM_RETIREMENT: how old swapchains must have been retired, as the
 # recreation lines say it ("their present fences signal", "a later present ends").
 if [ -n "${STORM_RETIREMENT:-}" ] && ! grep -q "retired kept until $STORM_RETIREMENT" "$err"; then

@@ -181,7 +181,7 @@ void FrameLoop::create_swapchain(VkSwapchainKHR old) {
         .preTransform = allows.currentTransform,        // the screen's rotation, as it is
         .compositeAlpha = alpha,
         .presentMode = next.mode,
-        .clipped = VK_TRUE,   // pixels hidden behind other windows need not be kept
+        .clipped = next.readable ? VK_FALSE : VK_TRUE,  // hidden pixels: kept if read back
         .oldSwapchain = old,  // on recreation: lets the driver hand resources over
     };
     VkSwapchainKHR handle;
@@ -316,7 +316,7 @@ bool FrameLoop::draw_frame(uint64_t index) {
     };
     const VkResult presented = vkQueuePresentKHR(device_.queue(), &present);
     if (presented != VK_ERROR_OUT_OF_DATE_KHR) vkt::check(presented, "vkQueuePresentKHR");
-    harness_.note_presented(swapchain_->extent);
+    harness_.note_presented(swapchain_->extent, retirement_.kept());
     // The frame was drawn either way; the next one needs a new swapchain if the
     // surface has changed, said so, or the window reported a new size.
     if (suboptimal || presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR ||

@@ -55,6 +55,7 @@ TEST_CASE("a typical window: drawn into, with only the usages needed", "[swapcha
     CHECK(plan.present_mode == VK_PRESENT_MODE_FIFO_KHR);
     CHECK(plan.composite_alpha == VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR);
     CHECK(plan.transform == VK_SURFACE_TRANSFORM_IDENTITY_BIT_KHR);
+    CHECK(plan.clipped);  // nothing reads the images: hidden pixels may be skipped
 }
 
 TEST_CASE("a chapter that clears or copies into its frame gets TRANSFER_DST", "[swapchain]") {
@@ -72,6 +73,9 @@ TEST_CASE("a screenshot adds TRANSFER_SRC where offered", "[swapchain]") {
     CHECK(plan.readable);
     CHECK(plan.drawn_into);
     CHECK(plan.usage == (attach | copy_out));
+    // Read back, pixels behind another window must be kept: clipped would
+    // leave them undefined.
+    CHECK_FALSE(plan.clipped);
 }
 
 TEST_CASE("copied in with --copy-to-swapchain: no COLOR_ATTACHMENT", "[swapchain]") {

@@ -141,6 +141,7 @@ SwapchainPlan plan_swapchain(const SurfaceOffer& offer, const SwapchainRequest& 
                                  : VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_DST_BIT};
     if (plan.drawn_into && request.transfer_into) plan.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     if (plan.readable) plan.usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    plan.clipped = !plan.readable;
     return plan;
 }
 // [/plan-swapchain]
@@ -168,7 +169,7 @@ Swapchain::Swapchain(VkPhysicalDevice physical, VkDevice device, VkSurfaceKHR su
         .preTransform = plan.transform,
         .compositeAlpha = plan.composite_alpha,
         .presentMode = present_mode_,
-        .clipped = VK_TRUE,
+        .clipped = plan.clipped ? VK_TRUE : VK_FALSE,
         .oldSwapchain = old_swapchain,  // lets the driver hand resources over on resize
     };
     VkSwapchainKHR swapchain;

@@ -57,6 +57,25 @@ void check_writable(const std::string& path) {
     if (!existed) std::filesystem::remove(path);
 }
 
+// VK_KHR_surface_maintenance1 and VK_KHR_swapchain_maintenance1 are the EXT
+// extensions promoted, with the same structures and values (the EXT names are
+// aliases): the KHR name where the driver offers it, else the EXT one. Hiding
+// the EXT name from the tests hides both.
+const char* surface_maintenance_name() {
+    constexpr const char* khr = "VK_KHR_surface_maintenance1";
+    return instance_extension_available(khr) && !hidden_by_tests(khr) &&
+                   !hidden_by_tests(VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME)
+               ? khr
+               : VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME;
+}
+const char* swapchain_maintenance_name(VkPhysicalDevice device) {
+    constexpr const char* khr = "VK_KHR_swapchain_maintenance1";
+    return device_extension_available(device, khr) &&
+                   !hidden_by_tests(VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME)
+               ? khr
+               : VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME;
+}
+
 }  // namespace
 
 Harness::Harness(const Options& options, const ChapterSpec& spec, uint32_t frames_in_flight)
@@ -106,7 +125,7 @@ void Harness::open_presentation() {
     const bool layer = instance_layer_available(validation_layer_name);
     const bool validation = options_.validation.value_or(layer);
     // Where there will be a swapchain: the instance extensions that
-    // VK_EXT_swapchain_maintenance1 (present fences) builds on, where offered.
+    // VK_KHR_swapchain_maintenance1 (present fences) builds on, where offered.
     // Not in a window under validation layers older than 1.3.290 (Debian 12
     // has 1.3.239): with the extension on, they check a new swapchain's size
     // against a fresh query of the window's, which a resize between our query
@@ -119,11 +138,11 @@ void Harness::open_presentation() {
     const bool surface_maintenance =
         presentation_ != Presentation::offscreen && !racy_layer &&
         instance_extension_available(VK_KHR_GET_SURFACE_CAPABILITIES_2_EXTENSION_NAME) &&
-        instance_extension_available(VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME) &&
-        !hidden_by_tests(VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME);
+        instance_extension_available(surface_maintenance_name()) &&
+        !hidden_by_tests(surface_maintenance_name());
     if (surface_maintenance) {
         extensions.push_back(VK_KHR_GET_SURFACE_CAPABILITIES_2_EXTENSION_NAME);
-        extensions.push_back(VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME);
+        extensions.push_back(surface_maintenance_name());
     }
 
     if (options_.validation.value_or(false) && !layer)
@@ -167,7 +186,7 @@ void Harness::open_presentation() {
     VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT maintenance{
         .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SWAPCHAIN_MAINTENANCE_1_FEATURES_EXT};
     if (surface_ && surface_maintenance &&
-        device_extension_available(chosen.handle, VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME)) {
+        device_extension_available(chosen.handle, swapchain_maintenance_name(chosen.handle))) {
         VkPhysicalDeviceFeatures2 query{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
                                         .pNext = &maintenance};
         vkGetPhysicalDeviceFeatures2(chosen.handle, &query);
@@ -176,7 +195,7 @@ void Harness::open_presentation() {
     if (present_fences_) {
         maintenance.pNext = requirements.extension_features;  // after the chapter's own
         requirements.extension_features = &maintenance;
-        requirements.extensions.push_back(VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME);
+        requirements.extensions.push_back(swapchain_maintenance_name(chosen.handle));
     }
     device_ = std::make_unique<Device>(chosen, requirements);
 
@@ -253,15 +272,22 @@ void Harness::announce(const Destination& where) const {
                  instance_->validation() ? "on (with synchronisation)" : "off");
 }
 
-void Harness::note_presented(VkExtent2D extent) {
-    if (extent.width == presented_.width && extent.height == presented_.height) return;
-    presented_ = extent;
-    std::fprintf(stderr, "%s: presented a frame at %ux%u\n", spec_.name.c_str(), extent.width,
-                 extent.height);
+void Harness::note_presented(VkExtent2D extent, size_t retired_kept) {
+    if (extent.width != presented_.width || extent.height != presented_.height) {
+        presented_ = extent;
+        std::fprintf(stderr, "%s: presented a frame at %ux%u\n", spec_.name.c_str(), extent.width,
+                     extent.height);
+    }
+    if (draining_ && retired_kept <= 1) {
+        draining_ = false;
+        std::fprintf(stderr, "%s: retired swapchains down to %zu kept\n", spec_.name.c_str(),
+                     retired_kept);
+    }
 }
 
 void Harness::note_recreated(VkExtent2D extent, size_t kept) {
     presented_ = {};  // the next present is reported, whatever its size
+    draining_ = true;
     std::fprintf(stderr, "%s: swapchain recreated at %ux%u (%zu retired kept until %s)\n",
                  spec_.name.c_str(), extent.width, extent.height, kept,
                  present_fences_ ? "their present fences signal" : "a later present ends");

@@ -199,7 +199,7 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
         };
         VkResult result = vkQueuePresentKHR(device_.queue(), &present);
         if (result != VK_ERROR_OUT_OF_DATE_KHR) check(result, "vkQueuePresentKHR");
-        harness_.note_presented(extent_);
+        harness_.note_presented(extent_, retirement_.kept());
         const bool resized = harness_.take_resized();
         if (suboptimal || result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR ||
             resized)

@@ -69,6 +69,9 @@ struct SwapchainPlan {
     VkCompositeAlphaFlagBitsKHR composite_alpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
     bool drawn_into = false;  // frames are drawn straight into the images
     bool readable = false;    // the images may be copied from
+    // clipped lets the presentation engine skip pixels hidden behind other
+    // windows, which are then undefined when read: only where no image is read.
+    bool clipped = true;
 };
 
 // The swapchain for `request` on a surface that offers `offer`: a pure

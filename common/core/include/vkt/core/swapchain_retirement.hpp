@@ -8,7 +8,7 @@
 // (and the semaphores its presents wait on) is kept here until something
 // proves its presents are over, and destroyed then:
 //
-//   present fences  VK_EXT_swapchain_maintenance1: each vkQueuePresentKHR gets
+//   present fences  VK_KHR_swapchain_maintenance1 (or EXT): each vkQueuePresentKHR gets
 //                   a fence the driver signals once the present no longer
 //                   needs its semaphores and image. The specification's answer.
 //   fallback        without it, the first image the new swapchain presents is
@@ -29,7 +29,7 @@ namespace vkt {
 
 class SwapchainRetirement {
 public:
-    // present_fences: VK_EXT_swapchain_maintenance1's swapchainMaintenance1 is on.
+    // present_fences: swapchain_maintenance1's swapchainMaintenance1 is on.
     SwapchainRetirement(VkDevice device, bool present_fences);
     // Waits until every present is proven over (present fences), or for the
     // device (fallback: at the end nothing later can prove it), then destroys

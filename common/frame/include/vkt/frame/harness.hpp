@@ -91,7 +91,7 @@ public:
     Window* window() const { return window_.get(); }   // nullptr unless in a window
     bool validation() const { return instance_->validation(); }
     // Whether each present can carry a fence that says when it is over
-    // (VK_EXT_swapchain_maintenance1, enabled where the instance and device
+    // (VK_KHR_/EXT_swapchain_maintenance1, enabled where the instance and device
     // offer it): how a retired swapchain is known to be free
     // (vkt/core/swapchain_retirement.hpp).
     bool present_fences() const { return present_fences_; }
@@ -125,7 +125,10 @@ public:
     void announce(const Destination& where) const;
     // "presented a frame at WxH" for the first frame of each size, and
     // "swapchain recreated at WxH": the events the window tests wait for.
-    void note_presented(VkExtent2D extent);
+    // retired_kept: the old swapchains still kept after this present; once
+    // after each recreation, "retired swapchains down to N kept" when N <= 1
+    // (the storm tests wait for it: retirement lets the old ones go).
+    void note_presented(VkExtent2D extent, size_t retired_kept = 0);
     // kept: retired swapchains still waiting for their presents to end.
     void note_recreated(VkExtent2D extent, size_t kept);
     // After the loop, the GPU idle: --benchmark's last GPU times and its JSON,
@@ -151,6 +154,7 @@ private:
     std::chrono::steady_clock::time_point frame_begin_;
     std::vector<double> cpu_ms_;
     VkExtent2D presented_{};  // the size of the last frame presented
+    bool draining_ = false;   // recreated, old swapchains not yet down to one
 };
 
 // Runs a frame loop inside the harness; returns the process exit status: 0
