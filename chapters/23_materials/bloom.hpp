@@ -96,7 +96,10 @@ public:
             sets_.push_back(set);
         }
         // The tone-mapping pass may read level 0 before any bloom is drawn
-        // (--bloom 0): it must be in GENERAL, and hold zeros.
+        // (--bloom 0): it must be in GENERAL, and hold zeros. The fence wait
+        // after this submit orders nothing on the GPU, so a barrier makes the
+        // zeros visible to those reads and orders the clear before record()'s
+        // barrier, whose source stages are the fragment and compute shaders.
         vkt::one_time_submit(gpu_, [&](VkCommandBuffer cmd) {
             vkt::image_barrier(cmd, image_.image, {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels_, 0, 1},
                                VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
@@ -105,6 +108,10 @@ public:
             const VkClearColorValue zero{};
             const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, levels_, 0, 1};
             vkCmdClearColorImage(cmd, image_.image, VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &all);
+            vkt::memory_barrier(
+                cmd, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         });
     }
 

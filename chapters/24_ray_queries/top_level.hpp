@@ -38,7 +38,9 @@ public:
                 {.instances =
                      {.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR,
                       .arrayOfPointers = VK_FALSE}},
-            .flags = VK_GEOMETRY_OPAQUE_BIT_KHR,
+            // No flags: opacity belongs to the bottom levels' triangles (and
+            // an instance's FORCE_OPAQUE); OPAQUE here would say nothing.
+            .flags = 0,
         };
         build_ = VkAccelerationStructureBuildGeometryInfoKHR{
             .sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR,

@@ -122,7 +122,8 @@ vec2 split_sum_lut(float n_dot_v, float roughness, uint count) {
 // [/split-sum-lut]
 
 // [aces]
-// Krzysztof Narkowicz's fit of the ACES filmic curve (2015).
+// Krzysztof Narkowicz's fit of the ACES filmic curve (2016-01-06): fitted to
+// luminance, applied here to each channel (the page says what that costs).
 vec3 aces_narkowicz(vec3 x) {
     x = max(x, vec3(0.0));
     return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
