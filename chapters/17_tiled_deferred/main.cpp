@@ -175,9 +175,8 @@ public:
 
     // The shading in compute ends with a blit into the target, the fragment
     // pass with its drawing: the runner's next barrier starts where each left it.
-    VkImageLayout target_layout_after(const vkt::Frame&) const override {
-        return compute_ || lists_ ? VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL
-                                  : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    vkt::TargetWrite target_after(const vkt::Frame&) const override {
+        return compute_ || lists_ ? vkt::written_by_transfer : vkt::drawn_by_colour_output;
     }
 
 private:

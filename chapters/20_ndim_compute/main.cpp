@@ -141,13 +141,12 @@ public:
     }
 
     // [layout-after]
-    // Each path leaves the target in the layout of its last write: the
-    // resolve's GENERAL, the copy's TRANSFER_DST, the lines' colour
-    // attachment. The runner's next barrier starts from there.
-    VkImageLayout target_layout_after(const vkt::Frame& frame) const override {
-        if (!raster_) return VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        return raster_->resolves(frame) ? VK_IMAGE_LAYOUT_GENERAL
-                                        : VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    // Each path says how its last write left the target: the resolve's compute
+    // storage in GENERAL, the copy's TRANSFER_DST, the lines' colour
+    // attachment. The runner's next barrier waits for that write.
+    vkt::TargetWrite target_after(const vkt::Frame& frame) const override {
+        if (!raster_) return vkt::drawn_by_colour_output;
+        return raster_->resolves(frame) ? vkt::stored_by_compute : vkt::written_by_transfer;
     }
     // [/layout-after]
 

@@ -74,7 +74,7 @@ public:
     // After the rasteriser's writes to the pixel buffer: the target, handed
     // over untouched, to GENERAL (its old contents do not matter), and one
     // invocation per pixel. The target stays in GENERAL: the runner's next
-    // barrier starts there (target_layout_after). The buffer's background is for the next
+    // barrier starts there (target_after). The buffer's background is for the next
     // frame's rasteriser, which waits for this pass (ComputeRaster::clear).
     void record(const vkt::Frame& frame, VkBuffer pixels, uint32_t background) const {
         const VkDescriptorSet set = sets_[frame.slot];  // its last frame is finished

@@ -156,8 +156,8 @@ public:
         // [/blit]
     }
 
-    VkImageLayout target_layout_after(const vkt::Frame&) const override {
-        return VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    vkt::TargetWrite target_after(const vkt::Frame&) const override {
+        return vkt::written_by_transfer;  // the blit
     }
 
 private:

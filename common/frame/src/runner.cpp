@@ -227,18 +227,26 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
     // previous frame's copy must have read it before we overwrite it. A
     // swapchain image: the acquire semaphore, which the submit waits for at
     // the same stage, says when.
-    if (frame.target_layout != VK_IMAGE_LAYOUT_UNDEFINED) {
-        const LastWrite first = last_write_in(frame.target_layout);  // and its reads
-        const VkAccessFlags2 reads = frame.target_layout == VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL
-                                         ? VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT
-                                         : VK_ACCESS_2_NONE;
-        image_barrier(cmd, frame.target, VK_IMAGE_LAYOUT_UNDEFINED, frame.target_layout,
-                      frame.target_ready, VK_ACCESS_2_NONE, first.stage, first.access | reads);
+    if (frame.target_layout == VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL) {
+        image_barrier(
+            cmd, frame.target, VK_IMAGE_LAYOUT_UNDEFINED, frame.target_layout, frame.target_ready,
+            VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
+    } else if (frame.target_layout != VK_IMAGE_LAYOUT_UNDEFINED) {
+        throw Error(
+            "ChapterSpec::target_layout is COLOR_ATTACHMENT_OPTIMAL, or UNDEFINED for a chapter "
+            "that makes its first barrier itself");
     }
 
     renderer_->record(frame);  // the chapter draws
-    VkImageLayout left_in = renderer_->target_layout_after(frame);
-    LastWrite last = last_write_in(left_in);
+    TargetWrite last = renderer_->target_after(frame);
+    auto leave = [&](VkImageLayout to, VkPipelineStageFlags2 stage, VkAccessFlags2 access) {
+        const VkImageMemoryBarrier2 barrier = barrier_after(last, frame.target, to, stage, access);
+        const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
+                                          .imageMemoryBarrierCount = 1,
+                                          .pImageMemoryBarriers = &barrier};
+        vkCmdPipelineBarrier2(cmd, &dependency);
+    };
 
     // GPU time ends here: what follows is presentation, not the chapter's cost.
     harness_.gpu_timer().end(cmd, frame.slot);
@@ -246,25 +254,23 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
     if (overlay_) {
         // Over the finished frame, in the layout for drawing: its last write
         // done and visible before the overlay's rendering loads its pixels.
-        image_barrier(
-            cmd, frame.target, left_in, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, last.stage,
-            last.access, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-            VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+        leave(VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+              VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+              VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
         overlay_->record(cmd, frame.slot, frame.target_view, frame.extent);
-        left_in = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        last = last_write_in(left_in);
+        last = drawn_by_colour_output;
     }
 
     // Our target: the chapter's writes must be finished and visible before we
     // copy or read it (and before the next frame's barrier, which waits for
     // the COPY stage, overwrites it).
     if (!straight)
-        image_barrier(cmd, frame.target, left_in, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, last.stage,
-                      last.access, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        leave(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+              VK_ACCESS_2_TRANSFER_READ_BIT);
 
     if (swapchain_) {
         VkImage image = swapchain_->images()[image_index];
-        VkImageLayout layout = left_in;  // drawn straight in: where the chapter left it
+        VkImageLayout layout = last.layout;  // drawn straight in: where the chapter left it
         VkPipelineStageFlags2 stage = last.stage;
         VkAccessFlags2 access = last.access;
         if (!straight) {
@@ -313,20 +319,27 @@ VkPipelineStageFlags2 ChapterRun::target_ready() const {
 
 }  // namespace detail
 
-LastWrite last_write_in(VkImageLayout layout) {
-    switch (layout) {
-        case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL:
-            return {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT};
-        case VK_IMAGE_LAYOUT_GENERAL:
-            return {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
-        case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:  // a copy, a blit or a clear
-            return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
-        default:
-            throw Error(
-                "a chapter's target can be left only in COLOR_ATTACHMENT_OPTIMAL, GENERAL "
-                "or TRANSFER_DST_OPTIMAL");
-    }
+VkImageMemoryBarrier2 barrier_after(const TargetWrite& written, VkImage image, VkImageLayout to,
+                                    VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+    if (written.layout == VK_IMAGE_LAYOUT_UNDEFINED ||
+        written.layout == VK_IMAGE_LAYOUT_PREINITIALIZED ||
+        written.stage == VK_PIPELINE_STAGE_2_NONE)
+        throw Error(
+            "Renderer::target_after: a target the chapter wrote has a layout that keeps its "
+            "pixels and the stage that wrote them, not UNDEFINED, PREINITIALIZED or NONE");
+    return {
+        .sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
+        .srcStageMask = written.stage,
+        .srcAccessMask = written.access,
+        .dstStageMask = dst_stage,
+        .dstAccessMask = dst_access,
+        .oldLayout = written.layout,
+        .newLayout = to,
+        .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+        .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+        .image = image,
+        .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1},
+    };
 }
 
 int run_chapter(int argc, char** argv, const ChapterSpec& spec, const RendererFactory& factory) {

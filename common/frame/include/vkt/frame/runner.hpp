@@ -9,8 +9,9 @@
 // where its format allows, else an image of our own), with undefined contents,
 // in the layout the frame names (Frame::target_layout: the chapter's
 // ChapterSpec::target_layout, COLOR_ATTACHMENT_OPTIMAL unless it asks for
-// another). record() draws into it and says the layout it leaves it in
-// (Renderer::target_layout_after); the runner takes it from there: presents
+// another). record() draws into it and says the layout it leaves it in and
+// the stage and access of its last write (Renderer::target_after); the
+// runner's next barrier waits for exactly that, and takes it from there: presents
 // it, copies our own into the swapchain image, or keeps it offscreen.
 // Where the chapter asks for it (ChapterSpec::storage_target), a frame drawn
 // into our own target also carries a storage view of it
@@ -54,6 +55,26 @@ struct Context {
 };
 
 // [renderer-contract]
+// The layout a chapter leaves its target in, and the stage and access of the
+// last write to it: what the runner's next barrier waits for. The layout alone
+// does not say it (a fragment shader's storage write and a compute shader's
+// both leave GENERAL), so the chapter names all three.
+struct TargetWrite {
+    VkImageLayout layout;
+    VkPipelineStageFlags2 stage;
+    VkAccessFlags2 access;
+};
+// The three ways the chapters write their targets' last pixels.
+inline constexpr TargetWrite drawn_by_colour_output{VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                                    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT};
+inline constexpr TargetWrite stored_by_compute{VK_IMAGE_LAYOUT_GENERAL,
+                                               VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                               VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+inline constexpr TargetWrite written_by_transfer{VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                                 VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                                                 VK_ACCESS_2_TRANSFER_WRITE_BIT};
+
 struct Frame {
     VkCommandBuffer cmd;
     VkImage target;
@@ -88,13 +109,10 @@ class Renderer {
 public:
     virtual ~Renderer() = default;
     virtual void record(const Frame& frame) = 0;
-    // The layout record() left frame.target in, its last write made by the
-    // stage that layout implies (vkt::last_write_in): COLOR_ATTACHMENT_OPTIMAL
-    // by the colour output, GENERAL by a compute shader, TRANSFER_DST_OPTIMAL
-    // by a transfer command (a copy, a blit). Asked after each record().
-    virtual VkImageLayout target_layout_after(const Frame&) const {
-        return VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    }
+    // How record() left frame.target: its layout and its last write's stage
+    // and access (TargetWrite, below). Drawn by the colour output unless the
+    // chapter says otherwise. Asked after each record().
+    virtual TargetWrite target_after(const Frame&) const { return drawn_by_colour_output; }
     // The colour target changed size (the window was resized); the GPU is idle.
     virtual void resize(VkExtent2D) {}
     // Chapter 21's overlay, in a window: the chapter's settings as widgets,
@@ -107,13 +125,11 @@ public:
 };
 // [/renderer-contract]
 
-// Where a target left in `layout` had its last write: the stage and access
-// a barrier after record() must wait for. Throws Error for another layout.
-struct LastWrite {
-    VkPipelineStageFlags2 stage;
-    VkAccessFlags2 access;
-};
-LastWrite last_write_in(VkImageLayout layout);
+// The runner's barrier after record(): from how the chapter left `image`
+// (written) to layout `to` for dst_stage's dst_access. Throws Error, naming
+// it, for a TargetWrite no barrier can start from (UNDEFINED, no stage).
+VkImageMemoryBarrier2 barrier_after(const TargetWrite& written, VkImage image, VkImageLayout to,
+                                    VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access);
 
 using RendererFactory = std::function<std::unique_ptr<Renderer>(const Context&)>;
 
