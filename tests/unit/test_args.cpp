@@ -258,3 +258,26 @@ TEST_CASE("the shared flag --max-memory takes a size in bytes or with K M G T",
     CHECK(vkt::help_text("10_gltf", Flags::frame_loop, options).find("--max-memory SIZE") !=
           std::string::npos);
 }
+
+// The shared flags are one table: every flag the usage line names is one the
+// parser takes, and the help text explains it, for each kind of chapter.
+TEST_CASE("the usage line, the help text and the parser agree on the shared flags", "[args]") {
+    const std::vector<std::pair<std::string, std::string>> values = {
+        {"--frames", "3"}, {"--size", "64x32"}, {"--screenshot", "x.png"}, {"--device", "0"}};
+    for (Flags flags : {Flags::instance, Flags::device, Flags::frame_loop}) {
+        const std::string usage = vkt::usage_line("c", flags);
+        const std::string help = vkt::help_text("c", flags);
+        size_t named = 0;
+        for (size_t at = usage.find("--"); at != std::string::npos; at = usage.find("--", at + 2)) {
+            const std::string flag = usage.substr(at, usage.find_first_of(" ]", at) - at);
+            ++named;
+            INFO(flag);
+            CHECK(help.find("  " + flag) != std::string::npos);
+            std::vector<const char*> args = {flag.c_str()};
+            for (const auto& [name, value] : values)
+                if (name == flag) args.push_back(value.c_str());
+            CHECK_NOTHROW(parse(args, flags));
+        }
+        CHECK(named == (flags == Flags::instance ? 3u : flags == Flags::device ? 4u : 11u));
+    }
+}

@@ -21,10 +21,115 @@ std::optional<uint32_t> parse_positive(std::string_view text) {
     return static_cast<uint32_t>(value);
 }
 
-bool is_frame_loop_flag(std::string_view flag) {
-    return flag == "--headless" || flag == "--offscreen" || flag == "--frames" ||
-           flag == "--size" || flag == "--screenshot" || flag == "--benchmark" ||
-           flag == "--copy-to-swapchain";
+// The shared flags, each written once: the parser, the usage line and the
+// help text all read this table.
+struct SharedFlag {
+    std::string_view name;
+    std::string_view value;  // what its value is called ("N", "WxH"); empty: a switch
+    Flags from;              // the first kind of chapter that takes it
+    bool or_previous;        // the usage line shows it as the previous flag's alternative
+    std::string_view help;   // lines joined by '\n'
+    // Stores the value (empty for a switch), or throws UsageError saying why not.
+    void (*apply)(Options&, std::string_view value);
+};
+
+// Before the 32-bit limit: an upper bound for any device; the runner also
+// checks the chosen device's maxImageDimension2D, which may be as small as 4096.
+constexpr uint32_t max_side = 16384;
+
+const SharedFlag shared_flags[] = {
+    {"--headless", "", Flags::frame_loop, false,
+     "no window: present to VK_EXT_headless_surface, or render\noffscreen where the device "
+     "cannot present to it (also the\nchoice when there is no display or no window can open)",
+     [](Options& o, std::string_view) { o.headless = true; }},
+    {"--offscreen", "", Flags::frame_loop, true,
+     "no surface at all: render into our own images only",
+     [](Options& o, std::string_view) {
+         o.headless = true;  // offscreen has no window either
+         o.offscreen = true;
+     }},
+    {"--frames", "N", Flags::frame_loop, false,
+     "stop after N frames; time is then frame index / 60 s\n(headless default: 60 frames)",
+     [](Options& o, std::string_view text) {
+         o.frames = parse_positive(text);
+         if (!o.frames)
+             throw UsageError("--frames wants a whole number of at least 1, not '" +
+                              std::string(text) + "'");
+     }},
+    {"--size", "WxH", Flags::frame_loop, false,
+     "size of the window or the headless image (default 800x600)",
+     [](Options& o, std::string_view text) {
+         const auto x = text.find('x');
+         const auto w =
+             x == std::string_view::npos ? std::nullopt : parse_positive(text.substr(0, x));
+         const auto h =
+             x == std::string_view::npos ? std::nullopt : parse_positive(text.substr(x + 1));
+         if (!w || !h || *w > max_side || *h > max_side)
+             throw UsageError("--size wants WIDTHxHEIGHT, each 1.." + std::to_string(max_side) +
+                              ", not '" + std::string(text) + "'");
+         o.width = *w;
+         o.height = *h;
+     }},
+    {"--screenshot", "FILE.png", Flags::frame_loop, false,
+     "write the last frame, as presented, as a PNG",
+     [](Options& o, std::string_view text) {
+         if (!text.ends_with(".png") || text.size() == 4)
+             throw UsageError("--screenshot writes a PNG: give a file name ending in .png, not '" +
+                              std::string(text) + "'");
+         o.screenshot = text;
+     }},
+    {"--benchmark", "", Flags::frame_loop, false, "print CPU and GPU frame times as JSON on stdout",
+     [](Options& o, std::string_view) { o.benchmark = true; }},
+    {"--copy-to-swapchain", "", Flags::frame_loop, false,
+     "draw into our own image and copy it into the swapchain\nimage (default: draw straight "
+     "into the swapchain image\nwhere its format allows)",
+     [](Options& o, std::string_view) { o.copy_to_swapchain = true; }},
+    {"--device", "NAME|INDEX", Flags::device, false,
+     "use this physical device (index, or part of its name)",
+     [](Options& o, std::string_view text) {
+         if (text.empty()) throw UsageError("--device wants a name or an index");
+         o.device = text;
+     }},
+    {"--validation", "", Flags::instance, false,
+     "require the Khronos validation layer, with synchronisation\nvalidation; any warning or "
+     "error makes the exit status 1",
+     [](Options& o, std::string_view) { o.validation = true; }},
+    {"--no-validation", "", Flags::instance, true,
+     "do not load the validation layer\n(default: validation on when the layer is installed)",
+     [](Options& o, std::string_view) { o.validation = false; }},
+    {"--help", "", Flags::instance, false, "this text",
+     [](Options& o, std::string_view) { o.help = true; }},
+};
+
+// Whether a chapter of kind `flags` takes a flag first taken by `from`.
+bool takes(Flags flags, Flags from) {
+    return static_cast<int>(flags) >= static_cast<int>(from);
+}
+
+const SharedFlag* find_shared(std::string_view name) {
+    if (name == "-h") name = "--help";
+    for (const SharedFlag& flag : shared_flags)
+        if (flag.name == name) return &flag;
+    return nullptr;
+}
+
+// "  --flag VALUE", then its help in a column of its own: beside the flag, or
+// below it where the flag is too wide; further lines of help below.
+std::string help_entry(std::string_view name, std::string_view value, std::string_view help) {
+    constexpr size_t column = 23;
+    std::string text = "  ";
+    text.append(name);
+    if (!value.empty()) text.append(" ").append(value);
+    if (text.size() < column)
+        text.append(column - text.size(), ' ');
+    else
+        text.append("\n").append(column, ' ');
+    for (char c : help) {
+        text += c;
+        if (c == '\n') text.append(column, ' ');
+    }
+    text += '\n';
+    return text;
 }
 
 std::string format_number(double value) {
@@ -101,13 +206,16 @@ const std::string& Options::text(std::string_view name) const {
     return found->second;
 }
 
+// Both read the value with from_chars, as the check that let it in did
+// (std::stod would refuse a subnormal such as 4e-320 that the check accepted).
 int64_t Options::integer(std::string_view name) const {
-    return std::stoll(text(name));
+    const std::string& value = text(name);
+    int64_t out = 0;
+    std::from_chars(value.data(), value.data() + value.size(), out);
+    return out;
 }
 
 double Options::number(std::string_view name) const {
-    // from_chars, as the check that let the value in: std::stod would refuse
-    // a subnormal such as 4e-320 (out_of_range) that the check accepted.
     const std::string& value = text(name);
     double out = 0;
     std::from_chars(value.data(), value.data() + value.size(), out);
@@ -147,66 +255,14 @@ Options parse_args(std::span<const char* const> args, Flags flags,
             if (inline_value) throw UsageError(std::string(flag) + " takes no value");
         };
 
-        if (flags != Flags::frame_loop && is_frame_loop_flag(flag))
-            throw UsageError(std::string(flag) + " is not used by this chapter: it draws nothing");
-        if (flags == Flags::instance && flag == "--device")
-            throw UsageError("--device is not used by this chapter: it opens no device");
-
-        if (flag == "--help" || flag == "-h") {
-            no_value();
-            options.help = true;
-        } else if (flag == "--headless") {
-            no_value();
-            options.headless = true;
-            said_headless = true;
-        } else if (flag == "--offscreen") {
-            no_value();
-            options.headless = true;  // offscreen has no window either
-            options.offscreen = true;
-        } else if (flag == "--benchmark") {
-            no_value();
-            options.benchmark = true;
-        } else if (flag == "--copy-to-swapchain") {
-            no_value();
-            options.copy_to_swapchain = true;
-        } else if (flag == "--validation") {
-            no_value();
-            options.validation = true;
-        } else if (flag == "--no-validation") {
-            no_value();
-            options.validation = false;
-        } else if (flag == "--frames") {
-            std::string_view text = value();
-            auto frames = parse_positive(text);
-            if (!frames)
-                throw UsageError("--frames wants a whole number of at least 1, not '" +
-                                 std::string(text) + "'");
-            options.frames = *frames;
-        } else if (flag == "--size") {
-            std::string_view text = value();
-            auto x = text.find('x');
-            auto w = x == std::string_view::npos ? std::nullopt : parse_positive(text.substr(0, x));
-            auto h =
-                x == std::string_view::npos ? std::nullopt : parse_positive(text.substr(x + 1));
-            // An upper bound for any device; the runner also checks the chosen device's
-            // maxImageDimension2D, which may be as small as 4096.
-            constexpr uint32_t max_side = 16384;
-            if (!w || !h || *w > max_side || *h > max_side)
-                throw UsageError("--size wants WIDTHxHEIGHT, each 1.." + std::to_string(max_side) +
-                                 ", not '" + std::string(text) + "'");
-            options.width = *w;
-            options.height = *h;
-        } else if (flag == "--screenshot") {
-            std::string_view text = value();
-            if (!text.ends_with(".png") || text.size() == 4)
+        if (const SharedFlag* shared = find_shared(flag)) {
+            if (!takes(flags, shared->from))
                 throw UsageError(
-                    "--screenshot writes a PNG: give a file name ending in .png, not '" +
-                    std::string(text) + "'");
-            options.screenshot = text;
-        } else if (flag == "--device") {
-            std::string_view text = value();
-            if (text.empty()) throw UsageError("--device wants a name or an index");
-            options.device = text;
+                    std::string(flag) + " is not used by this chapter: " +
+                    (shared->from == Flags::device ? "it opens no device" : "it draws nothing"));
+            if (shared->value.empty()) no_value();
+            shared->apply(options, shared->value.empty() ? std::string_view{} : value());
+            said_headless = said_headless || shared->name == "--headless";
         } else {
             const OptionSpec* spec = nullptr;
             for (const auto& candidate : chapter_options)
@@ -238,12 +294,20 @@ OptionSpec max_memory_option() {
 std::string usage_line(std::string_view program, Flags flags,
                        std::span<const OptionSpec> chapter_options) {
     std::string line = "usage: " + std::string(program);
-    if (flags == Flags::frame_loop)
-        line +=
-            " [--headless | --offscreen] [--frames N] [--size WxH] [--screenshot FILE.png]"
-            " [--benchmark] [--copy-to-swapchain]";
-    if (flags != Flags::instance) line += " [--device NAME|INDEX]";
-    line += " [--validation | --no-validation] [--help]";
+    std::string group;  // "[--headless | --offscreen]": a flag and its alternatives
+    auto close_group = [&] {
+        if (!group.empty()) line.append(" [").append(group).append("]");
+        group.clear();
+    };
+    for (const SharedFlag& flag : shared_flags) {
+        if (!takes(flags, flag.from)) continue;
+        std::string shown(flag.name);
+        if (!flag.value.empty()) shown.append(" ").append(flag.value);
+        if (!flag.or_previous) close_group();
+        if (!group.empty()) group += " | ";
+        group += shown;
+    }
+    close_group();
     for (const auto& spec : chapter_options)
         line += " [" + spec.name + " " + option_value_name(spec) + "]";
     return line;
@@ -255,7 +319,6 @@ std::string help_text(std::string_view program, Flags flags,
     if (!chapter_options.empty()) {
         text += "this chapter's own flags:\n";
         for (const auto& spec : chapter_options) {
-            std::string left = "  " + spec.name + " " + option_value_name(spec);
             std::string right = spec.help;
             if (spec.type == OptionType::integer || spec.type == OptionType::number)
                 right += " (" + format_number(spec.min) + ".." + format_number(spec.max) + ")";
@@ -263,37 +326,12 @@ std::string help_text(std::string_view program, Flags flags,
                 right += " (" + byte_count_text(uint64_t(spec.min)) + ".." +
                          byte_count_text(uint64_t(spec.max)) + ")";
             if (!spec.default_value.empty()) right += " [default: " + spec.default_value + "]";
-            text += left;
-            // The help in a column of its own: beside the flag, or below it.
-            text +=
-                left.size() < 23 ? std::string(23 - left.size(), ' ') : "\n" + std::string(23, ' ');
-            text += right;
-            text += "\n";
+            text += help_entry(spec.name, option_value_name(spec), right);
         }
         text += "\nshared flags:\n";
     }
-    if (flags == Flags::frame_loop)
-        text +=
-            "  --headless           no window: present to VK_EXT_headless_surface, or render\n"
-            "                       offscreen where the device cannot present to it (also the\n"
-            "                       choice when there is no display or no window can open)\n"
-            "  --offscreen          no surface at all: render into our own images only\n"
-            "  --frames N           stop after N frames; time is then frame index / 60 s\n"
-            "                       (headless default: 60 frames)\n"
-            "  --size WxH           size of the window or the headless image (default 800x600)\n"
-            "  --screenshot FILE.png  write the last frame, as presented, as a PNG\n"
-            "  --benchmark          print CPU and GPU frame times as JSON on stdout\n"
-            "  --copy-to-swapchain  draw into our own image and copy it into the swapchain\n"
-            "                       image (default: draw straight into the swapchain image\n"
-            "                       where its format allows)\n";
-    if (flags != Flags::instance)
-        text += "  --device NAME|INDEX  use this physical device (index, or part of its name)\n";
-    text +=
-        "  --validation         require the Khronos validation layer, with synchronisation\n"
-        "                       validation; any warning or error makes the exit status 1\n"
-        "  --no-validation      do not load the validation layer\n"
-        "                       (default: validation on when the layer is installed)\n"
-        "  --help               this text\n";
+    for (const SharedFlag& flag : shared_flags)
+        if (takes(flags, flag.from)) text += help_entry(flag.name, flag.value, flag.help);
     return text;
 }
 
