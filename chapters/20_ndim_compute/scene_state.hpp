@@ -5,6 +5,7 @@
 // (vkt/scene/ndim_controls.hpp).
 
 #include "vkt/domains/ndim.hpp"
+#include "vkt/resources/srgb.hpp"
 #include "vkt/scene/ndim_controls.hpp"
 
 #include <algorithm>
@@ -44,8 +45,7 @@ constexpr uint32_t group = 64;  // local_size_x of raster.comp
 // top byte (the target's alpha), so that atomicMax keeps the nearest line.
 inline std::vector<uint32_t> palette(bool bgra) {
     const auto byte = [](float c) {  // linear to sRGB-encoded, 0..255
-        c = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-        return uint32_t(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f));
+        return uint32_t(std::lround(std::clamp(vkt::linear_to_srgb(c), 0.0f, 1.0f) * 255.0f));
     };
     std::vector<uint32_t> words(256, 0u);  // level 0: no line
     for (uint32_t level = 1; level < 256; ++level) {

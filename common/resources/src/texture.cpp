@@ -3,6 +3,7 @@
 #include "vkt/core/barrier.hpp"
 
 #include "vkt/core/check.hpp"
+#include "vkt/resources/srgb.hpp"
 
 #include <algorithm>
 #include <array>
@@ -22,14 +23,6 @@ VkExtent2D mip_extent(uint32_t width, uint32_t height, uint32_t level) {
 }
 
 namespace {
-
-// The sRGB transfer function (IEC 61966-2-1), both ways, on 0..1.
-float srgb_to_linear(float c) {
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-float linear_to_srgb(float c) {
-    return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
 
 const std::array<float, 256>& srgb_table() {
     static const std::array<float, 256> table = [] {

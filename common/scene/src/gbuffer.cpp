@@ -1,6 +1,7 @@
 #include "vkt/scene/gbuffer.hpp"
 
 #include "vkt/core/check.hpp"
+#include "vkt/resources/srgb.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,8 +32,7 @@ glm::vec3 oct_decode(glm::vec2 e) {
 }
 
 float srgb8_to_linear(uint8_t v) {
-    const float c = float(v) / 255.0f;
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+    return srgb_to_linear(float(v) / 255.0f);
 }
 
 float unorm8_to_float(uint8_t v) {

@@ -10,6 +10,7 @@
 #include "vkt/core/barrier.hpp"
 #include "vkt/core/check.hpp"
 #include "vkt/core/memory.hpp"
+#include "vkt/resources/srgb.hpp"
 #include "vkt/resources/upload.hpp"
 #include "vkt/scene/deferred_blocks.hpp"
 #include "vkt/scene/gbuffer.hpp"
@@ -76,8 +77,7 @@ inline std::vector<glm::vec3> host_colours(const HostCopy& copy) {
 
 // What the screen would show: linear -> sRGB, clamped, in 0..255 (unrounded).
 inline float srgb_255(float linear) {
-    const float c = std::clamp(linear, 0.0f, 1.0f);
-    return 255.0f * (c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f);
+    return 255.0f * linear_to_srgb(std::clamp(linear, 0.0f, 1.0f));
 }
 
 // The largest difference of any channel of any pixel, in linear units, and
