@@ -7,6 +7,26 @@
 namespace vkt {
 
 // [choose-format]
+namespace {
+
+// The formats we take, in pairs of one byte order: the _SRGB one we draw
+// into, and its _UNORM sibling with the same bytes.
+struct FormatPair {
+    VkFormat srgb, unorm;
+};
+constexpr FormatPair format_pairs[] = {
+    {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_B8G8R8A8_UNORM},
+    {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_R8G8B8A8_UNORM},
+};
+
+const FormatPair* pair_of(VkFormat format) {
+    for (const FormatPair& pair : format_pairs)
+        if (format == pair.srgb || format == pair.unorm) return &pair;
+    return nullptr;
+}
+
+}  // namespace
+
 VkSurfaceFormatKHR choose_surface_format(std::span<const VkSurfaceFormatKHR> available,
                                          VkFormat keep) {
     // Any of these will do. _SRGB first: we can draw straight into it. A
@@ -14,23 +34,10 @@ VkSurfaceFormatKHR choose_surface_format(std::span<const VkSurfaceFormatKHR> ava
     // (see render_format_for); headless surfaces offer only _UNORM formats.
     // When recreating, `keep` and then its sibling with the same byte order come
     // first: the chapter's pipelines were made for that byte order.
-    VkFormat sibling = VK_FORMAT_UNDEFINED;
-    switch (keep) {
-        case VK_FORMAT_B8G8R8A8_SRGB:
-            sibling = VK_FORMAT_B8G8R8A8_UNORM;
-            break;
-        case VK_FORMAT_B8G8R8A8_UNORM:
-            sibling = VK_FORMAT_B8G8R8A8_SRGB;
-            break;
-        case VK_FORMAT_R8G8B8A8_SRGB:
-            sibling = VK_FORMAT_R8G8B8A8_UNORM;
-            break;
-        case VK_FORMAT_R8G8B8A8_UNORM:
-            sibling = VK_FORMAT_R8G8B8A8_SRGB;
-            break;
-        default:
-            break;
-    }
+    const FormatPair* kept = pair_of(keep);
+    const VkFormat sibling = !kept                ? VK_FORMAT_UNDEFINED
+                             : keep == kept->srgb ? kept->unorm
+                                                  : kept->srgb;
     const VkFormat preferred[] = {keep,
                                   sibling,
                                   VK_FORMAT_B8G8R8A8_SRGB,
@@ -46,17 +53,9 @@ VkSurfaceFormatKHR choose_surface_format(std::span<const VkSurfaceFormatKHR> ava
 }
 
 VkFormat render_format_for(VkFormat swapchain_format) {
-    switch (swapchain_format) {
-        case VK_FORMAT_B8G8R8A8_SRGB:
-        case VK_FORMAT_B8G8R8A8_UNORM:
-            return VK_FORMAT_B8G8R8A8_SRGB;
-        case VK_FORMAT_R8G8B8A8_SRGB:
-        case VK_FORMAT_R8G8B8A8_UNORM:
-            return VK_FORMAT_R8G8B8A8_SRGB;
-        default:
-            throw Error(std::string("no render format for swapchain format ") +
-                        format_name(swapchain_format));
-    }
+    if (const FormatPair* pair = pair_of(swapchain_format)) return pair->srgb;
+    throw Error(std::string("no render format for swapchain format ") +
+                format_name(swapchain_format));
 }
 // [/choose-format]
 
