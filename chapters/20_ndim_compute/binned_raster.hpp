@@ -54,7 +54,7 @@ public:
         vkGetPhysicalDeviceProperties2(context.physical, &properties);
         return (subgroups.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) &&
                (subgroups.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT) &&
-               !vkt::hidden_by_tests("VK_SUBGROUP_FEATURE_ARITHMETIC_BIT");
+               !context.hidden.hides("VK_SUBGROUP_FEATURE_ARITHMETIC_BIT");
     }
     static void check_device(const vkt::Context& context) {
         if (!available(context))

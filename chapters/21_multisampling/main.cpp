@@ -117,7 +117,9 @@ public:
         can_shade_ = context.features.has(VKT_FEATURE_10(sampleRateShading));
         if (shading_ > 0.0f && !can_shade_)
             throw vkt::Error(std::string("--sample-shading: ") + context.properties.deviceName +
-                             " " + vkt::lacks_feature("sampleRateShading"));
+                             " " +
+                             vkt::lacks_feature("sampleRateShading", {},
+                                                context.hidden.hides("sampleRateShading")));
         for (uint32_t count = 1; count <= 64; count *= 2)  // the overlay's choices
             if (offered & count) {
                 offered_.push_back(VkSampleCountFlagBits(count));

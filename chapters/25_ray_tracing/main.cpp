@@ -67,7 +67,7 @@ public:
         // shadow ray 1 more. A device that cannot go 2 deep cannot shadow.
         // (VKT_HIDE_FEATURES=maxRayRecursionDepth plays a device that allows 1.)
         const uint32_t limit =
-            vkt::hidden_by_tests("maxRayRecursionDepth") ? 1u : rt_limits_.maxRayRecursionDepth;
+            context.hidden.hides("maxRayRecursionDepth") ? 1u : rt_limits_.maxRayRecursionDepth;
         if (limit < 2)
             throw vkt::Error(
                 "this chapter traces shadow rays from its closest-hit shader, which "

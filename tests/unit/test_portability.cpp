@@ -108,27 +108,16 @@ TEST_CASE("a device without the portability subset has every part of Vulkan", "[
     CHECK(vkt::portability_shortfall(full_device, unasked, needs).empty());
 }
 
-static void set_hidden(const char* list) {
-#ifdef _WIN32
-    _putenv_s("VKT_HIDE_FEATURES", list);
-#else
-    if (*list)
-        setenv("VKT_HIDE_FEATURES", list, 1);
-    else
-        unsetenv("VKT_HIDE_FEATURES");
-#endif
-}
-
-TEST_CASE("VKT_HIDE_FEATURES hides a portability feature as it hides any other", "[portability]") {
+TEST_CASE("a hidden name hides a portability feature as it hides any other", "[portability]") {
     const vkt::PortabilityFeature needs[] = {VKT_PORTABILITY_FEATURE(samplerMipLodBias)};
     VkPhysicalDevicePortabilitySubsetFeaturesKHR all = pretend_moltenvk();
     all.samplerMipLodBias = VK_TRUE;
-    set_hidden("synchronization2,samplerMipLodBias");
+    const vkt::HiddenNames hidden{{"synchronization2", "samplerMipLodBias"}};
     // On any device, as the tests play a device without it on lavapipe.
-    const std::string on_portability = vkt::portability_shortfall(moltenvk, all, needs);
-    const std::string on_full = vkt::portability_shortfall(full_device, all, needs);
-    const std::string core = vkt::lacks_feature("synchronization2");
-    set_hidden("");
+    const std::string on_portability = vkt::portability_shortfall(moltenvk, all, needs, hidden);
+    const std::string on_full = vkt::portability_shortfall(full_device, all, needs, hidden);
+    const std::string core =
+        vkt::lacks_feature("synchronization2", {}, hidden.hides("synchronization2"));
     CHECK(on_portability ==
           "lacks the samplerMipLodBias feature of VK_KHR_portability_subset"
           " (hidden by VKT_HIDE_FEATURES)");

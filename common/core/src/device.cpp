@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
-#include <cstdlib>
 #include <string_view>
 
 namespace vkt {
@@ -20,22 +19,21 @@ FeatureChain::FeatureChain() {
 }
 
 VkBool32& FeatureChain::operator[](const Feature& feature) {
-    std::byte* base = nullptr;
+    const auto member = [&](auto& features) -> VkBool32& {
+        return *reinterpret_cast<VkBool32*>(reinterpret_cast<std::byte*>(&features) +
+                                            feature.offset);
+    };
     switch (feature.set) {
         case Feature::core10:
-            base = reinterpret_cast<std::byte*>(&features_.features);
-            break;
+            return member(features_.features);
         case Feature::core11:
-            base = reinterpret_cast<std::byte*>(&features11_);
-            break;
+            return member(features11_);
         case Feature::core12:
-            base = reinterpret_cast<std::byte*>(&features12_);
-            break;
+            return member(features12_);
         case Feature::core13:
-            base = reinterpret_cast<std::byte*>(&features13_);
-            break;
+            return member(features13_);
     }
-    return *reinterpret_cast<VkBool32*>(base + feature.offset);
+    throw Error("FeatureChain: feature " + std::string(feature.name) + " names no feature set");
 }
 
 bool FeatureChain::has(const Feature& feature) const {
@@ -73,7 +71,7 @@ bool can_present(VkPhysicalDevice device, uint32_t queue_family, VkSurfaceKHR su
 }
 
 bool device_extension_available(VkPhysicalDevice device, const char* name) {
-    return !hidden_by_tests(name) && offers(extensions_of(device), name);
+    return offers(extensions_of(device), name);
 }
 
 int device_type_score(VkPhysicalDeviceType type) {
@@ -91,31 +89,16 @@ int device_type_score(VkPhysicalDeviceType type) {
     }
 }
 
-bool hidden_by_tests(std::string_view name) {
-    const char* list = std::getenv("VKT_HIDE_FEATURES");
-    if (!list) return false;
-    std::string_view rest(list);
-    while (!rest.empty()) {
-        const size_t comma = rest.find(',');
-        if (rest.substr(0, comma) == name) return true;
-        if (comma == std::string_view::npos) break;
-        rest.remove_prefix(comma + 1);
-    }
-    return false;
-}
-
-static std::string hidden_note(std::string_view name) {
-    return hidden_by_tests(name) ? " (hidden by VKT_HIDE_FEATURES)" : "";
-}
-
-std::string lacks_feature(std::string_view name, std::string_view of) {
+std::string lacks_feature(std::string_view name, std::string_view of, bool hidden) {
     return "lacks the " + std::string(name) + " feature" +
-           (of.empty() ? "" : " of " + std::string(of)) + hidden_note(name);
+           (of.empty() ? "" : " of " + std::string(of)) +
+           (hidden ? " (hidden by VKT_HIDE_FEATURES)" : "");
 }
 
 // "lacks the extension VK_KHR_swapchain"
-static std::string lacks_extension(std::string_view name) {
-    return "lacks the extension " + std::string(name) + hidden_note(name);
+static std::string lacks_extension(std::string_view name, bool hidden) {
+    return "lacks the extension " + std::string(name) +
+           (hidden ? " (hidden by VKT_HIDE_FEATURES)" : "");
 }
 
 // What a portability device has of the parts VK_KHR_portability_subset names;
@@ -141,26 +124,27 @@ static std::string why_unsuitable(VkPhysicalDevice device, VkSurfaceKHR surface,
                std::to_string(VK_API_VERSION_MAJOR(properties.apiVersion)) + "." +
                std::to_string(VK_API_VERSION_MINOR(properties.apiVersion)) + ", not 1.3";
 
+    const HiddenNames& hidden = requirements.hidden;
     FeatureChain available;
     vkGetPhysicalDeviceFeatures2(device, available.head());
-    for (const Feature& feature : base_features())
-        if (!available.has(feature) || hidden_by_tests(feature.name))
-            return lacks_feature(feature.name);
-    for (const Feature& feature : requirements.features)
-        if (!available.has(feature) || hidden_by_tests(feature.name))
-            return lacks_feature(feature.name);
+    for (std::span<const Feature> needed : {base_features(), std::span(requirements.features)})
+        for (const Feature& feature : needed)
+            if (!available.has(feature) || hidden.hides(feature.name))
+                return lacks_feature(feature.name, {}, hidden.hides(feature.name));
 
     const std::vector<VkExtensionProperties> offered = extensions_of(device);
     for (const char* wanted : requirements.extensions)
-        if (!offers(offered, wanted) || hidden_by_tests(wanted)) return lacks_extension(wanted);
+        if (!offers(offered, wanted) || hidden.hides(wanted))
+            return lacks_extension(wanted, hidden.hides(wanted));
     // The features of those extensions that the chapter turns on
     // (vkt/core/extension_features.hpp): asked only now that the device is
     // known to offer the extensions.
-    if (std::string missing = extension_feature_shortfall(device, requirements.extension_features);
+    if (std::string missing =
+            extension_feature_shortfall(device, requirements.extension_features, hidden);
         !missing.empty())
         return missing;
     std::string shortfall = portability_shortfall(offered, portability_features_of(device, offered),
-                                                  requirements.portability_features);
+                                                  requirements.portability_features, hidden);
     if (!shortfall.empty()) return shortfall;
 
     uint32_t count = 0;
@@ -277,7 +261,7 @@ Device::Device(const DeviceCandidate& chosen, const DeviceRequirements& requirem
     for (const Feature& feature : requirements.features) enabled_[feature] = VK_TRUE;
     for (const Feature& feature : requirements.optional_features)
         enabled_[feature] =
-            available.has(feature) && !hidden_by_tests(feature.name) ? VK_TRUE : VK_FALSE;
+            available.has(feature) && !requirements.hidden.hides(feature.name) ? VK_TRUE : VK_FALSE;
     // On a portability driver (MoltenVK): VK_KHR_portability_subset, which must
     // be enabled where offered, and the parts of it the chapter uses.
     const std::vector<VkExtensionProperties> offered = extensions_of(physical_);

@@ -73,7 +73,8 @@ VkBool32 member_of(const void* object, const Member& member) {
 
 }  // namespace
 
-std::string extension_feature_shortfall(VkPhysicalDevice device, const void* wanted) {
+std::string extension_feature_shortfall(VkPhysicalDevice device, const void* wanted,
+                                        const HiddenNames& hidden) {
     for (auto* link = static_cast<const VkBaseInStructure*>(wanted); link; link = link->pNext) {
         const Kind* kind = nullptr;
         for (const Kind& k : kinds())
@@ -92,8 +93,8 @@ std::string extension_feature_shortfall(VkPhysicalDevice device, const void* wan
         vkGetPhysicalDeviceFeatures2(device, &query);
         for (const Member& member : kind->members) {
             if (member_of(link, member) != VK_TRUE) continue;
-            if (member_of(has, member) != VK_TRUE || hidden_by_tests(member.name))
-                return lacks_feature(member.name, kind->extension);
+            if (member_of(has, member) != VK_TRUE || hidden.hides(member.name))
+                return lacks_feature(member.name, kind->extension, hidden.hides(member.name));
         }
     }
     return {};

@@ -41,11 +41,13 @@ std::vector<const char*> device_extensions(std::span<const VkExtensionProperties
 
 std::string portability_shortfall(std::span<const VkExtensionProperties> offered,
                                   const VkPhysicalDevicePortabilitySubsetFeaturesKHR& available,
-                                  std::span<const PortabilityFeature> required) {
+                                  std::span<const PortabilityFeature> required,
+                                  const HiddenNames& hidden) {
     const bool portability = offers(offered, VK_KHR_PORTABILITY_SUBSET_EXTENSION_NAME);
     for (const PortabilityFeature& feature : required)
-        if ((portability && available.*feature.member != VK_TRUE) || hidden_by_tests(feature.name))
-            return lacks_feature(feature.name, VK_KHR_PORTABILITY_SUBSET_EXTENSION_NAME);
+        if ((portability && available.*feature.member != VK_TRUE) || hidden.hides(feature.name))
+            return lacks_feature(feature.name, VK_KHR_PORTABILITY_SUBSET_EXTENSION_NAME,
+                                 hidden.hides(feature.name));
     return {};
 }
 

@@ -57,21 +57,34 @@ void check_writable(const std::string& path) {
     if (!existed) std::filesystem::remove(path);
 }
 
+// VKT_HIDE_FEATURES=name,name,...: the tests' way to play a device that lacks
+// a feature, an extension or a property's flag (vkt/core/hidden_names.hpp).
+HiddenNames hidden_from_environment() {
+    HiddenNames hidden;
+    const char* list = std::getenv("VKT_HIDE_FEATURES");
+    for (std::string_view rest = list ? list : ""; !rest.empty();) {
+        const size_t comma = rest.find(',');
+        hidden.names.emplace_back(rest.substr(0, comma));
+        rest.remove_prefix(comma == std::string_view::npos ? rest.size() : comma + 1);
+    }
+    return hidden;
+}
+
 // VK_KHR_surface_maintenance1 and VK_KHR_swapchain_maintenance1 are the EXT
 // extensions promoted, with the same structures and values (the EXT names are
 // aliases): the KHR name where the driver offers it, else the EXT one. Hiding
 // the EXT name from the tests hides both.
-const char* surface_maintenance_name() {
+const char* surface_maintenance_name(const HiddenNames& hidden) {
     constexpr const char* khr = "VK_KHR_surface_maintenance1";
-    return instance_extension_available(khr) && !hidden_by_tests(khr) &&
-                   !hidden_by_tests(VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME)
+    return instance_extension_available(khr) && !hidden.hides(khr) &&
+                   !hidden.hides(VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME)
                ? khr
                : VK_EXT_SURFACE_MAINTENANCE_1_EXTENSION_NAME;
 }
-const char* swapchain_maintenance_name(VkPhysicalDevice device) {
+const char* swapchain_maintenance_name(VkPhysicalDevice device, const HiddenNames& hidden) {
     constexpr const char* khr = "VK_KHR_swapchain_maintenance1";
-    return device_extension_available(device, khr) &&
-                   !hidden_by_tests(VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME)
+    return device_extension_available(device, khr) && !hidden.hides(khr) &&
+                   !hidden.hides(VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME)
                ? khr
                : VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME;
 }
@@ -79,7 +92,10 @@ const char* swapchain_maintenance_name(VkPhysicalDevice device) {
 }  // namespace
 
 Harness::Harness(const Options& options, const ChapterSpec& spec, uint32_t frames_in_flight)
-    : options_(options), spec_(spec), frames_in_flight_(frames_in_flight) {
+    : options_(options),
+      spec_(spec),
+      frames_in_flight_(frames_in_flight),
+      hidden_(hidden_from_environment()) {
     if (!options.screenshot.empty()) check_writable(options.screenshot);
     open_presentation();
     if (options.benchmark) {
@@ -138,11 +154,11 @@ void Harness::open_presentation() {
     const bool surface_maintenance =
         presentation_ != Presentation::offscreen && !racy_layer &&
         instance_extension_available(VK_KHR_GET_SURFACE_CAPABILITIES_2_EXTENSION_NAME) &&
-        instance_extension_available(surface_maintenance_name()) &&
-        !hidden_by_tests(surface_maintenance_name());
+        instance_extension_available(surface_maintenance_name(hidden_)) &&
+        !hidden_.hides(surface_maintenance_name(hidden_));
     if (surface_maintenance) {
         extensions.push_back(VK_KHR_GET_SURFACE_CAPABILITIES_2_EXTENSION_NAME);
-        extensions.push_back(surface_maintenance_name());
+        extensions.push_back(surface_maintenance_name(hidden_));
     }
 
     if (options_.validation.value_or(false) && !layer)
@@ -171,6 +187,7 @@ void Harness::open_presentation() {
     // chosen on its own merits; if it cannot present to the headless surface
     // (another driver may have provided that), it renders offscreen instead.
     DeviceRequirements requirements = spec_.requirements;
+    requirements.hidden = hidden_;
     if (window_) requirements.extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
     const auto candidates =
         survey_devices(*instance_, window_ ? surface_.get() : VK_NULL_HANDLE, requirements);
@@ -186,7 +203,9 @@ void Harness::open_presentation() {
     VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT maintenance{
         .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SWAPCHAIN_MAINTENANCE_1_FEATURES_EXT};
     if (surface_ && surface_maintenance &&
-        device_extension_available(chosen.handle, swapchain_maintenance_name(chosen.handle))) {
+        device_extension_available(chosen.handle,
+                                   swapchain_maintenance_name(chosen.handle, hidden_)) &&
+        !hidden_.hides(swapchain_maintenance_name(chosen.handle, hidden_))) {
         VkPhysicalDeviceFeatures2 query{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
                                         .pNext = &maintenance};
         vkGetPhysicalDeviceFeatures2(chosen.handle, &query);
@@ -195,7 +214,7 @@ void Harness::open_presentation() {
     if (present_fences_) {
         maintenance.pNext = requirements.extension_features;  // after the chapter's own
         requirements.extension_features = &maintenance;
-        requirements.extensions.push_back(swapchain_maintenance_name(chosen.handle));
+        requirements.extensions.push_back(swapchain_maintenance_name(chosen.handle, hidden_));
     }
     device_ = std::make_unique<Device>(chosen, requirements);
 

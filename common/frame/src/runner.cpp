@@ -68,6 +68,7 @@ void ChapterRun::run(const RendererFactory& factory) {
         .extent = extent_,
         .frames_in_flight = frames_in_flight,
         .properties = device_.properties(),
+        .hidden = harness_.hidden(),
         .features = device_.features(),
     };
     renderer_ = factory(context);

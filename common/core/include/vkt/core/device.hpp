@@ -4,6 +4,7 @@
 // create a logical device with the Vulkan 1.3 features the tutorial relies on.
 
 #include "vkt/core/check.hpp"
+#include "vkt/core/hidden_names.hpp"
 #include "vkt/core/portability.hpp"
 
 #include <cstddef>
@@ -83,6 +84,7 @@ struct DeviceRequirements {
     // the feature chain that vkCreateDevice is given. The caller keeps them alive
     // until the Device is created, and names their extensions above.
     void* extension_features = nullptr;
+    HiddenNames hidden;  // pretended missing (the tests' devices)
 };
 
 // What we learned about one physical device.
@@ -97,18 +99,11 @@ struct DeviceCandidate {
     std::string unsuitable;            // empty when the device can run the chapter
 };
 
-// VKT_HIDE_FEATURES=name,name,...: the tests' way to play a device that lacks
-// a feature or an extension (lavapipe has nearly all of them), so the message a
-// reader with such a device would see can be checked. Names as in the Vulkan
-// structs and extension strings: bufferDeviceAddress, VK_KHR_swapchain (and,
-// for a chapter that checks a property itself, the flag's name).
-bool hidden_by_tests(std::string_view name);
-
 // How a device's verdict names a missing feature: "lacks the dynamicRendering
 // feature", or with `of`, "lacks the triangleFans feature of
 // VK_KHR_portability_subset"; " (hidden by VKT_HIDE_FEATURES)" follows when a
 // test hid it.
-std::string lacks_feature(std::string_view name, std::string_view of = {});
+std::string lacks_feature(std::string_view name, std::string_view of = {}, bool hidden = false);
 
 // Discrete GPUs first, then integrated, virtual, and software rasterisers last.
 int device_type_score(VkPhysicalDeviceType type);
@@ -120,7 +115,7 @@ int device_score(const DeviceCandidate& candidate);
 // extension the driver lacks with an error) counts as "no".
 bool can_present(VkPhysicalDevice device, uint32_t queue_family, VkSurfaceKHR surface);
 
-// Whether the device offers the extension (and VKT_HIDE_FEATURES does not hide it).
+// Whether the device offers the extension.
 bool device_extension_available(VkPhysicalDevice device, const char* name);
 
 // Everything vkEnumeratePhysicalDevices reports, each with its verdict.

@@ -9,6 +9,7 @@
 // with this, so that the reader reads which feature is missing.
 
 #include "vkt/core/check.hpp"
+#include "vkt/core/hidden_names.hpp"
 
 #include <string>
 
@@ -19,6 +20,7 @@ namespace vkt {
 // once the device is known to offer the structs' extensions. A struct of a
 // kind this file does not list throws Error: the table in
 // extension_features.cpp needs its members first.
-std::string extension_feature_shortfall(VkPhysicalDevice device, const void* wanted);
+std::string extension_feature_shortfall(VkPhysicalDevice device, const void* wanted,
+                                        const HiddenNames& hidden = {});
 
 }  // namespace vkt

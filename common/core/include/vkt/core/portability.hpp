@@ -19,6 +19,7 @@
 #endif
 
 #include "vkt/core/check.hpp"
+#include "vkt/core/hidden_names.hpp"
 
 #include <span>
 #include <string>
@@ -59,11 +60,12 @@ struct PortabilityFeature {
 // Why the device cannot run a chapter that needs these portability features:
 // "lacks the triangleFans feature of VK_KHR_portability_subset", as
 // survey_devices says it of any other missing feature (a name in
-// VKT_HIDE_FEATURES counts as missing on any device). Empty when nothing is
-// missing, and always on a device that does not offer the extension.
+// `hidden` counts as missing on any device). Empty when nothing is missing,
+// and always on a device that does not offer the extension.
 std::string portability_shortfall(std::span<const VkExtensionProperties> offered,
                                   const VkPhysicalDevicePortabilitySubsetFeaturesKHR& available,
-                                  std::span<const PortabilityFeature> required);
+                                  std::span<const PortabilityFeature> required,
+                                  const HiddenNames& hidden = {});
 
 // The features struct with exactly the required members on, for the pNext
 // chain of VkDeviceCreateInfo (the struct is in the chain only where the device

@@ -96,6 +96,9 @@ public:
     // (vkt/core/swapchain_retirement.hpp).
     bool present_fences() const { return present_fences_; }
     std::shared_ptr<const ValidationCounts> counts() const { return instance_->counts(); }
+    // What the tests pretend no device has (VKT_HIDE_FEATURES=name,name,...),
+    // read once at start; the device checks and the chapters ask it.
+    const HiddenNames& hidden() const { return hidden_; }
 
     // The loop. Once before each frame: polls the window, and says whether to
     // draw (`draw`), to stop (--frames reached, or the window closed), or to
@@ -142,6 +145,7 @@ private:
     const Options& options_;
     const ChapterSpec& spec_;
     uint32_t frames_in_flight_;
+    HiddenNames hidden_;
     Presentation presentation_ = Presentation::offscreen;
     std::unique_ptr<Window> window_;
     std::unique_ptr<Instance> instance_;

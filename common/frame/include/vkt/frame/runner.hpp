@@ -48,6 +48,10 @@ struct Context {
     VkExtent2D extent;  // the colour target's size at start (see Renderer::resize)
     uint32_t frames_in_flight;
     const VkPhysicalDeviceProperties& properties;  // limits, name, ...
+    // What the tests pretend no device has (VKT_HIDE_FEATURES): a chapter that
+    // checks a property itself asks it too, so the tests can play a device
+    // whose property falls short.
+    const HiddenNames& hidden;
     const FeatureChain& features;  // what was enabled: ask it about optional features
 
     // What the upload helpers need (chapter 05).
