@@ -55,8 +55,13 @@ private:
     // Whether frames are drawn straight into the swapchain's images (chapter
     // 03: an _SRGB swapchain) rather than into own_ and copied in.
     bool drawn_into() const { return swapchain_ && swapchain_->drawn_into(); }
-    // The stage after which this frame's target may be written: where the
-    // submit waits for the acquire semaphore, or after our image's last copy.
+    // Where the submit waits for the acquire semaphore: at the first write to
+    // the swapchain image, the chapter's drawing or our copy.
+    VkPipelineStageFlags2 acquire_wait_stage() const;
+    // The stage after which this frame's target may be written (Frame::
+    // target_ready). The swapchain image: after the acquire wait. Our own
+    // image: at once (NONE), since each frame slot has its own, and the
+    // slot's fence, waited for before recording, says its last frame is over.
     VkPipelineStageFlags2 target_ready() const;
     // What the start-up line and --benchmark say about where frames go.
     Destination destination() const;
@@ -77,8 +82,11 @@ private:
     // image only where frames are not drawn straight into the swapchain's.
     VkFormat format_ = VK_FORMAT_UNDEFINED;
     VkExtent2D extent_{};
-    std::optional<Image> own_;
-    ImageView own_storage_;  // with ChapterSpec::storage_target: see create_target
+    // Our own images, one per frame slot: a single one would make each frame's
+    // drawing wait for the last frame's copy out of it, which waits for its
+    // acquire, so no two frames would overlap. Empty when drawn straight in.
+    std::vector<Image> own_;
+    std::vector<ImageView> own_storage_;  // with ChapterSpec::storage_target: see create_target
     VkFormat storage_format_ = VK_FORMAT_UNDEFINED;  // Context::storage_format
     std::vector<FrameSlot> slots_;
     std::unique_ptr<Renderer> renderer_;

@@ -127,17 +127,20 @@ void ChapterRun::create_target(VkExtent2D extent) {
                                     VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     if (spec_.storage_target)
         storage_format_ = storage_format_for(device_.physical(), format, usage);
-    own_storage_.reset();  // before the image it views
-    own_.reset();
+    own_storage_.clear();  // before the images they view
+    own_.clear();
     format_ = format;
     extent_ = extent;
     if (drawn_into()) return;  // frames go straight into the swapchain's images
-    if (storage_format_ != VK_FORMAT_UNDEFINED)
-        own_ = create_storage_target(device_.physical(), device_, format, storage_format_, extent,
-                                     usage, own_storage_);
-    else
-        own_ = create_image_2d(device_.physical(), device_, format, extent, usage,
-                               VK_IMAGE_ASPECT_COLOR_BIT);
+    for (uint32_t slot = 0; slot < frames_in_flight; ++slot) {
+        if (storage_format_ != VK_FORMAT_UNDEFINED)
+            own_.push_back(create_storage_target(device_.physical(), device_, format,
+                                                 storage_format_, extent, usage,
+                                                 own_storage_.emplace_back()));
+        else
+            own_.push_back(create_image_2d(device_.physical(), device_, format, extent, usage,
+                                           VK_IMAGE_ASPECT_COLOR_BIT));
+    }
 }
 
 void ChapterRun::recreate_swapchain() {
@@ -167,7 +170,7 @@ void ChapterRun::recreate_swapchain() {
     const bool resized = extent.width != extent_.width || extent.height != extent_.height;
     // A new size needs a new target; so does a swapchain we can no longer draw
     // into (or now can), e.g. one that came back in the _UNORM format.
-    if (resized || swapchain_->drawn_into() == own_.has_value()) create_target(extent);
+    if (resized || swapchain_->drawn_into() == !own_.empty()) create_target(extent);
     if (resized) renderer_->resize(extent);
 }
 

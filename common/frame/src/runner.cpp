@@ -142,19 +142,21 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
         overlay_->build(input, extent_, time,
                         [&](OverlayPanel& panel) { renderer_->overlay(panel); });
     VKT_CHECK(vkResetCommandPool(device_, slot.pool, 0));
-    record(slot, image_index,
-           Frame{.cmd = slot.cmd,
-                 .target = straight ? swapchain_->images()[image_index] : own_->image.get(),
-                 .target_view = straight ? swapchain_->view(image_index) : own_->view.get(),
-                 .target_storage = straight ? VK_NULL_HANDLE : own_storage_.get(),
-                 .extent = extent_,
-                 .target_layout = spec_.target_layout,
-                 .target_ready = target_ready(),
-                 .index = index,
-                 .time = time,
-                 .slot = slot_index,
-                 .input = input,
-                 .timer = harness_.gpu_timer() ? &harness_.gpu_timer() : nullptr});
+    record(
+        slot, image_index,
+        Frame{.cmd = slot.cmd,
+              .target = straight ? swapchain_->images()[image_index] : own_[slot_index].image.get(),
+              .target_view = straight ? swapchain_->view(image_index) : own_[slot_index].view.get(),
+              .target_storage = straight || own_storage_.empty() ? VK_NULL_HANDLE
+                                                                 : own_storage_[slot_index].get(),
+              .extent = extent_,
+              .target_layout = spec_.target_layout,
+              .target_ready = target_ready(),
+              .index = index,
+              .time = time,
+              .slot = slot_index,
+              .input = input,
+              .timer = harness_.gpu_timer() ? &harness_.gpu_timer() : nullptr});
 
     // Submit: wait for the acquired image before the first write to it (the
     // chapter's drawing, or our copy), signal the image's own ready_to_present
@@ -162,7 +164,7 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
     VkSemaphoreSubmitInfo wait{
         .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
         .semaphore = slot.image_acquired,
-        .stageMask = target_ready(),
+        .stageMask = acquire_wait_stage(),
     };
     VkSemaphoreSubmitInfo signal{
         .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
@@ -313,9 +315,14 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
     VKT_CHECK(vkEndCommandBuffer(cmd));
 }
 
-VkPipelineStageFlags2 ChapterRun::target_ready() const {
+VkPipelineStageFlags2 ChapterRun::acquire_wait_stage() const {
     return drawn_into() ? VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT
                         : VK_PIPELINE_STAGE_2_COPY_BIT;
+}
+
+VkPipelineStageFlags2 ChapterRun::target_ready() const {
+    return drawn_into() ? VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT
+                        : VK_PIPELINE_STAGE_2_NONE;
 }
 
 }  // namespace detail
