@@ -145,8 +145,8 @@ void Harness::open_presentation() {
     // Not in a window under validation layers older than 1.3.290 (Debian 12
     // has 1.3.239): with the extension on, they check a new swapchain's size
     // against a fresh query of the window's, which a resize between our query
-    // and vkCreateSwapchainKHR makes a false error (the race of Vulkan-Docs
-    // issue 1144); later layers check it against our own query, as they do
+    // and vkCreateSwapchainKHR makes a false error (the race described in
+    // KhronosGroup/Vulkan-Docs#1144); later layers check it against our own query, as they do
     // without the extension. There the fallback retires swapchains instead.
     const bool racy_layer =
         validation && presentation_ == Presentation::window &&

@@ -51,8 +51,8 @@ constexpr uint32_t max_image_side = 16384;
 // machine's on lavapipe), each with every mip level (a chain adds a third:
 // x 4/3). So width x height x 4 x (1 + 4/3 + 4/3), 11/3 of the pixels:
 // 8192 x 8192 costs 939 MiB and fits the default 2 GiB of --max-memory;
-// 16384 x 16384 costs 3755 MiB, which froze an 8 GB laptop where it should
-// have failed (issue 25).
+// 16384 x 16384 costs 3755 MiB, enough to freeze a laptop with 8 GB: it must
+// be refused before it is decoded.
 uint64_t image_memory_cost(uint32_t width, uint32_t height);
 
 // The size a PNG or JPEG says it has, from what comes before its pixel data
