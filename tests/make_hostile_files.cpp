@@ -21,13 +21,30 @@
 //   flat_4096.jpg            a true JPEG of 4096 x 4096 flat grey in 64 KiB: what
 //                            the JPEG check lets through, and a budget of 235 MiB
 //
+// and those of issue 39, each made past what our own code did with it:
+//
+//   node_chain.gltf          100,000 nodes, each the only child of the one before,
+//                            the last with the triangle: one call per level
+//                            overflowed the stack (exit 139 from about 16,350)
+//   fan_200000.gltf, .bin    a fan of 200,000 triangles with normals, all
+//                            sharing vertex 0: chapter 26's meshlet builder
+//                            rescanned every use of every vertex (over 60 s)
+//   zeros_100000.gltf, .bin  100,000 triangles whose indices are all 0 (over 70 s)
+//   warnings_20000.gltf      20,000 distinct names in extensionsUsed: each
+//                            warning was compared with every one before it and
+//                            all were printed (400,000 took 228 s)
+//   materials_65156.gltf     65,156 empty materials: one descriptor set each, and
+//                            lavapipe crashed (exit 139)
+//
 //   vkt_make_hostile_files OUT_DIR [gltf]   (gltf: only the two kinds of glTF
 //                                            finding, for the fuzzer's regressions)
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -197,6 +214,105 @@ Bytes jpeg_claiming(uint16_t width, uint16_t height, size_t blocks) {
     return jpeg;
 }
 
+// The triangle of textured_triangle, untextured, with `nodes` for its node
+// list (node 0 the scene's root) and `extra` after its buffers: each file
+// below is this triangle made hostile in one way.
+std::string triangle_with(const std::string& nodes, const std::string& extra = "") {
+    return R"({
+  "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" +
+           nodes + R"(,
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+  "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+  "buffers": [{"byteLength": 44, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA="}])" +
+           extra + "\n}\n";
+}
+
+// Nodes 0 .. depth-1, each the one child of the one before; the last draws mesh 0.
+std::string node_chain(size_t depth) {
+    std::string nodes = "[";
+    for (size_t i = 0; i + 1 < depth; ++i)
+        nodes += R"({"children": [)" + std::to_string(i + 1) + "]},";
+    return nodes + R"({"mesh": 0}])";
+}
+
+void put_f32(Bytes& b, float f) {
+    uint32_t u;
+    std::memcpy(&u, &f, 4);
+    for (int i = 0; i < 4; ++i) b.push_back(uint8_t(u >> (8 * i)));
+}
+
+// A mesh of `vertices` positions and normals (a .bin beside the .gltf),
+// drawn as `mode` from `index_count` 16-bit zeros, or unindexed if none.
+void write_mesh(const fs::path& gltf, const Bytes& bin, size_t vertices, int mode,
+                size_t index_count) {
+    const std::string bin_name = gltf.stem().string() + ".bin";
+    write(gltf.parent_path() / bin_name, bin);
+    const size_t vec3s = 12 * vertices;
+    std::string indices, index_view, index_accessor;
+    if (index_count > 0) {
+        indices = R"(, "indices": 2)";
+        index_view = R"(, {"buffer": 0, "byteOffset": )" + std::to_string(2 * vec3s) +
+                     R"(, "byteLength": )" + std::to_string(2 * index_count) + "}";
+        index_accessor = R"(, {"bufferView": 2, "componentType": 5123, "count": )" +
+                         std::to_string(index_count) + R"(, "type": "SCALAR"})";
+    }
+    write(gltf,
+          R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+  "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "mode": )" +
+              std::to_string(mode) + indices + R"(}]}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": )" +
+              std::to_string(vertices) + R"(, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
+                {"bufferView": 1, "componentType": 5126, "count": )" +
+              std::to_string(vertices) + R"(, "type": "VEC3"})" + index_accessor + R"(],
+  "bufferViews": [{"buffer": 0, "byteLength": )" +
+              std::to_string(vec3s) + R"(}, {"buffer": 0, "byteOffset": )" + std::to_string(vec3s) +
+              R"(, "byteLength": )" + std::to_string(vec3s) + "}" + index_view + R"(],
+  "buffers": [{"byteLength": )" +
+              std::to_string(bin.size()) + R"(, "uri": ")" + bin_name + R"("}]
+}
+)");
+}
+
+// A fan of `triangles` round vertex 0 (TRIANGLE_FAN, mode 6), a disc facing +z.
+void write_fan(const fs::path& gltf, size_t triangles) {
+    const size_t vertices = triangles + 2;
+    Bytes bin;
+    for (size_t i = 0; i < vertices; ++i) {
+        const double a = i == 0 ? 0.0 : 6.283185307179586 * double(i - 1) / double(triangles + 1);
+        const float r = i == 0 ? 0.0f : 1.0f;
+        for (float f : {r * float(std::cos(a)), r * float(std::sin(a)), 0.0f}) put_f32(bin, f);
+    }
+    for (size_t i = 0; i < vertices; ++i)
+        for (float f : {0.0f, 0.0f, 1.0f}) put_f32(bin, f);
+    write_mesh(gltf, bin, vertices, 6, 0);
+}
+
+// `triangles` triangles of one vertex: every index 0.
+void write_zeros(const fs::path& gltf, size_t triangles) {
+    Bytes bin;
+    for (float f : {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f}) put_f32(bin, f);
+    bin.resize(bin.size() + 2 * 3 * triangles, 0);
+    write_mesh(gltf, bin, 1, 4, 3 * triangles);
+}
+
+// The triangle, and `count` distinct extensions it uses (none required).
+std::string many_extensions(size_t count) {
+    std::string names;
+    for (size_t i = 0; i < count; ++i)
+        names += (i ? ", \"EXT_hostile_" : "\"EXT_hostile_") + std::to_string(i) + "\"";
+    return triangle_with(R"([{"mesh": 0}])", ",\n  \"extensionsUsed\": [" + names + "]");
+}
+
+// The triangle, and `count` empty materials (the triangle uses none of them).
+std::string many_materials(size_t count) {
+    std::string list;
+    for (size_t i = 0; i < count; ++i) list += i ? ", {}" : "{}";
+    return triangle_with(R"([{"mesh": 0}])", ",\n  \"materials\": [" + list + "]");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -211,6 +327,9 @@ int main(int argc, char** argv) {
         const Bytes scene = read(fs::path(VKT_SOURCE_DIR) / "assets/gltf/scene.glb");
         write(out / "long_bin_chunk_4.glb", long_bin_chunk(scene, 4));
         write(out / "long_bin_chunk_8.glb", long_bin_chunk(scene, 8));
+        write(out / "node_chain.gltf", triangle_with(node_chain(100000)));
+        write(out / "warnings_20000.gltf", many_extensions(20000));
+        write(out / "materials_65156.gltf", many_materials(65156));
         if (argc == 2) {
             write(out / "huge_claim.png", png_claiming(16384, 16384));
             write(out / "huge_claim.gltf", textured_triangle("huge_claim.png"));
@@ -218,6 +337,8 @@ int main(int argc, char** argv) {
             write(out / "huge_claim.jpg", jpeg_claiming(8192, 8192, 64));
             write(out / "jpeg_claim.gltf", textured_triangle("huge_claim.jpg"));
             write(out / "flat_4096.jpg", jpeg_claiming(4096, 4096, 512 * 512));
+            write_fan(out / "fan_200000.gltf", 200000);
+            write_zeros(out / "zeros_100000.gltf", 100000);
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "vkt_make_hostile_files: %s\n", e.what());

@@ -194,3 +194,13 @@ set_tests_properties(bad_input.10_gltf.huge_image_claim bad_input.10_gltf.jpeg_c
   FIXTURES_REQUIRED vkt_hostile_files)
 vkt_chapter_test(bad_input.10_gltf.max_memory_value 10_gltf EXIT 2 ARGS --max-memory lots
   EXPECT "10_gltf: --max-memory wants a size from 16 MiB to 1024 GiB \\(a number of bytes, or with K, M, G: 512M, 4G\\), not 'lots'")
+
+# --- Issue 39: what got past the parser into our own loops. The files come
+# from the fixture vkt_hostile_files (tests/make_hostile_files.cpp).
+# A chain of 100,000 nodes, each the only child of the one before: walked on
+# a stack of the loader's own. One call per level overflowed the thread's
+# stack (exit 139 in the asan build; GCC's -O3 happens to turn it into a loop).
+vkt_chapter_test(chapter.10_gltf.node_chain 10_gltf
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/node_chain.gltf
+  EXPECT "node_chain.gltf: draws 1, primitives 1, materials 1, images 0, vertices 3, indices 3")
+set_tests_properties(chapter.10_gltf.node_chain PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)

@@ -156,3 +156,11 @@ if(XVFB_RUN AND XDOTOOL AND OPENBOX AND TARGET imgui::imgui)
   set_tests_properties(chapter.23_materials.window_overlay PROPERTIES
     ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS "chapter;window")
 endif()
+
+# Issue 39's chain of 100,000 nodes (tests/make_hostile_files.cpp): loaded
+# and drawn; one call per level overflowed the stack (chapter.10_gltf.node_chain).
+vkt_chapter_test(chapter.23_materials.node_chain 23_materials
+  ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE}
+       --model ${VKT_HOSTILE_DIR}/node_chain.gltf
+  EXPECT "a glTF model")
+set_tests_properties(chapter.23_materials.node_chain PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)

@@ -92,3 +92,11 @@ foreach(missing taskShader meshShader)
     ARGS --headless --frames 1 ENV VKT_HIDE_FEATURES=${missing}
     EXPECT "no Vulkan device can run this chapter; .* lacks the ${missing} feature of VK_EXT_mesh_shader \\(hidden by VKT_HIDE_FEATURES\\)")
 endforeach()
+
+# Issue 39's chain of 100,000 nodes (tests/make_hostile_files.cpp): loaded
+# and drawn; one call per level overflowed the stack (chapter.10_gltf.node_chain).
+vkt_chapter_test(chapter.26_mesh_shaders.node_chain 26_mesh_shaders
+  ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE}
+       --model ${VKT_HOSTILE_DIR}/node_chain.gltf
+  EXPECT "node_chain.gltf: 1 triangles, 3 vertices -> 1 meshlets")
+set_tests_properties(chapter.26_mesh_shaders.node_chain PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)

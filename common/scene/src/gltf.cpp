@@ -264,10 +264,30 @@ private:
                 if (!is_child[n]) roots.push_back(int(n));
         }
         visited_.assign(model_.nodes.size(), false);
-        for (int root : roots) walk(root, glm::mat4(1.0f));
+        for (int root : roots) walk(root);
     }
 
-    void walk(int index, const glm::mat4& parent) {
+    // Depth first, children in their order, on a stack of our own: a file
+    // decides how deep its tree goes (a chain of 100,000 nodes is 1.5 MB),
+    // and one call per level would overflow the thread's stack.
+    void walk(int root) {
+        struct Pending {
+            int index;
+            glm::mat4 parent;
+        };
+        std::vector<Pending> stack{{root, glm::mat4(1.0f)}};
+        while (!stack.empty()) {
+            const Pending at = stack.back();
+            stack.pop_back();
+            const glm::mat4 world = visit(at.index, at.parent);
+            const std::vector<int>& children = model_.nodes[size_t(at.index)].children;
+            for (auto child = children.rbegin(); child != children.rend(); ++child)
+                stack.push_back({*child, world});
+        }
+    }
+
+    // One node: its mesh's draws, and the world transform its children inherit.
+    glm::mat4 visit(int index, const glm::mat4& parent) {
         if (index < 0 || size_t(index) >= model_.nodes.size())
             fail("node " + std::to_string(index) + " does not exist");
         // glTF's nodes form trees: a node reached twice is a cycle or a shared
@@ -289,7 +309,7 @@ private:
                      " does not exist");
             for (uint32_t primitive : mesh(node.mesh)) scene_.draws.push_back({primitive, world});
         }
-        for (int child : node.children) walk(child, world);
+        return world;
     }
 
     void compute_bounds() {
