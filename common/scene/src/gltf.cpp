@@ -20,10 +20,14 @@
 #include <map>
 #include <optional>
 #include <span>
+#include <unordered_set>
 
 namespace vkt {
 
 namespace {
+
+// The most warnings a scene lists; past it, one line says how many more.
+constexpr size_t kListedWarnings = 20;
 
 class Loader {
 public:
@@ -36,6 +40,10 @@ public:
         gltf_detail::load_materials(model_, path_, data_, budget_, materials_, scene_,
                                     [this](const std::string& what) { warn(what); });
         walk_nodes();
+        if (unlisted_warnings_ > 0)
+            scene_.warnings.push_back("and " + std::to_string(unlisted_warnings_) +
+                                      " more warnings, not listed (this loader lists the first " +
+                                      std::to_string(kListedWarnings) + ")");
         if (scene_.draws.empty()) {
             // Say why: what was skipped is often the reason nothing is left
             // (a sparse accessor, points or lines), and the warnings would
@@ -53,10 +61,16 @@ private:
     [[noreturn]] void fail(const std::string& what) const {
         throw Error(path_.string() + ": " + what);
     }
+    // Each distinct warning once (a hash set: a file may make hundreds of
+    // thousands), the first kListedWarnings listed, the rest counted.
     void warn(const std::string& what) {
-        if (std::find(scene_.warnings.begin(), scene_.warnings.end(), what) ==
-            scene_.warnings.end())
+        if (warned_.contains(what)) return;
+        budget_.charge(what.size() + 64, path_.string() + ": its warnings");
+        warned_.insert(what);
+        if (scene_.warnings.size() < kListedWarnings)
             scene_.warnings.push_back(what);
+        else
+            ++unlisted_warnings_;
     }
 
     void check_extensions() {
@@ -339,6 +353,8 @@ private:
     std::map<int, std::vector<uint32_t>> mesh_primitives_;
     int32_t default_material_ = -1;
     std::vector<bool> visited_;
+    std::unordered_set<std::string> warned_;
+    uint64_t unlisted_warnings_ = 0;
 };
 
 }  // namespace

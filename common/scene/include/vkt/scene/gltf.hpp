@@ -98,7 +98,8 @@ struct GltfScene {
     std::vector<RgbaImage> images;                 // decoded RGBA8, only those a material uses
     glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};  // world space, over every draw
     // What was skipped, one line each ("skins are not supported: ..."), without
-    // the file name; load_gltf does not print them.
+    // the file name; load_gltf does not print them. Each distinct line once,
+    // the first 20, then one line "and N more warnings, not listed ...".
     std::vector<std::string> warnings;
 };
 
