@@ -35,6 +35,12 @@
 //                            all were printed (400,000 took 228 s)
 //   materials_65156.gltf     65,156 empty materials: one descriptor set each, and
 //                            lavapipe crashed (exit 139)
+//   instances_2000.gltf      2,000 nodes sharing one mesh of 300,000 vertices whose
+//                            POSITION has no bufferView (all zeros): 24 KB that
+//                            26 flattened into gigabytes, and 10 transformed
+//                            600 million vertices for its bounds
+//   instances_200.gltf       200 of them: within the limit on vertices drawn, but
+//                            26's flattened copy needs 9 GiB
 //
 //   vkt_make_hostile_files OUT_DIR [gltf]   (gltf: only the two kinds of glTF
 //                                            finding, for the fuzzer's regressions)
@@ -313,6 +319,23 @@ std::string many_materials(size_t count) {
     return triangle_with(R"([{"mesh": 0}])", ",\n  \"materials\": [" + list + "]");
 }
 
+// `nodes` nodes (children of node 0) all drawing mesh 0: `vertices` zeros,
+// unindexed, from an accessor with no bufferView.
+std::string many_instances(size_t nodes, size_t vertices) {
+    std::string list = R"([{"children": [)";
+    for (size_t i = 1; i <= nodes; ++i) list += (i > 1 ? ", " : "") + std::to_string(i);
+    list += "]}";
+    for (size_t i = 1; i <= nodes; ++i)
+        list += R"(, {"mesh": 0, "translation": [)" + std::to_string(i) + ", 0, 0]}";
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" +
+           list + R"(],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+  "accessors": [{"componentType": 5126, "count": )" +
+           std::to_string(vertices) + R"(, "type": "VEC3", "min": [0, 0, 0], "max": [0, 0, 0]}]
+}
+)";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -330,6 +353,8 @@ int main(int argc, char** argv) {
         write(out / "node_chain.gltf", triangle_with(node_chain(100000)));
         write(out / "warnings_20000.gltf", many_extensions(20000));
         write(out / "materials_65156.gltf", many_materials(65156));
+        write(out / "instances_2000.gltf", many_instances(2000, 300000));
+        write(out / "instances_200.gltf", many_instances(200, 300000));
         if (argc == 2) {
             write(out / "huge_claim.png", png_claiming(16384, 16384));
             write(out / "huge_claim.gltf", textured_triangle("huge_claim.png"));

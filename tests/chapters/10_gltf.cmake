@@ -214,3 +214,17 @@ vkt_chapter_test(chapter.10_gltf.warnings_20000 10_gltf
          "warnings_20000.gltf: warning: and 19980 more warnings, not listed \\(this loader lists the first 20\\)"
          "warnings_20000.gltf: draws 1, primitives 1")
 set_tests_properties(chapter.10_gltf.warnings_20000 PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+# Counts a file sets that become Vulkan objects or per-draw work, each
+# refused past a limit the message states (vkt/scene/gltf.hpp). 65,156 empty
+# materials, a descriptor set each: before, 10 drew them (exit 0, 600 MB) and
+# 23 aborted inside lavapipe ("LLVM ERROR: Unable to allocate section
+# memory", signal 6). 2,000 nodes sharing one mesh of 300,000 vertices: 10
+# transformed 600 million vertices for its bounds and drew them (10 s, exit 0).
+vkt_chapter_test(bad_input.10_gltf.materials_65156 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/materials_65156.gltf
+  EXPECT "10_gltf: error: .*materials_65156.gltf: materials: 65156 of them, past this loader's limit of 4096 \\(each becomes a descriptor set of its own\\)")
+vkt_chapter_test(bad_input.10_gltf.instances_2000 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/instances_2000.gltf
+  EXPECT "10_gltf: error: .*instances_2000.gltf: node 224: mesh 0: drawn here too, it brings the vertices drawn to 67200000, past this loader's limit of 67108864 \\(2\\^26: each node draws its mesh's vertices again\\)")
+set_tests_properties(bad_input.10_gltf.materials_65156 bad_input.10_gltf.instances_2000
+  PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)

@@ -164,3 +164,10 @@ vkt_chapter_test(chapter.23_materials.node_chain 23_materials
        --model ${VKT_HOSTILE_DIR}/node_chain.gltf
   EXPECT "a glTF model")
 set_tests_properties(chapter.23_materials.node_chain PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+# 65,156 materials, one descriptor set each: before, lavapipe aborted
+# ("LLVM ERROR: Unable to allocate section memory", signal 6).
+vkt_chapter_test(bad_input.23_materials.materials_65156 23_materials EXIT 1
+  ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE}
+       --model ${VKT_HOSTILE_DIR}/materials_65156.gltf
+  EXPECT "23_materials: error: .*materials_65156.gltf: materials: 65156 of them, past this loader's limit of 4096")
+set_tests_properties(bad_input.23_materials.materials_65156 PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)

@@ -54,6 +54,7 @@ public:
             fail(scene_.warnings.empty() ? why : why + ")");
         }
         compute_bounds();
+        scene_.memory_charged = budget_.used();
         return std::move(scene_);
     }
 
@@ -321,9 +322,33 @@ private:
             if (size_t(node.mesh) >= model_.meshes.size())
                 fail("node " + std::to_string(index) + ": mesh " + std::to_string(node.mesh) +
                      " does not exist");
-            for (uint32_t primitive : mesh(node.mesh)) scene_.draws.push_back({primitive, world});
+            add_draws(index, node.mesh, world);
         }
         return world;
+    }
+
+    // Node `node`'s draws of mesh `index`, within the limits on draws and on
+    // vertices drawn (gltf.hpp): a mesh shared by many nodes is drawn, bounded
+    // and, in 26, copied once for each.
+    void add_draws(int node, int index, const glm::mat4& world) {
+        const std::vector<uint32_t>& primitives = mesh(index);
+        const std::string what = "node " + std::to_string(node) + ": mesh " + std::to_string(index);
+        if (scene_.draws.size() + primitives.size() > gltf_max_draws)
+            fail(what + ": its " + std::to_string(primitives.size()) +
+                 " draws would bring the scene's to " +
+                 std::to_string(scene_.draws.size() + primitives.size()) +
+                 ", past this loader's limit of " + std::to_string(gltf_max_draws) +
+                 " (one per primitive of every node with a mesh)");
+        for (uint32_t primitive : primitives)
+            drawn_vertices_ += scene_.primitives[primitive].vertex_count;
+        if (drawn_vertices_ > gltf_max_drawn_vertices)
+            fail(what + ": drawn here too, it brings the vertices drawn to " +
+                 std::to_string(drawn_vertices_) + ", past this loader's limit of " +
+                 std::to_string(gltf_max_drawn_vertices) +
+                 " (2^26: each node draws its mesh's vertices again)");
+        budget_.charge(primitives.size() * sizeof(GltfDraw),
+                       path_.string() + ": " + what + ": its draws");
+        for (uint32_t primitive : primitives) scene_.draws.push_back({primitive, world});
     }
 
     void compute_bounds() {
@@ -355,6 +380,7 @@ private:
     std::vector<bool> visited_;
     std::unordered_set<std::string> warned_;
     uint64_t unlisted_warnings_ = 0;
+    uint64_t drawn_vertices_ = 0;
 };
 
 }  // namespace
