@@ -39,11 +39,15 @@
 //                            POSITION has no bufferView (all zeros): 24 KB that
 //                            26 flattened into gigabytes, and 10 transformed
 //                            600 million vertices for its bounds
+//   nan_position.gltf,       a quad (two triangles) with one corner's POSITION, or
+//   nan_normal.gltf          its NORMAL, NaN: drawn with exit 0, half the quad
+//                            missing, or lit black in 23
 //   instances_200.gltf       200 of them: within the limit on vertices drawn, but
 //                            26's flattened copy needs 9 GiB
 //
-//   vkt_make_hostile_files OUT_DIR [gltf]   (gltf: only the two kinds of glTF
-//                                            finding, for the fuzzer's regressions)
+//   vkt_make_hostile_files OUT_DIR [gltf]   (gltf: only the .gltf and .glb files that
+//                                            need no other file, for the fuzzer's
+//                                            regressions)
 
 #include <algorithm>
 #include <cmath>
@@ -336,6 +340,46 @@ std::string many_instances(size_t nodes, size_t vertices) {
 )";
 }
 
+std::string base64(const Bytes& bytes) {
+    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        const uint32_t n = uint32_t(bytes[i]) << 16 |
+                           (i + 1 < bytes.size() ? uint32_t(bytes[i + 1]) << 8 : 0) |
+                           (i + 2 < bytes.size() ? uint32_t(bytes[i + 2]) : 0);
+        out += digits[(n >> 18) & 63];
+        out += digits[(n >> 12) & 63];
+        out += i + 1 < bytes.size() ? digits[(n >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? digits[n & 63] : '=';
+    }
+    return out;
+}
+
+// A unit quad facing +z, two triangles with normals, in a data: URI; corner
+// 2's POSITION (`nan_position`) or NORMAL made NaN.
+std::string nan_quad(bool nan_position) {
+    const float nan = std::nanf("");
+    Bytes bin;
+    const float positions[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    for (int v = 0; v < 4; ++v)
+        for (int c = 0; c < 3; ++c)
+            put_f32(bin, nan_position && v == 2 && c == 1 ? nan : positions[v][c]);
+    for (int v = 0; v < 4; ++v)
+        for (float f : {0.0f, 0.0f, 1.0f})
+            put_f32(bin, !nan_position && v == 2 && f == 1.0f ? nan : f);
+    bin.insert(bin.end(), {0, 0, 1, 0, 2, 0, 0, 0, 2, 0, 3, 0});  // 0 1 2, 0 2 3: 16-bit
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2}]}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"},
+                {"bufferView": 0, "byteOffset": 48, "componentType": 5126, "count": 4, "type": "VEC3"},
+                {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+  "bufferViews": [{"buffer": 0, "byteLength": 96}, {"buffer": 0, "byteOffset": 96, "byteLength": 12}],
+  "buffers": [{"byteLength": 108, "uri": "data:application/octet-stream;base64,)" +
+           base64(bin) + R"("}]
+}
+)";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -355,6 +399,8 @@ int main(int argc, char** argv) {
         write(out / "materials_65156.gltf", many_materials(65156));
         write(out / "instances_2000.gltf", many_instances(2000, 300000));
         write(out / "instances_200.gltf", many_instances(200, 300000));
+        write(out / "nan_position.gltf", nan_quad(true));
+        write(out / "nan_normal.gltf", nan_quad(false));
         if (argc == 2) {
             write(out / "huge_claim.png", png_claiming(16384, 16384));
             write(out / "huge_claim.gltf", textured_triangle("huge_claim.png"));
