@@ -21,13 +21,40 @@
 //   flat_4096.jpg            a true JPEG of 4096 x 4096 flat grey in 64 KiB: what
 //                            the JPEG check lets through, and a budget of 235 MiB
 //
-//   vkt_make_hostile_files OUT_DIR [gltf]   (gltf: only the two kinds of glTF
-//                                            finding, for the fuzzer's regressions)
+// and those of issue 39, each made past what our own code did with it:
+//
+//   node_chain.gltf          100,000 nodes, each the only child of the one before,
+//                            the last with the triangle: one call per level
+//                            overflowed the stack (exit 139 from about 16,350)
+//   fan_200000.gltf, .bin    a fan of 200,000 triangles with normals, all
+//                            sharing vertex 0: chapter 26's meshlet builder
+//                            rescanned every use of every vertex (over 60 s)
+//   zeros_100000.gltf, .bin  100,000 triangles whose indices are all 0 (over 70 s)
+//   warnings_20000.gltf      20,000 distinct names in extensionsUsed: each
+//                            warning was compared with every one before it and
+//                            all were printed (400,000 took 228 s)
+//   materials_65156.gltf     65,156 empty materials: one descriptor set each, and
+//                            lavapipe crashed (exit 139)
+//   instances_2000.gltf      2,000 nodes sharing one mesh of 300,000 vertices whose
+//                            POSITION has no bufferView (all zeros): 24 KB that
+//                            26 flattened into gigabytes, and 10 transformed
+//                            600 million vertices for its bounds
+//   nan_position.gltf,       a quad (two triangles) with one corner's POSITION, or
+//   nan_normal.gltf          its NORMAL, NaN: drawn with exit 0, half the quad
+//                            missing, or lit black in 23
+//   instances_200.gltf       200 of them: within the limit on vertices drawn, but
+//                            26's flattened copy needs 9 GiB
+//
+//   vkt_make_hostile_files OUT_DIR [gltf]   (gltf: only the .gltf and .glb files that
+//                                            need no other file, for the fuzzer's
+//                                            regressions)
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -197,6 +224,162 @@ Bytes jpeg_claiming(uint16_t width, uint16_t height, size_t blocks) {
     return jpeg;
 }
 
+// The triangle of textured_triangle, untextured, with `nodes` for its node
+// list (node 0 the scene's root) and `extra` after its buffers: each file
+// below is this triangle made hostile in one way.
+std::string triangle_with(const std::string& nodes, const std::string& extra = "") {
+    return R"({
+  "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" +
+           nodes + R"(,
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+  "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+  "buffers": [{"byteLength": 44, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA="}])" +
+           extra + "\n}\n";
+}
+
+// Nodes 0 .. depth-1, each the one child of the one before; the last draws mesh 0.
+std::string node_chain(size_t depth) {
+    std::string nodes = "[";
+    for (size_t i = 0; i + 1 < depth; ++i)
+        nodes += R"({"children": [)" + std::to_string(i + 1) + "]},";
+    return nodes + R"({"mesh": 0}])";
+}
+
+void put_f32(Bytes& b, float f) {
+    uint32_t u;
+    std::memcpy(&u, &f, 4);
+    for (int i = 0; i < 4; ++i) b.push_back(uint8_t(u >> (8 * i)));
+}
+
+// A mesh of `vertices` positions and normals (a .bin beside the .gltf),
+// drawn as `mode` from `index_count` 16-bit zeros, or unindexed if none.
+void write_mesh(const fs::path& gltf, const Bytes& bin, size_t vertices, int mode,
+                size_t index_count) {
+    const std::string bin_name = gltf.stem().string() + ".bin";
+    write(gltf.parent_path() / bin_name, bin);
+    const size_t vec3s = 12 * vertices;
+    std::string indices, index_view, index_accessor;
+    if (index_count > 0) {
+        indices = R"(, "indices": 2)";
+        index_view = R"(, {"buffer": 0, "byteOffset": )" + std::to_string(2 * vec3s) +
+                     R"(, "byteLength": )" + std::to_string(2 * index_count) + "}";
+        index_accessor = R"(, {"bufferView": 2, "componentType": 5123, "count": )" +
+                         std::to_string(index_count) + R"(, "type": "SCALAR"})";
+    }
+    write(gltf,
+          R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+  "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "mode": )" +
+              std::to_string(mode) + indices + R"(}]}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": )" +
+              std::to_string(vertices) + R"(, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
+                {"bufferView": 1, "componentType": 5126, "count": )" +
+              std::to_string(vertices) + R"(, "type": "VEC3"})" + index_accessor + R"(],
+  "bufferViews": [{"buffer": 0, "byteLength": )" +
+              std::to_string(vec3s) + R"(}, {"buffer": 0, "byteOffset": )" + std::to_string(vec3s) +
+              R"(, "byteLength": )" + std::to_string(vec3s) + "}" + index_view + R"(],
+  "buffers": [{"byteLength": )" +
+              std::to_string(bin.size()) + R"(, "uri": ")" + bin_name + R"("}]
+}
+)");
+}
+
+// A fan of `triangles` round vertex 0 (TRIANGLE_FAN, mode 6), a disc facing +z.
+void write_fan(const fs::path& gltf, size_t triangles) {
+    const size_t vertices = triangles + 2;
+    Bytes bin;
+    for (size_t i = 0; i < vertices; ++i) {
+        const double a = i == 0 ? 0.0 : 6.283185307179586 * double(i - 1) / double(triangles + 1);
+        const float r = i == 0 ? 0.0f : 1.0f;
+        for (float f : {r * float(std::cos(a)), r * float(std::sin(a)), 0.0f}) put_f32(bin, f);
+    }
+    for (size_t i = 0; i < vertices; ++i)
+        for (float f : {0.0f, 0.0f, 1.0f}) put_f32(bin, f);
+    write_mesh(gltf, bin, vertices, 6, 0);
+}
+
+// `triangles` triangles of one vertex: every index 0.
+void write_zeros(const fs::path& gltf, size_t triangles) {
+    Bytes bin;
+    for (float f : {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f}) put_f32(bin, f);
+    bin.resize(bin.size() + 2 * 3 * triangles, 0);
+    write_mesh(gltf, bin, 1, 4, 3 * triangles);
+}
+
+// The triangle, and `count` distinct extensions it uses (none required).
+std::string many_extensions(size_t count) {
+    std::string names;
+    for (size_t i = 0; i < count; ++i)
+        names += (i ? ", \"EXT_hostile_" : "\"EXT_hostile_") + std::to_string(i) + "\"";
+    return triangle_with(R"([{"mesh": 0}])", ",\n  \"extensionsUsed\": [" + names + "]");
+}
+
+// The triangle, and `count` empty materials (the triangle uses none of them).
+std::string many_materials(size_t count) {
+    std::string list;
+    for (size_t i = 0; i < count; ++i) list += i ? ", {}" : "{}";
+    return triangle_with(R"([{"mesh": 0}])", ",\n  \"materials\": [" + list + "]");
+}
+
+// `nodes` nodes (children of node 0) all drawing mesh 0: `vertices` zeros,
+// unindexed, from an accessor with no bufferView.
+std::string many_instances(size_t nodes, size_t vertices) {
+    std::string list = R"([{"children": [)";
+    for (size_t i = 1; i <= nodes; ++i) list += (i > 1 ? ", " : "") + std::to_string(i);
+    list += "]}";
+    for (size_t i = 1; i <= nodes; ++i)
+        list += R"(, {"mesh": 0, "translation": [)" + std::to_string(i) + ", 0, 0]}";
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" +
+           list + R"(],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+  "accessors": [{"componentType": 5126, "count": )" +
+           std::to_string(vertices) + R"(, "type": "VEC3", "min": [0, 0, 0], "max": [0, 0, 0]}]
+}
+)";
+}
+
+std::string base64(const Bytes& bytes) {
+    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        const uint32_t n = uint32_t(bytes[i]) << 16 |
+                           (i + 1 < bytes.size() ? uint32_t(bytes[i + 1]) << 8 : 0) |
+                           (i + 2 < bytes.size() ? uint32_t(bytes[i + 2]) : 0);
+        out += digits[(n >> 18) & 63];
+        out += digits[(n >> 12) & 63];
+        out += i + 1 < bytes.size() ? digits[(n >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? digits[n & 63] : '=';
+    }
+    return out;
+}
+
+// A unit quad facing +z, two triangles with normals, in a data: URI; corner
+// 2's POSITION (`nan_position`) or NORMAL made NaN.
+std::string nan_quad(bool nan_position) {
+    const float nan = std::nanf("");
+    Bytes bin;
+    const float positions[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    for (int v = 0; v < 4; ++v)
+        for (int c = 0; c < 3; ++c)
+            put_f32(bin, nan_position && v == 2 && c == 1 ? nan : positions[v][c]);
+    for (int v = 0; v < 4; ++v)
+        for (float f : {0.0f, 0.0f, 1.0f})
+            put_f32(bin, !nan_position && v == 2 && f == 1.0f ? nan : f);
+    bin.insert(bin.end(), {0, 0, 1, 0, 2, 0, 0, 0, 2, 0, 3, 0});  // 0 1 2, 0 2 3: 16-bit
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2}]}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"},
+                {"bufferView": 0, "byteOffset": 48, "componentType": 5126, "count": 4, "type": "VEC3"},
+                {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+  "bufferViews": [{"buffer": 0, "byteLength": 96}, {"buffer": 0, "byteOffset": 96, "byteLength": 12}],
+  "buffers": [{"byteLength": 108, "uri": "data:application/octet-stream;base64,)" +
+           base64(bin) + R"("}]
+}
+)";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -211,6 +394,13 @@ int main(int argc, char** argv) {
         const Bytes scene = read(fs::path(VKT_SOURCE_DIR) / "assets/gltf/scene.glb");
         write(out / "long_bin_chunk_4.glb", long_bin_chunk(scene, 4));
         write(out / "long_bin_chunk_8.glb", long_bin_chunk(scene, 8));
+        write(out / "node_chain.gltf", triangle_with(node_chain(100000)));
+        write(out / "warnings_20000.gltf", many_extensions(20000));
+        write(out / "materials_65156.gltf", many_materials(65156));
+        write(out / "instances_2000.gltf", many_instances(2000, 300000));
+        write(out / "instances_200.gltf", many_instances(200, 300000));
+        write(out / "nan_position.gltf", nan_quad(true));
+        write(out / "nan_normal.gltf", nan_quad(false));
         if (argc == 2) {
             write(out / "huge_claim.png", png_claiming(16384, 16384));
             write(out / "huge_claim.gltf", textured_triangle("huge_claim.png"));
@@ -218,6 +408,8 @@ int main(int argc, char** argv) {
             write(out / "huge_claim.jpg", jpeg_claiming(8192, 8192, 64));
             write(out / "jpeg_claim.gltf", textured_triangle("huge_claim.jpg"));
             write(out / "flat_4096.jpg", jpeg_claiming(4096, 4096, 512 * 512));
+            write_fan(out / "fan_200000.gltf", 200000);
+            write_zeros(out / "zeros_100000.gltf", 100000);
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "vkt_make_hostile_files: %s\n", e.what());

@@ -15,6 +15,7 @@
 
 #include "vkt/core/check.hpp"
 #include "vkt/core/files.hpp"
+#include "vkt/core/memory_budget.hpp"
 #include "vkt/frame/runner.hpp"
 #include "vkt/resources/compute.hpp"
 #include "vkt/resources/depth.hpp"
@@ -95,6 +96,20 @@ public:
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "26_mesh_shaders: %s: warning: %s\n", path.c_str(),
                          warning.c_str());
+        // The flattened copy is charged to the same budget as the load: a
+        // mesh that many nodes share is copied once for each (its vertices
+        // here, staged and on the GPU; its indices, and the meshlets' arrays
+        // of at most 40 bytes an index).
+        vkt::MemoryBudget budget(uint64_t(context.options.integer("--max-memory")));
+        budget.charge(scene.memory_charged, path + ": the scene as loaded");
+        uint64_t drawn_vertices = 0, drawn_indices = 0;
+        for (const vkt::GltfDraw& draw : scene.draws) {
+            drawn_vertices += scene.primitives[draw.primitive].vertex_count;
+            drawn_indices += scene.primitives[draw.primitive].index_count;
+        }
+        budget.charge(drawn_vertices * (3 * sizeof(GpuVertex) + sizeof(glm::vec3)) +
+                          drawn_indices * (3 * sizeof(uint32_t) + 40),
+                      path + ": its draws flattened into one mesh");
         std::vector<GpuVertex> vertices;
         std::vector<glm::vec3> positions;
         std::vector<uint32_t> indices;

@@ -43,6 +43,7 @@ struct Meshlets {
     std::vector<Meshlet> meshlets;
     std::vector<uint32_t> vertices;   // global vertex index per meshlet vertex
     std::vector<uint32_t> triangles;  // packed local indices, one uint per triangle
+    uint64_t scored = 0;              // candidate triangles the growth scored: its work
 };
 
 inline glm::vec3 face_normal(glm::vec3 a, glm::vec3 b, glm::vec3 c) {
@@ -93,17 +94,31 @@ inline void compute_bounds(Meshlet& m, const Meshlets& out, std::span<const glm:
 // keeps it round and its normals close), until a limit would be passed or
 // nothing touches it. Compact meshlets have tight spheres and narrow cones,
 // so the task shader can cull them.
+//
+// Each vertex keeps its untaken triangles in a linked list (a taken one
+// leaves it in constant time), and offers at most the first kOffers of them
+// at each step: the work is at most 64 x kOffers scores per triangle however
+// many triangles share a vertex (a fan of 200,000, or 100,000 triangles all
+// at index 0). A vertex of an ordinary mesh has fewer, and offers them all.
+constexpr uint32_t kOffers = 32;
 inline Meshlets build_meshlets(std::span<const glm::vec3> positions,
                                std::span<const uint32_t> indices, uint32_t max_vertices,
                                uint32_t max_triangles) {
     max_vertices = std::min(max_vertices, 256u);  // local indices are 8 bits
     const auto triangle_count = uint32_t(indices.size() / 3);
-    // Which triangles use each vertex (compressed rows: first[v] .. first[v + 1]).
-    std::vector<uint32_t> first(positions.size() + 1, 0), uses(indices.size());
-    for (uint32_t index : indices) ++first[index + 1];
-    for (size_t v = 0; v < positions.size(); ++v) first[v + 1] += first[v];
-    std::vector<uint32_t> fill(first.begin(), first.end() - 1);
-    for (uint32_t i = 0; i < indices.size(); ++i) uses[fill[indices[i]]++] = i / 3;
+    // The corners (3t + k) at each vertex, in index order, untaken only.
+    constexpr uint32_t none = UINT32_MAX;
+    std::vector<uint32_t> head(positions.size(), none), next(3 * size_t(triangle_count), none),
+        prev(next.size(), none);
+    for (uint32_t c = 3 * triangle_count; c-- > 0;) {
+        next[c] = head[indices[c]];
+        if (next[c] != none) prev[next[c]] = c;
+        head[indices[c]] = c;
+    }
+    const auto unlink = [&](uint32_t c) {
+        (prev[c] != none ? next[prev[c]] : head[indices[c]]) = next[c];
+        if (next[c] != none) prev[next[c]] = prev[c];
+    };
 
     Meshlets out;
     std::vector<bool> taken(triangle_count, false);
@@ -115,30 +130,32 @@ inline Meshlets build_meshlets(std::span<const glm::vec3> positions,
         Meshlet m{.vertex_offset = uint32_t(out.vertices.size()),
                   .triangle_offset = uint32_t(out.triangles.size())};
         glm::vec3 middle(0.0f);
-        uint32_t next = seed;
-        while (next != UINT32_MAX) {
+        uint32_t next_triangle = seed;
+        while (next_triangle != none) {
             uint32_t packed = 0;
             for (uint32_t k = 0; k < 3; ++k) {
-                const uint32_t v = indices[3 * next + k];
+                const uint32_t v = indices[3 * next_triangle + k];
                 if (local[v] < 0) {
                     local[v] = int32_t(m.vertex_count++);
                     out.vertices.push_back(v);
                     middle += (positions[v] - middle) / float(m.vertex_count);
                 }
                 packed |= uint32_t(local[v]) << (8 * k);
+                unlink(3 * next_triangle + k);
             }
             out.triangles.push_back(packed);
-            taken[next] = true;
+            taken[next_triangle] = true;
             if (++m.triangle_count == max_triangles) break;
             // The best neighbour: fewest new vertices, then nearest the middle.
-            next = UINT32_MAX;
+            next_triangle = none;
             uint32_t best_new = 4;
             float best_distance = std::numeric_limits<float>::max();
             for (uint32_t i = 0; i < m.vertex_count; ++i) {
-                const uint32_t v = out.vertices[m.vertex_offset + i];
-                for (uint32_t u = first[v]; u < first[v + 1]; ++u) {
-                    const uint32_t t = uses[u];
-                    if (taken[t]) continue;
+                uint32_t offered = 0;
+                for (uint32_t c = head[out.vertices[m.vertex_offset + i]];
+                     c != none && offered < kOffers; c = next[c], ++offered) {
+                    const uint32_t t = c / 3;
+                    ++out.scored;
                     uint32_t fresh = 0;
                     glm::vec3 centroid(0.0f);
                     for (uint32_t k = 0; k < 3; ++k) {
@@ -148,7 +165,7 @@ inline Meshlets build_meshlets(std::span<const glm::vec3> positions,
                     if (m.vertex_count + fresh > max_vertices) continue;
                     const float distance = glm::length(centroid - middle);
                     if (fresh < best_new || (fresh == best_new && distance < best_distance)) {
-                        next = t;
+                        next_triangle = t;
                         best_new = fresh;
                         best_distance = distance;
                     }

@@ -156,3 +156,24 @@ if(XVFB_RUN AND XDOTOOL AND OPENBOX AND TARGET imgui::imgui)
   set_tests_properties(chapter.23_materials.window_overlay PROPERTIES
     ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}" LABELS "chapter;window")
 endif()
+
+# Issue 39's chain of 100,000 nodes (tests/make_hostile_files.cpp): loaded
+# and drawn; one call per level overflowed the stack (chapter.10_gltf.node_chain).
+vkt_chapter_test(chapter.23_materials.node_chain 23_materials
+  ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE}
+       --model ${VKT_HOSTILE_DIR}/node_chain.gltf
+  EXPECT "a glTF model")
+set_tests_properties(chapter.23_materials.node_chain PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+# 65,156 materials, one descriptor set each: before, lavapipe aborted
+# ("LLVM ERROR: Unable to allocate section memory", signal 6).
+vkt_chapter_test(bad_input.23_materials.materials_65156 23_materials EXIT 1
+  ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE}
+       --model ${VKT_HOSTILE_DIR}/materials_65156.gltf
+  EXPECT "23_materials: error: .*materials_65156.gltf: materials: 65156 of them, past this loader's limit of 4096")
+set_tests_properties(bad_input.23_materials.materials_65156 PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+# A NaN normal (tests/make_hostile_files.cpp): before, exit 0 and lit black.
+vkt_chapter_test(bad_input.23_materials.nan_normal 23_materials EXIT 1
+  ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE}
+       --model ${VKT_HOSTILE_DIR}/nan_normal.gltf
+  EXPECT "23_materials: error: .*nan_normal.gltf: mesh 0 primitive 0 NORMAL: accessor 1: element 2, component 2, is NaN, not a finite number")
+set_tests_properties(bad_input.23_materials.nan_normal PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)

@@ -20,10 +20,14 @@
 #include <map>
 #include <optional>
 #include <span>
+#include <unordered_set>
 
 namespace vkt {
 
 namespace {
+
+// The most warnings a scene lists; past it, one line says how many more.
+constexpr size_t kListedWarnings = 20;
 
 class Loader {
 public:
@@ -36,6 +40,10 @@ public:
         gltf_detail::load_materials(model_, path_, data_, budget_, materials_, scene_,
                                     [this](const std::string& what) { warn(what); });
         walk_nodes();
+        if (unlisted_warnings_ > 0)
+            scene_.warnings.push_back("and " + std::to_string(unlisted_warnings_) +
+                                      " more warnings, not listed (this loader lists the first " +
+                                      std::to_string(kListedWarnings) + ")");
         if (scene_.draws.empty()) {
             // Say why: what was skipped is often the reason nothing is left
             // (a sparse accessor, points or lines), and the warnings would
@@ -46,6 +54,7 @@ public:
             fail(scene_.warnings.empty() ? why : why + ")");
         }
         compute_bounds();
+        scene_.memory_charged = budget_.used();
         return std::move(scene_);
     }
 
@@ -53,10 +62,16 @@ private:
     [[noreturn]] void fail(const std::string& what) const {
         throw Error(path_.string() + ": " + what);
     }
+    // Each distinct warning once (a hash set: a file may make hundreds of
+    // thousands), the first kListedWarnings listed, the rest counted.
     void warn(const std::string& what) {
-        if (std::find(scene_.warnings.begin(), scene_.warnings.end(), what) ==
-            scene_.warnings.end())
+        if (warned_.contains(what)) return;
+        budget_.charge(what.size() + 64, path_.string() + ": its warnings");
+        warned_.insert(what);
+        if (scene_.warnings.size() < kListedWarnings)
             scene_.warnings.push_back(what);
+        else
+            ++unlisted_warnings_;
     }
 
     void check_extensions() {
@@ -264,10 +279,30 @@ private:
                 if (!is_child[n]) roots.push_back(int(n));
         }
         visited_.assign(model_.nodes.size(), false);
-        for (int root : roots) walk(root, glm::mat4(1.0f));
+        for (int root : roots) walk(root);
     }
 
-    void walk(int index, const glm::mat4& parent) {
+    // Depth first, children in their order, on a stack of our own: a file
+    // decides how deep its tree goes (a chain of 100,000 nodes is 1.5 MB),
+    // and one call per level would overflow the thread's stack.
+    void walk(int root) {
+        struct Pending {
+            int index;
+            glm::mat4 parent;
+        };
+        std::vector<Pending> stack{{root, glm::mat4(1.0f)}};
+        while (!stack.empty()) {
+            const Pending at = stack.back();
+            stack.pop_back();
+            const glm::mat4 world = visit(at.index, at.parent);
+            const std::vector<int>& children = model_.nodes[size_t(at.index)].children;
+            for (auto child = children.rbegin(); child != children.rend(); ++child)
+                stack.push_back({*child, world});
+        }
+    }
+
+    // One node: its mesh's draws, and the world transform its children inherit.
+    glm::mat4 visit(int index, const glm::mat4& parent) {
         if (index < 0 || size_t(index) >= model_.nodes.size())
             fail("node " + std::to_string(index) + " does not exist");
         // glTF's nodes form trees: a node reached twice is a cycle or a shared
@@ -287,9 +322,33 @@ private:
             if (size_t(node.mesh) >= model_.meshes.size())
                 fail("node " + std::to_string(index) + ": mesh " + std::to_string(node.mesh) +
                      " does not exist");
-            for (uint32_t primitive : mesh(node.mesh)) scene_.draws.push_back({primitive, world});
+            add_draws(index, node.mesh, world);
         }
-        for (int child : node.children) walk(child, world);
+        return world;
+    }
+
+    // Node `node`'s draws of mesh `index`, within the limits on draws and on
+    // vertices drawn (gltf.hpp): a mesh shared by many nodes is drawn, bounded
+    // and, in 26, copied once for each.
+    void add_draws(int node, int index, const glm::mat4& world) {
+        const std::vector<uint32_t>& primitives = mesh(index);
+        const std::string what = "node " + std::to_string(node) + ": mesh " + std::to_string(index);
+        if (scene_.draws.size() + primitives.size() > gltf_max_draws)
+            fail(what + ": its " + std::to_string(primitives.size()) +
+                 " draws would bring the scene's to " +
+                 std::to_string(scene_.draws.size() + primitives.size()) +
+                 ", past this loader's limit of " + std::to_string(gltf_max_draws) +
+                 " (one per primitive of every node with a mesh)");
+        for (uint32_t primitive : primitives)
+            drawn_vertices_ += scene_.primitives[primitive].vertex_count;
+        if (drawn_vertices_ > gltf_max_drawn_vertices)
+            fail(what + ": drawn here too, it brings the vertices drawn to " +
+                 std::to_string(drawn_vertices_) + ", past this loader's limit of " +
+                 std::to_string(gltf_max_drawn_vertices) +
+                 " (2^26: each node draws its mesh's vertices again)");
+        budget_.charge(primitives.size() * sizeof(GltfDraw),
+                       path_.string() + ": " + what + ": its draws");
+        for (uint32_t primitive : primitives) scene_.draws.push_back({primitive, world});
     }
 
     void compute_bounds() {
@@ -319,6 +378,9 @@ private:
     std::map<int, std::vector<uint32_t>> mesh_primitives_;
     int32_t default_material_ = -1;
     std::vector<bool> visited_;
+    std::unordered_set<std::string> warned_;
+    uint64_t unlisted_warnings_ = 0;
+    uint64_t drawn_vertices_ = 0;
 };
 
 }  // namespace

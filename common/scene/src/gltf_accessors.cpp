@@ -8,6 +8,7 @@
 #include "vkt/core/check.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace vkt::gltf_detail {
@@ -216,6 +217,14 @@ std::vector<float> Accessors::read_floats(int index, const std::string& what,
         for (size_t i = 0; i < a.count; ++i) decode(bytes.data() + a.byteOffset + i * stride, i);
     }
     if (a.sparse.isSparse) apply_sparse(a, name, element_size, decode);
+    // A NaN or an infinity would be drawn wrong, silently: a triangle with a
+    // NaN corner vanishes, glm::min and max skip NaN in the bounds, a NaN
+    // normal lights black. So any one of them refuses the attribute.
+    for (size_t i = 0; i < out.size(); ++i)
+        if (!std::isfinite(out[i]))
+            fail(name + ": element " + std::to_string(i / size_t(components)) + ", component " +
+                 std::to_string(i % size_t(components)) + ", is " +
+                 (std::isnan(out[i]) ? "NaN" : "infinite") + ", not a finite number");
     return out;
 }
 

@@ -21,6 +21,12 @@ public:
         : model_(model), path_(path), data_(data), budget_(budget), scene_(scene), warn_(warn) {}
 
     void read(GltfMaterials which) {
+        if (model_.materials.size() > gltf_max_materials)
+            fail("materials: " + std::to_string(model_.materials.size()) +
+                 " of them, past this loader's limit of " + std::to_string(gltf_max_materials) +
+                 " (each becomes a descriptor set of its own)");
+        budget_.charge(model_.materials.size() * sizeof(GltfMaterial),
+                       path_.string() + ": its materials");
         for (size_t m = 0; m < model_.materials.size(); ++m) {
             const tinygltf::Material& source = model_.materials[m];
             const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;

@@ -98,9 +98,21 @@ struct GltfScene {
     std::vector<RgbaImage> images;                 // decoded RGBA8, only those a material uses
     glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};  // world space, over every draw
     // What was skipped, one line each ("skins are not supported: ..."), without
-    // the file name; load_gltf does not print them.
+    // the file name; load_gltf does not print them. Each distinct line once,
+    // the first 20, then one line "and N more warnings, not listed ...".
     std::vector<std::string> warnings;
+    // What the load charged to its memory budget: a chapter that makes more
+    // of the scene (26 flattens it) charges on from here.
+    uint64_t memory_charged = 0;
 };
+
+// What a file may ask for, each refused past its limit with the limit named:
+// materials (each becomes a descriptor set), draws (one per primitive of
+// every node with a mesh) and vertices drawn (a mesh's vertices once for each
+// node that draws it: the chapters transform, bound and draw them that often).
+inline constexpr size_t gltf_max_materials = 4096;
+inline constexpr size_t gltf_max_draws = 65536;
+inline constexpr uint64_t gltf_max_drawn_vertices = uint64_t(1) << 26;
 
 // Loads a .gltf or .glb file (told apart by the file's first four bytes, not
 // its name). Throws vkt::Error with one line, "FILE: what is wrong", when the
