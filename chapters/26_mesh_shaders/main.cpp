@@ -10,6 +10,7 @@
 // --draw indirect draws the same model chapter 15's way, for the comparison
 // the book measures; --view meshlets colours each meshlet.
 
+#include "mesh_limits.hpp"
 #include "mesh_pipeline.hpp"
 #include "meshlets.hpp"
 
@@ -134,31 +135,39 @@ public:
             scene.materials[scene.primitives[scene.draws[0].primitive].material].base_color_factor;
 
         // [limits]
-        // What this device's mesh shaders may write per workgroup, and how
-        // many task workgroups one draw may launch. Every device with the
-        // extension allows at least 256 vertices and 256 primitives; the
-        // meshlets use 64 and 124, within both.
+        // What this device's mesh shaders may do, and what it prefers. The
+        // vertex and primitive maxima need no check (every device allows 256
+        // of each; meshlets.mesh declares 64 and 124). What can fail is the
+        // output memory those maxima take; the preferences decide the mesh
+        // workgroup's size (both in mesh_limits.hpp).
         VkPhysicalDeviceMeshShaderPropertiesEXT mesh_properties{
             .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MESH_SHADER_PROPERTIES_EXT};
         VkPhysicalDeviceProperties2 properties{
             .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, .pNext = &mesh_properties};
         vkGetPhysicalDeviceProperties2(physical_, &properties);
-        const uint32_t max_vertices =
-            std::min(kMeshVertices, mesh_properties.maxMeshOutputVertices);
-        const uint32_t max_triangles =
-            std::min(kMeshTriangles, mesh_properties.maxMeshOutputPrimitives);
-        if (max_vertices < kMeshVertices || max_triangles < kMeshTriangles)
-            throw vkt::Error("this device's mesh shaders write at most " +
-                             std::to_string(mesh_properties.maxMeshOutputVertices) +
-                             " vertices and " +
-                             std::to_string(mesh_properties.maxMeshOutputPrimitives) +
-                             " primitives, fewer than the " + std::to_string(kMeshVertices) +
-                             " and " + std::to_string(kMeshTriangles) + " meshlets.mesh writes");
+        const uint32_t output_bytes = ch26::mesh_output_bytes(mesh_properties);
+        if (output_bytes > mesh_properties.maxMeshOutputMemorySize)
+            throw vkt::Error("meshlets.mesh's outputs take " + std::to_string(output_bytes) +
+                             " bytes, more than this device's maxMeshOutputMemorySize (" +
+                             std::to_string(mesh_properties.maxMeshOutputMemorySize) + ")");
+        const ch26::MeshWorkgroup workgroup = ch26::choose_mesh_workgroup(mesh_properties);
+        mesh_workgroup_ = workgroup.size;
+        const auto yes = [](VkBool32 b) { return b == VK_TRUE ? "yes" : "no"; };
+        std::fprintf(stderr,
+                     "26_mesh_shaders: mesh shader outputs %u of %u bytes; mesh workgroups of %u "
+                     "(%s; preferred at most %u, local-invocation output %s/%s, compact vertices "
+                     "%s), task workgroups of %u (preferred at most %u)\n",
+                     output_bytes, mesh_properties.maxMeshOutputMemorySize, workgroup.size,
+                     workgroup.why, mesh_properties.maxPreferredMeshWorkGroupInvocations,
+                     yes(mesh_properties.prefersLocalInvocationVertexOutput),
+                     yes(mesh_properties.prefersLocalInvocationPrimitiveOutput),
+                     yes(mesh_properties.prefersCompactVertexOutput), ch26::kTaskGroup,
+                     mesh_properties.maxPreferredTaskWorkGroupInvocations);
         // [/limits]
 
         // [build-meshlets]
         const ch26::Meshlets built =
-            ch26::build_meshlets(positions, indices, max_vertices, max_triangles);
+            ch26::build_meshlets(positions, indices, kMeshVertices, kMeshTriangles);
         meshlets_ = built;
         meshlet_count_ = uint32_t(built.meshlets.size());
         // One draw launches one task workgroup per 32 meshlets, and a device
@@ -174,8 +183,8 @@ public:
         std::fprintf(stderr,
                      "26_mesh_shaders: %s: %u triangles, %zu vertices -> %u meshlets "
                      "(at most %u vertices and %u triangles each; the device allows %u and %u)\n",
-                     path.c_str(), triangle_count_, vertices.size(), meshlet_count_, max_vertices,
-                     max_triangles, mesh_properties.maxMeshOutputVertices,
+                     path.c_str(), triangle_count_, vertices.size(), meshlet_count_, kMeshVertices,
+                     kMeshTriangles, mesh_properties.maxMeshOutputVertices,
                      mesh_properties.maxMeshOutputPrimitives);
 
         // The buffers both pipelines read (chapter 13's storage buffers), the
@@ -241,8 +250,8 @@ public:
         } else {
             vkt::ShaderModule task = vkt::load_shader(device_, context.chapter, "meshlets.task");
             vkt::ShaderModule mesh = vkt::load_shader(device_, context.chapter, "meshlets.mesh");
-            pipeline_ = ch26::create_mesh_pipeline(device_, layout_, task, mesh, fragment,
-                                                   context.color_format, depth_format_);
+            pipeline_ = ch26::create_mesh_pipeline(device_, layout_, task, mesh, mesh_workgroup_,
+                                                   fragment, context.color_format, depth_format_);
         }
 
         // [load-draw]
@@ -345,6 +354,7 @@ private:
     glm::vec4 base_colour_{1.0f};
     ch26::Meshlets meshlets_;
     uint32_t meshlet_count_ = 0, task_groups_ = 0, triangle_count_ = 0;
+    uint32_t mesh_workgroup_ = ch26::kMeshWorkgroup;  // choose_mesh_workgroup
     View last_{};
     uint32_t last_slot_ = 0;
     std::vector<vkt::Buffer> buffers_;  // vertices, meshlets, their vertices, their triangles

@@ -11,11 +11,18 @@ namespace ch26 {
 // [mesh-pipeline]
 // A graphics pipeline whose geometry stages are a task and a mesh shader:
 // no vertex input state and no input assembly state (the mesh shader
-// makes the primitives); the rest is as for any pipeline.
+// makes the primitives); the rest is as for any pipeline. The mesh shader's
+// workgroup size is its specialization constant 0.
 inline vkt::Pipeline create_mesh_pipeline(VkDevice device, VkPipelineLayout layout,
                                           VkShaderModule task, VkShaderModule mesh,
-                                          VkShaderModule fragment, VkFormat colour_format,
-                                          VkFormat depth_format) {
+                                          uint32_t mesh_workgroup, VkShaderModule fragment,
+                                          VkFormat colour_format, VkFormat depth_format) {
+    const VkSpecializationMapEntry workgroup_entry{
+        .constantID = 0, .offset = 0, .size = sizeof(uint32_t)};
+    const VkSpecializationInfo workgroup{.mapEntryCount = 1,
+                                         .pMapEntries = &workgroup_entry,
+                                         .dataSize = sizeof(uint32_t),
+                                         .pData = &mesh_workgroup};
     const VkPipelineShaderStageCreateInfo stages[] = {
         {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
          .stage = VK_SHADER_STAGE_TASK_BIT_EXT,
@@ -24,7 +31,8 @@ inline vkt::Pipeline create_mesh_pipeline(VkDevice device, VkPipelineLayout layo
         {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
          .stage = VK_SHADER_STAGE_MESH_BIT_EXT,
          .module = mesh,
-         .pName = "main"},
+         .pName = "main",
+         .pSpecializationInfo = &workgroup},
         {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
          .stage = VK_SHADER_STAGE_FRAGMENT_BIT,
          .module = fragment,

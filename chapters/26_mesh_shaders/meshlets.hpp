@@ -17,10 +17,11 @@
 
 namespace ch26 {
 
-// What meshlets.mesh declares (max_vertices, max_primitives, local_size_x)
-// and meshlets.task's workgroup size: the shaders' numbers, which
+// What meshlets.mesh declares (max_vertices, max_primitives, and the default
+// of its workgroup size, which the pipeline may change: mesh_limits.hpp) and
+// meshlets.task's workgroup size: the shaders' numbers, which
 // tests/unit/test_meshlets.cpp reads back from the compiled SPIR-V.
-constexpr uint32_t kMeshVertices = 64, kMeshTriangles = 124, kTaskGroup = 32;
+constexpr uint32_t kMeshVertices = 64, kMeshTriangles = 124, kMeshWorkgroup = 32, kTaskGroup = 32;
 
 // [meshlet]
 // One meshlet as the shaders read it (std430: 48 bytes, vec3 + float pairs).

@@ -137,25 +137,38 @@ inline std::vector<uint32_t> execution_mode(const std::vector<uint32_t>& words, 
 
 // The workgroup size: LocalSize's three numbers, or, as glslang writes it for
 // SPIR-V 1.4 and later, OpExecutionModeId (331) LocalSizeId (38) naming three
-// OpConstant (43) ids, whose values are looked up.
-inline std::vector<uint32_t> local_size(const std::vector<uint32_t>& words) {
-    if (auto sizes = execution_mode(words, mode_local_size); !sizes.empty()) return sizes;
-    constexpr uint32_t op_execution_mode_id = 331, mode_local_size_id = 38, op_constant = 43;
+// constant ids: OpConstant (43), or OpSpecConstant (50) whose value is the
+// default that a pipeline may replace. spec_ids gets, for each of x, y, z,
+// the specialization constant's id (decoration SpecId, 1) or -1.
+inline std::vector<uint32_t> local_size(const std::vector<uint32_t>& words,
+                                        std::vector<int>* spec_ids = nullptr) {
+    if (auto sizes = execution_mode(words, mode_local_size); !sizes.empty()) {
+        if (spec_ids) spec_ids->assign(3, -1);
+        return sizes;
+    }
+    constexpr uint32_t op_execution_mode_id = 331, mode_local_size_id = 38, op_constant = 43,
+                       op_spec_constant = 50, decoration_spec_id = 1;
     std::map<uint32_t, uint32_t> constants;  // result id -> value (32-bit constants)
+    std::map<uint32_t, int> spec_id_of;      // result id -> SpecId
     std::vector<uint32_t> ids;
     for (size_t i = 5; i < words.size();) {
         const uint32_t length = words[i] >> 16, opcode = words[i] & 0xffffu;
         if (length == 0 || i + length > words.size())
             throw std::runtime_error("malformed SPIR-V instruction");
-        if (opcode == op_constant && length == 4) constants[words[i + 2]] = words[i + 3];
+        if ((opcode == op_constant || opcode == op_spec_constant) && length == 4)
+            constants[words[i + 2]] = words[i + 3];
+        if (opcode == op_decorate && length == 4 && words[i + 2] == decoration_spec_id)
+            spec_id_of[words[i + 1]] = int(words[i + 3]);
         if (opcode == op_execution_mode_id && length == 6 && words[i + 2] == mode_local_size_id)
             ids.assign(words.begin() + long(i) + 3, words.begin() + long(i) + 6);
         i += length;
     }
     std::vector<uint32_t> sizes;
+    if (spec_ids) spec_ids->clear();
     for (uint32_t id : ids) {
-        if (!constants.count(id)) throw std::runtime_error("LocalSizeId names no OpConstant");
+        if (!constants.count(id)) throw std::runtime_error("LocalSizeId names no constant");
         sizes.push_back(constants[id]);
+        if (spec_ids) spec_ids->push_back(spec_id_of.count(id) ? spec_id_of[id] : -1);
     }
     return sizes;
 }

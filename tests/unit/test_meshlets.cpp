@@ -231,7 +231,12 @@ TEST_CASE("the mesh and task shaders declare the limits the C++ builds meshlets 
           std::vector<uint32_t>{ch26::kMeshVertices});
     CHECK(spirv::execution_mode(mesh_spirv, spirv::mode_output_primitives) ==
           std::vector<uint32_t>{ch26::kMeshTriangles});
-    CHECK(spirv::local_size(mesh_spirv) == std::vector<uint32_t>{ch26::kTaskGroup, 1, 1});
+    // The mesh workgroup's x is specialization constant 0 (the pipeline sets
+    // it: mesh_limits.hpp), kMeshWorkgroup unless it does.
+    std::vector<int> spec_ids;
+    CHECK(spirv::local_size(mesh_spirv, &spec_ids) ==
+          std::vector<uint32_t>{ch26::kMeshWorkgroup, 1, 1});
+    CHECK(spec_ids == std::vector<int>{0, -1, -1});
     const auto task = spirv::read(dir + "meshlets.task.spv");
     CHECK(spirv::local_size(task) == std::vector<uint32_t>{ch26::kTaskGroup, 1, 1});
     // And the builder keeps to them: no meshlet of the knot goes past either.
