@@ -30,9 +30,33 @@ std::string chunk_type_name(uint32_t type) {
     return printable(text, 16);
 }
 
+// Calls visit(i, c) for each character of `json` outside its strings (the
+// quotes and escapes included in the strings), until visit returns false.
+// JSON allows no raw line break inside a string, so every one is seen.
+template <class Visit>
+void for_each_outside_strings(std::string_view json, Visit visit) {
+    bool in_string = false, escaped = false;
+    for (size_t i = 0; i < json.size(); ++i) {
+        const char c = json[i];
+        if (in_string) {
+            if (escaped)
+                escaped = false;
+            else if (c == '\\')
+                escaped = true;
+            else if (c == '"')
+                in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (!visit(i, c)) {
+            return;
+        }
+    }
+}
+
 // A structural reader of JSON, enough to find the root's members and an
 // array's elements; it trusts the syntax (tinygltf's parser judges that) and
-// never recurses: skip_value counts brackets in a loop.
+// never recurses: skip_value counts brackets in a loop, outside the strings
+// that for_each_outside_strings steps over (the one place that knows them).
 struct Reader {
     std::string_view text;
     size_t at = 0;
@@ -58,35 +82,30 @@ struct Reader {
         if (done()) return std::nullopt;
         return text.substr(start, at++ - start);
     }
-    // Moves past one value of any kind; false where the text ends first.
+    // Moves past one value of any kind; false where the text ends first. A
+    // scalar ends before the space, comma or bracket after it; an array or
+    // object after its closing bracket.
     bool skip_value() {
         skip_space();
         if (done()) return false;
         if (text[at] == '"') return raw_string().has_value();
         size_t depth = 0;
-        bool in_string = false;
-        for (; !done(); ++at) {
-            const char c = text[at];
-            if (in_string) {
-                if (c == '\\')
-                    ++at;
-                else if (c == '"')
-                    in_string = false;
-            } else if (c == '"') {
-                in_string = true;
-            } else if (c == '[' || c == '{') {
+        std::optional<size_t> end;  // from `at`
+        for_each_outside_strings(text.substr(at), [&](size_t i, char c) {
+            if (c == '[' || c == '{') {
                 ++depth;
             } else if (c == ']' || c == '}' || c == ',') {
-                if (depth == 0) return true;  // the end of a scalar
-                if (c != ',' && --depth == 0) {
-                    ++at;
-                    return true;
-                }
+                if (depth == 0)
+                    end = i;  // the end of a scalar
+                else if (c != ',' && --depth == 0)
+                    end = i + 1;
             } else if (depth == 0 && (c == ' ' || c == '\n' || c == '\r' || c == '\t')) {
-                return true;
+                end = i;
             }
-        }
-        return depth == 0;
+            return !end;
+        });
+        at = end ? at + *end : text.size();
+        return end || depth == 0;
     }
     // Finds member `name` of the object starting here; `at` on its value.
     bool find_member(std::string_view name) {
@@ -155,29 +174,6 @@ std::string unescape(std::string_view raw) {
         }
     }
     return out;
-}
-
-// Calls visit(i, c) for each character of `json` outside its strings (the
-// quotes and escapes included in the strings), until visit returns false.
-// JSON allows no raw line break inside a string, so every one is seen.
-template <class Visit>
-void for_each_outside_strings(std::string_view json, Visit visit) {
-    bool in_string = false, escaped = false;
-    for (size_t i = 0; i < json.size(); ++i) {
-        const char c = json[i];
-        if (in_string) {
-            if (escaped)
-                escaped = false;
-            else if (c == '\\')
-                escaped = true;
-            else if (c == '"')
-                in_string = false;
-        } else if (c == '"') {
-            in_string = true;
-        } else if (!visit(i, c)) {
-            return;
-        }
-    }
 }
 
 }  // namespace
