@@ -35,7 +35,8 @@ public:
         : path_(std::move(path)), budget_(max_memory), materials_(materials) {}
 
     GltfScene load() {
-        model_ = gltf_detail::parse_gltf_file(path_, budget_);
+        model_ = gltf_detail::parse_gltf_file(path_, budget_,
+                                              [this](const std::string& what) { warn(what); });
         check_extensions();
         gltf_detail::load_materials(model_, path_, data_, budget_, materials_, scene_,
                                     [this](const std::string& what) { warn(what); });

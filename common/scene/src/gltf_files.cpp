@@ -7,13 +7,13 @@
 //     name (tinygltf alone would read "../../../etc/passwd");
 //   - only regular files, of 1 GiB at most (vkt::read_file): tinygltf alone
 //     asks a directory for its size and allocates 2^63 bytes, which is what
-//     the image URI "%!QAAAQAAA5" of tinygltf's issue 416 leads to;
+//     the image URI "%!QAAAQAAA5" of syoyo/tinygltf#416 leads to;
 //   - the first refusal is the error, naming the model and the URI, even
 //     where tinygltf would only have warned (it does for images).
 //
 // Data URIs are not files. tinygltf would decode those it knows (base64
 // buffers and PNG, JPEG, BMP, GIF images) from a copy of a copy of the
-// JSON's string: a 50 MB data: URI cost 388 MB at the peak (issue 25). So
+// JSON's string, about eight times the URI at the peak (388 MB for 50 MB). So
 // in a .gltf the loader decodes them itself, once, straight from the file's
 // bytes, and hands tinygltf a JSON whose data: URIs are replaced by the
 // names "vkt-data-uri-N", which the callbacks below answer with the decoded
@@ -164,7 +164,7 @@ bool file_size(size_t* size, std::string* err, const std::string& path, void* us
 // tinygltf 2.9 %-decodes each URI through this callback. Decoded as tinygltf
 // would, then held to the same rules as a file name before anything else
 // sees it: tinygltf 2.9 on its own cuts a URI at a NUL byte (the "%!Q" of its
-// issue 416 decodes to one) and skips the image with only a warning; 2.7
+// syoyo/tinygltf#416 decodes to one) and skips the image with only a warning; 2.7
 // handed the decoded name to FileExists, where the same check refused it.
 bool decode_uri(const std::string& uri, std::string* out, void* user) {
     auto* access = static_cast<FileAccess*>(user);
@@ -306,7 +306,8 @@ void use_fs_callbacks(tinygltf::TinyGLTF& gltf, const tinygltf::FsCallbacks& cal
 #endif
 }
 
-tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget& budget) {
+tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget& budget,
+                                const std::function<void(const std::string&)>& warn) {
     auto fail = [&](const std::string& what) { throw Error(path.string() + ": " + what); };
     // "cannot open FILE", directories, 1 GiB: before anything is charged.
     budget.charge(readable_file_size(path), path.string() + ": the file itself");
@@ -376,6 +377,12 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget&
     // Even where tinygltf only warned (it does for images), a refusal fails.
     if (!ok || !access.refusal.empty())
         fail(explain_load_failure({err, access.refusal}, model, file));
+    for (std::string_view rest = warn_text; !rest.empty();) {
+        const size_t end = rest.find('\n');
+        if (const std::string_view line = rest.substr(0, end); !line.empty())
+            warn("tinygltf: " + std::string(line));
+        rest.remove_prefix(end == std::string_view::npos ? rest.size() : end + 1);
+    }
     // A data: URI decoded here is a data: URI again (without its text, which
     // no one reads): gltf.cpp tells an image's file from its data by it.
     for (size_t n = 0; n < decoded_uris.size(); ++n) {

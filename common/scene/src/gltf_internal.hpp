@@ -39,7 +39,10 @@ namespace vkt::gltf_detail {
 // data: URI that does not decode. Every large allocation it makes is
 // charged to `budget` first (the file, its JSON as parsed, each data: URI
 // decoded, each file a URI names), and refused by it past the limit.
-tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget& budget);
+// tinygltf's own warnings (a value of the wrong type it ignored, say) go to
+// `warn`, a line each.
+tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget& budget,
+                                const std::function<void(const std::string&)>& warn);
 
 // What a JSON value may cost once parsed, at most: nlohmann::json's 16 bytes,
 // its place in an array or an object's tree, and tinygltf's own Value, into
