@@ -163,7 +163,7 @@ bool file_size(size_t* size, std::string* err, const std::string& path, void* us
 #if VKT_TINYGLTF_URI_CALLBACKS
 // tinygltf 2.9 %-decodes each URI through this callback. Decoded as tinygltf
 // would, then held to the same rules as a file name before anything else
-// sees it: tinygltf 2.9 on its own cuts a URI at a NUL byte (the "%!Q" of its
+// sees it: tinygltf 2.9 on its own cuts a URI at a NUL byte (the "%!Q" of
 // syoyo/tinygltf#416 decodes to one) and skips the image with only a warning; 2.7
 // handed the decoded name to FileExists, where the same check refused it.
 bool decode_uri(const std::string& uri, std::string* out, void* user) {
