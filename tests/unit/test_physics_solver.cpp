@@ -197,8 +197,7 @@ TEST_CASE("a slow spin ends: the box falls asleep once its corners stop", "[phys
     // body also rests only while it stays within 2 mm of its anchor: the
     // corners must first slow to about 2 mm in 0.5 s (0.0051 rad/s), which
     // the damping's e^(-0.2 t) reaches after ln(0.06 / 0.0051) / 0.2 = 12.3 s.
-    // (A spin over 0.05 rad/s once kept it awake forever; one under it once
-    // slept at once, still turning.)
+    // Judged by speed alone, it would sleep at once, still turning.
     Settings settings;
     settings.gravity = glm::vec3(0.0f);
     World world(settings);
