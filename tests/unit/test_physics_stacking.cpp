@@ -1,7 +1,7 @@
 // vkt/domains/physics.hpp (chapter 14), the solver's promises: a pyramid and
 // a tall tower stand still, a box dropped on a corner ends on a face, a box on
-// a ramp stays or slides as Coulomb's law says, and sleeping islands wake
-// when touched.
+// a ramp stays or slides as Coulomb's law says, sleeping islands wake when
+// touched, and an island sleeps only once its bodies have stopped moving.
 #include "vkt/domains/physics_scene.hpp"
 
 #include <catch2/catch_approx.hpp>
@@ -50,6 +50,29 @@ World floor_world(bool sleeping) {
     World world(settings);
     world.add_box({0, -0.5f, 0}, {20, 0.5f, 20}, 0.0f);  // the floor: top face at y = 0
     return world;
+}
+
+// Chapter 14's tower's boxes (0.6 x 0.5 x 0.6 m), each `lean` further along
+// x than the one below. By statics it tips when lean > 0.03 m: the load on
+// box k - 1, the 20 - k boxes above it, is centred lean (21 - k) / 2 beyond
+// its centre, which must stay within its half width of 0.3 m (worst: k = 1).
+constexpr int kSteps = 20;
+
+void add_staircase(World& world, float lean) {
+    for (int k = 0; k < kSteps; ++k)
+        world.add_box({lean * float(k), 0.25f + 0.5f * float(k), 0}, {0.3f, 0.25f, 0.3f}, 500.0f);
+}
+
+// The largest distance any corner of `now` is from the same corner of `then`.
+float corner_moved(const Body& now, const Body& then) {
+    float most = 0.0f;
+    const glm::mat3 r1 = rotation(now), r0 = rotation(then);
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 sign(c & 1 ? 1.0f : -1.0f, c & 2 ? 1.0f : -1.0f, c & 4 ? 1.0f : -1.0f);
+        const glm::vec3 local = sign * now.half_extents;
+        most = std::max(most, glm::length(now.position + r1 * local - then.position - r0 * local));
+    }
+    return most;
 }
 
 }  // namespace
@@ -179,4 +202,45 @@ TEST_CASE("resting islands fall asleep and wake when touched", "[physics]") {
     CHECK(world.awake_count() == 0);
     CHECK(world.bodies()[5].position.y == Approx(3.5f).margin(0.002f));
     CHECK(glm::length(world.bodies()[3].position - before.position) < 0.001f);
+}
+
+TEST_CASE("an island sleeps only when every body stayed put for the last 0.5 s", "[physics]") {
+    // Scenes that rest, sway, or fall: staircases at 17% to 93% of their
+    // tipping lean, and 300 boxes falling into heaps. Whenever a body falls
+    // asleep, each of its corners must be within 6 mm of where it was 60
+    // steps (0.5 s) before (three times the 2 mm a resting body may stray
+    // from its anchor: physics_sleep.hpp): an island asleep mid-swing fails.
+    struct Scene {
+        float lean;  // 0: the falling boxes
+        int seconds;
+    };
+    for (const Scene scene : {Scene{0.005f, 12}, Scene{0.0175f, 12}, Scene{0.024f, 12},
+                              Scene{0.028f, 12}, Scene{0.0f, 10}}) {
+        INFO("lean " << scene.lean << " m");
+        World world = floor_world(true);
+        if (scene.lean > 0.0f)
+            add_staircase(world, scene.lean);
+        else
+            add_falling_boxes(world, 300);
+        constexpr int kWindow = 60;
+        std::vector<std::vector<Body>> history;  // the last kWindow steps, oldest first
+        float worst = 0.0f;
+        int slept = 0;
+        for (int i = 0; i < 120 * scene.seconds; ++i) {
+            history.emplace_back(world.bodies().begin(), world.bodies().end());
+            if (history.size() > kWindow + 1) history.erase(history.begin());
+            world.step();
+            if (history.size() <= kWindow) continue;
+            for (std::size_t k = 0; k < world.bodies().size(); ++k) {
+                const Body& now = world.bodies()[k];
+                if (now.is_static() || now.awake || !history.back()[k].awake) continue;
+                ++slept;  // fell asleep this step
+                worst = std::max(worst, corner_moved(now, history[1][k]));
+            }
+        }
+        INFO(slept << " bodies fell asleep; the furthest had moved " << worst * 1000.0f
+                   << " mm in its last 0.5 s");
+        CHECK(worst < 0.006f);
+        if (scene.lean == 0.0f) CHECK(world.awake_count() == 0);  // the heaps do sleep
+    }
 }

@@ -17,12 +17,32 @@ uint32_t Islands::update(std::span<Body> bodies, std::span<const Manifold> manif
                          const SleepSettings& s, float dt) {
     if (!s.enabled) return 0;
     const auto n = uint32_t(bodies.size());
-    for (Body& body : bodies) {
+    anchors_.resize(n);
+    for (uint32_t i = 0; i < n; ++i) {
+        Body& body = bodies[i];
         if (!body.is_active()) continue;
-        // Judged by speed, not spin: a slowly turning big box moves its
-        // corners as fast as a quickly turning small one.
-        const float spin = glm::length(body.angular_velocity) * glm::length(body.half_extents);
-        const bool resting = std::max(glm::length(body.velocity), spin) < s.speed;
+        // Judged by the fastest point, not by spin alone: a slowly turning
+        // big box moves its corners as fast as a quickly turning small one.
+        const float reach = glm::length(body.half_extents);
+        bool resting =
+            glm::length(body.velocity) + glm::length(body.angular_velocity) * reach < s.speed;
+        // And by how far it has got from its anchor, the pose it had when its
+        // rest began, taken again every `time` seconds while it rests: no
+        // point of the box is further from where it was than the centre's
+        // move plus the turn's chord, 2 sin(angle / 2) = 2 |the turn's vector
+        // part|, times the half diagonal. Within `distance` of the anchor,
+        // the anchor within `distance` of the one before: in any `time`
+        // seconds of rest, no point moves more than 3 x `distance`.
+        Anchor& anchor = anchors_[i];
+        if (resting && body.sleep_time > 0.0f) {
+            const glm::quat turn = body.orientation * glm::conjugate(anchor.pose.orientation);
+            const float moved = glm::length(body.position - anchor.pose.position) +
+                                2.0f * glm::length(glm::vec3(turn.x, turn.y, turn.z)) * reach;
+            resting = moved <= s.distance;
+        }
+        anchor.age = resting && body.sleep_time > 0.0f ? anchor.age + dt : 0.0f;
+        if (anchor.age == 0.0f || anchor.age >= s.time)
+            anchor = {{body.position, body.orientation}, 0.0f};
         body.sleep_time = resting ? body.sleep_time + dt : 0.0f;
     }
     // Union-find over the contacts between moving bodies. The lower root

@@ -1,5 +1,6 @@
 #include "vkt/domains/physics.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 namespace vkt::physics {
@@ -81,13 +82,14 @@ void World::narrow_phase() {
             for (; old != previous_.end() && Pair{old->a, old->b} < pair; ++old)
                 if (asleep(*old)) manifolds_.push_back(*old);
             // Speculative contacts: the margin grows with how far the two
-            // can close on each other this step, so a fast box finds the
-            // plate it would otherwise pass through before it gets there.
+            // can close on each other this step, up to the speculative
+            // distance (a gap wider than that is left to the next step, or
+            // to the time of impact).
             const float closing = glm::length(bodies_[pair.b].velocity - bodies_[pair.a].velocity);
+            const float reach =
+                std::min(closing * settings_.time_step, settings_.speculative_distance);
             Manifold m;
-            if (!collide(boxes_[pair.a], boxes_[pair.b],
-                         settings_.margin + closing * settings_.time_step, m))
-                continue;
+            if (!collide(boxes_[pair.a], boxes_[pair.b], settings_.margin + reach, m)) continue;
             m.a = pair.a;
             m.b = pair.b;
             if (old != previous_.end() && old->a == pair.a && old->b == pair.b)
@@ -109,6 +111,48 @@ void World::narrow_phase() {
 }
 // [/narrow-phase]
 
+// [continuous]
+// Box2D's rule for "fast": a body that moved more than half its smallest half
+// extent this step might have passed through something thin. Each such body
+// is swept from its pose before the solver to its pose after it, against
+// every static box near its path; it stops at the first time of impact (its
+// velocity kept: next step's contact, found at the margin, stops it).
+void World::continuous() {
+    statics_.clear();
+    for (uint32_t i = 0; i < uint32_t(bodies_.size()); ++i)
+        if (bodies_[i].is_static()) statics_.push_back(i);
+    for (uint32_t i = 0; i < uint32_t(bodies_.size()); ++i) {
+        Body& body = bodies_[i];
+        if (!body.is_active()) continue;
+        const Pose& from = starts_[i];
+        const glm::quat turn = body.orientation * glm::conjugate(from.orientation);
+        const float moved =
+            glm::length(body.position - from.position) +
+            2.0f * glm::length(glm::vec3(turn.x, turn.y, turn.z)) * glm::length(body.half_extents);
+        const float smallest =
+            std::min({body.half_extents.x, body.half_extents.y, body.half_extents.z});
+        if (moved <= 0.5f * smallest) continue;
+        const Pose to{body.position, body.orientation};
+        // The path's bounds: the box's AABB at each end, joined.
+        const OrientedBox end = oriented_box(body);
+        const Aabb a0 = aabbs_[i];
+        const Aabb a1 = world_aabb(end.centre, end.rotation, end.half_extents, settings_.margin);
+        const Aabb path{glm::min(a0.low, a1.low), glm::max(a0.high, a1.high)};
+        float first = 1.0f;
+        for (uint32_t j : statics_)
+            if (overlaps(path, aabbs_[j]))
+                first = std::min(first, time_of_impact(boxes_[j], body.half_extents, from, to,
+                                                       settings_.margin));
+        if (first < 1.0f) {
+            body.position = glm::mix(from.position, to.position, first);
+            const glm::quat q1 = glm::dot(from.orientation, to.orientation) < 0.0f ? -to.orientation
+                                                                                   : to.orientation;
+            body.orientation = glm::normalize((1.0f - first) * from.orientation + first * q1);
+        }
+    }
+}
+// [/continuous]
+
 // [step]
 void World::step() {
     using clock = std::chrono::steady_clock;
@@ -128,7 +172,8 @@ void World::step() {
     aabbs_.resize(n);
     for (uint32_t i = 0; i < n; ++i) {
         boxes_[i] = oriented_box(bodies_[i]);
-        const float reach = s.margin + glm::length(bodies_[i].velocity) * dt;
+        const float reach =
+            s.margin + std::min(glm::length(bodies_[i].velocity) * dt, s.speculative_distance);
         aabbs_[i] = world_aabb(boxes_[i].centre, boxes_[i].rotation, boxes_[i].half_extents, reach);
     }
     find_pairs();
@@ -140,10 +185,15 @@ void World::step() {
     const auto narrow_done = clock::now();
 
     // 4. The sub-steps: gravity, soft contacts, moving, relaxing; then bounces.
+    starts_.resize(n);
+    for (uint32_t i = 0; i < n; ++i) starts_[i] = {bodies_[i].position, bodies_[i].orientation};
     solver_.step(bodies_, manifolds_, s.solver, dt, s.gravity);
     const auto solver_done = clock::now();
 
-    // 5. Islands at rest fall asleep.
+    // 5. Fast bodies stop where they first meet a static body.
+    continuous();
+
+    // 6. Islands at rest fall asleep.
     islands_.update(bodies_, manifolds_, s.sleep, dt);
     const auto done = clock::now();
 

@@ -7,7 +7,8 @@
 //   3. narrow phase: SAT and clipping, feature ids    (physics_collision.hpp)
 //   4. sub-steps: gravity, soft contacts, moving,     (physics_solver.hpp)
 //      relaxing; then restitution
-//   5. islands that fall asleep                       (physics_sleep.hpp)
+//   5. fast bodies: time of impact with static ones   (physics_collision.hpp)
+//   6. islands that fall asleep                       (physics_sleep.hpp)
 //
 // Plain C++ and glm: no Vulkan here. The same inputs give bit-equal results
 // (no threads, no unordered containers, every ordering broken by index).
@@ -31,10 +32,16 @@ struct Settings {
     glm::vec3 gravity{0.0f, -9.81f, 0.0f};
     // Boxes closer than this make contacts (with a negative depth: a gap the
     // solver lets close), so a resting box keeps its contacts even where
-    // rounding lifts it a hair off the box below. Each pair's margin grows by
-    // how far the two could close on each other in one step (speculative
-    // contacts: a fast box meets a thin plate instead of passing it).
+    // rounding lifts it a hair off the box below.
     float margin = 0.005f;
+    // Speculative contacts: each pair's margin grows by how far the two could
+    // close on each other in one step, but by no more than this (Box2D's
+    // 2 cm): a box that will land this step is caught where it touches, and
+    // a fast box passing by is not stopped by a gap it would never close.
+    // A faster box is moved back to where it first comes within the margin
+    // of a static box (a time-of-impact pass after the solver), so that it
+    // meets a thin plate instead of passing it.
+    float speculative_distance = 0.02f;
     BroadPhase broad_phase = BroadPhase::sweep_and_prune;
     SolverSettings solver;
     SleepSettings sleep;
@@ -42,7 +49,8 @@ struct Settings {
 
 // Where the last step's time went, in milliseconds.
 struct StepTimes {
-    // solver: with moving the bodies; other: the velocity step and sleeping.
+    // solver: with moving the bodies; other: the velocity step, the time of
+    // impact of fast bodies, and sleeping.
     double broad = 0, narrow = 0, solver = 0, other = 0;
     double total() const { return broad + narrow + solver + other; }
 };
@@ -76,6 +84,7 @@ public:
 private:
     void find_pairs();
     void narrow_phase();
+    void continuous();
 
     Settings settings_;
     std::vector<Body> bodies_;
@@ -86,6 +95,8 @@ private:
     std::vector<Manifold> manifolds_;  // this step's, sorted by pair
     std::vector<Manifold> previous_;   // last step's: the warm start
     std::vector<uint32_t> to_wake_;
+    std::vector<Pose> starts_;       // each body's pose before the solver moved it
+    std::vector<uint32_t> statics_;  // the static bodies' indices
     Solver solver_;
     Islands islands_;
     StepTimes times_;

@@ -67,6 +67,21 @@ AxisQuery find_contact_axis(const OrientedBox& a, const OrientedBox& b, float ma
 // for the caller).
 bool collide(const OrientedBox& a, const OrientedBox& b, float margin, Manifold& out);
 
+// Where a body is and how it is turned, at one moment.
+struct Pose {
+    glm::vec3 position{0.0f};
+    glm::quat orientation{1.0f, 0.0f, 0.0f, 0.0f};
+};
+
+// Continuous collision: a box of half extents `half` moves from `from` to
+// `to` in one step (its centre along a line, its turn blended between the
+// two). Returns the first fraction of the move, in [0, 1), at which the gap
+// between it and the box `fixed` (as the separating axes measure it) has
+// closed to `target`; 1 if it never does, or if the gap is already that
+// small at the start (the ordinary contacts have that case).
+float time_of_impact(const OrientedBox& fixed, glm::vec3 half, const Pose& from, const Pose& to,
+                     float target);
+
 // Feature ids, for the tests: a face contact's id holds the reference face
 // (0..5: +x, -x, +y, -y, +z, -z of that box), the incident face, whether the
 // reference face is b's, and which two of the 8 lines (the incident face's 4

@@ -18,14 +18,19 @@
 
 namespace vkt::physics {
 
+// [sleep-settings]
 struct SleepSettings {
     bool enabled = true;
-    // m/s: a body rests while its centre and its corners move slower than
-    // this (a corner's speed from spin is at most |w| times the half diagonal,
-    // so a big box must turn more slowly than a small one to rest).
+    // m/s: a body rests while |v| + |w| r is below this, r its half diagonal:
+    // no point of it moves faster (Box2D's measure).
     float speed = 0.05f;
+    // metres: and while no point of it has moved further than this from
+    // where it was when its rest began (Jolt's idea). Slow is not still: a
+    // stack swaying slowly is slow for half a second at each end of its swing.
+    float distance = 0.002f;
     float time = 0.5f;  // seconds an island's every body must rest before it sleeps
 };
+// [/sleep-settings]
 
 class Islands {
 public:
@@ -44,6 +49,11 @@ private:
     uint32_t find(uint32_t i);
     std::vector<uint32_t> parent_;  // union-find: each island's root is its lowest index
     std::vector<float> rested_;     // per root: the shortest rest of any of its bodies
+    struct Anchor {
+        Pose pose;         // where the body was when its rest began (or `time` ago)
+        float age = 0.0f;  // seconds since
+    };
+    std::vector<Anchor> anchors_;  // per body
 };
 
 }  // namespace vkt::physics

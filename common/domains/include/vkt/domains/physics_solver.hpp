@@ -25,7 +25,7 @@ struct SolverSettings {
     int substeps = 4;                    // sub-steps per step: gravity, solve, move, relax
     int iterations = 2;                  // soft passes over every point per sub-step
     int relax_iterations = 1;            // passes without the spring, after moving
-    float contact_hertz = 120.0f;        // the spring, Hz (x2 on static; at most sub-step rate / 4)
+    float contact_hertz = 120.0f;        // the spring, Hz (x2 on static; both <= sub-step rate / 4)
     float damping_ratio = 10.0f;         // far past critical (1): the spring never rings
     float push_speed = 3.0f;             // m/s: the spring pushes overlap apart no faster
     float restitution = 0.2f;            // 0: no bounce, 1: elastic
@@ -73,7 +73,7 @@ private:
     struct Contact {
         uint32_t a, b, first, count;
         glm::vec3 normal, tangent[2];
-        bool static_other;  // one side cannot move: a stiffer spring
+        bool static_other;  // one side cannot move: a stiffer spring, under the same cap
         Manifold* source;
     };
     // The soft constraint for one sub-step h: how much of the overlap to
