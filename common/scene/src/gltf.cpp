@@ -19,6 +19,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <ranges>
 #include <span>
 #include <unordered_set>
 
@@ -297,8 +298,8 @@ private:
             stack.pop_back();
             const glm::mat4 world = visit(at.index, at.parent);
             const std::vector<int>& children = model_.nodes[size_t(at.index)].children;
-            for (auto child = children.rbegin(); child != children.rend(); ++child)
-                stack.push_back({*child, world});
+            // Pushed last to first, so that the first child is visited first.
+            for (int child : std::views::reverse(children)) stack.push_back({child, world});
         }
     }
 
