@@ -12,8 +12,18 @@
 # in the bottom corners is its grey 0x59 (linear 0.349, the instance colour
 # is UNORM) lit from above: Lambert n . l = 1 / |(0.4, 1, 0.3)| = 0.894,
 # ambient 0.25 + 0.75 x 0.894 = 0.921, so linear 0.321, stored (154, 154, 154).
+#
+# The tower, standing where it was built: the middle of the +x and +z faces of
+# its boxes 4 and 16, projected through the chapter's camera, and the colour
+# box_colour gives them lit by the shader's light (+x: 0.25 + 0.75 x 0.358,
+# +z: 0.25 + 0.75 x 0.268), worked out from the scene, the camera and the
+# shader alone by python3 tests/chapters/14_tower_pixels.py. Each lands in a
+# 3x3 block of one colour; a tower that sank half a box, leaned or fell, or a
+# face lit with the wrong normal, moves or changes them.
+set(VKT_14_TOWER 40,94,61,133,133 37,94,57,125,125 30,46,146,130,58 26,46,137,121,54)
 set(VKT_14_ARGS --warmup 10 --scene stacks)
-set(VKT_14_PIXEL PIXEL 0,0,149,179,211 319,0,149,179,211 5,230,154,154,154 300,225,154,154,154)
+set(VKT_14_PIXEL PIXEL 0,0,149,179,211 319,0,149,179,211 5,230,154,154,154 300,225,154,154,154
+  ${VKT_14_TOWER})
 vkt_chapter_test(chapter.14_physics 14_physics GOLDEN BLESS ${VKT_14_PIXEL} ARGS ${headless} ${VKT_14_ARGS}
   EXPECT "14_physics: 1000 boxes and the stacks, sort-and-sweep, 120 steps/s, 1200 warm-up steps, [0-9]+ contact points, 0 awake")
 vkt_chapter_test(chapter.14_physics.offscreen 14_physics SAME_AS chapter.14_physics ARGS ${offscreen} ${VKT_14_ARGS})
