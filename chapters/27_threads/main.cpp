@@ -86,13 +86,14 @@ std::vector<Object> make_objects(uint32_t grid) {
     for (uint32_t i = 0; i < grid * grid; ++i) {
         const uint32_t h = hash(i), g = hash(h);
         const float size = 0.6f + 0.4f * float(h % 1000) / 1000.0f;
-        objects.push_back({{2.0f * float(i % grid) + 1.0f - half, 0.5f * size,
-                            2.0f * float(i / grid) + 1.0f - half},
-                           size,
-                           Shape(1 + (h >> 10) % (shape_count - 1)),
-                           palette[(g >> 4) % 6],
-                           float((g >> 8) % 628) / 100.0f,
-                           0.5f + float((h >> 20) % 100) / 100.0f});
+        const uint32_t column = i % grid, row = i / grid;  // whole numbers
+        objects.push_back(
+            {{2.0f * float(column) + 1.0f - half, 0.5f * size, 2.0f * float(row) + 1.0f - half},
+             size,
+             Shape(1 + (h >> 10) % (shape_count - 1)),
+             palette[(g >> 4) % 6],
+             float((g >> 8) % 628) / 100.0f,
+             0.5f + float((h >> 20) % 100) / 100.0f});
     }
     return objects;
 }
@@ -290,7 +291,7 @@ public:
             .pDepthAttachment = &depth,
         };
         vkCmdBeginRendering(frame.cmd, &rendering);
-        vkCmdExecuteCommands(frame.cmd, threads, &secondaries_[frame.slot * threads]);
+        vkCmdExecuteCommands(frame.cmd, threads, &secondaries_[size_t(frame.slot) * threads]);
         vkCmdEndRendering(frame.cmd);
         // [/execute]
     }
@@ -301,8 +302,8 @@ private:
     // objects (read only), the frame (read only) and its own Push on its stack.
     void record_share(const vkt::Frame& frame, const glm::mat4& view_projection, uint32_t t) {
         const uint32_t threads = workers_.count();
-        VkCommandBuffer cmd = secondaries_[frame.slot * threads + t];
-        VKT_CHECK(vkResetCommandPool(device_, pools_[frame.slot * threads + t], 0));
+        VkCommandBuffer cmd = secondaries_[size_t(frame.slot) * threads + t];
+        VKT_CHECK(vkResetCommandPool(device_, pools_[size_t(frame.slot) * threads + t], 0));
         // What the secondary draws into, which it cannot see: the formats of
         // the rendering it will run inside (they must match it exactly).
         const VkCommandBufferInheritanceRenderingInfo inherit_rendering{

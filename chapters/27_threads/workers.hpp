@@ -23,7 +23,8 @@ namespace ch27 {
 // [workers]
 class Workers {
 public:
-    explicit Workers(uint32_t count) : errors_(count) {
+    explicit Workers(uint32_t count) {
+        errors_.resize(count);
         for (uint32_t i = 1; i < count; ++i) threads_.emplace_back([this, i] { work(i); });
     }
     ~Workers() {
