@@ -172,4 +172,7 @@ if [ -x "$bin/24_ray_queries" ] && device_offers VK_KHR_ray_query; then
 fi
 [ -x "$bin/25_ray_tracing" ] && sweep 25_ray_tracing benchmarks/25_ray_tracing.sh "$bin" 1280x720 300 5
 [ -x "$bin/26_mesh_shaders" ] && sweep 26_mesh_shaders benchmarks/26_mesh_shaders.sh "$bin"
+# Chapter 27: recording on 1 to 16 threads (the GPU machine has 16 cores),
+# then start-up with a cold and a warm pipeline cache.
+[ -x "$bin/27_threads" ] && THREADS="1 2 4 8 16" sweep 27_threads benchmarks/27_threads.sh "$bin"
 exit $status

@@ -84,6 +84,8 @@ SEARCH_QUERIES = (
     ("buffer device address", "15_bindless.html", r"buffer-device-address"),
     ("vertex pulling", "19_ndim_gpu.html", r"no-vertex-input-pulling"),
     ("glTF", "10_gltf.html", r"what-is-in-a-gltf-file"),
+    ("secondary command buffer", "27_threads.html", r"a-secondary-command-buffer-inside-dynamic-rendering"),
+    ("pipeline cache", "27_threads.html", r"a-pipeline-cache-on-disk"),
 )
 
 

@@ -130,7 +130,7 @@ Pipeline create_graphics_pipeline(VkDevice device, const GraphicsPipelineDesc& d
         .layout = desc.layout,
     };
     VkPipeline pipeline;
-    VKT_CHECK(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+    VKT_CHECK(vkCreateGraphicsPipelines(device, desc.cache, 1, &info, nullptr, &pipeline));
     return Pipeline(device, pipeline);
 }
 

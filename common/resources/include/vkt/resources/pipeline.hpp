@@ -1,9 +1,10 @@
 #pragma once
 // A graphics pipeline in one call: the tidy form of chapter 04's pipeline,
 // with chapter 05's vertex input, chapter 06's push constants, chapter 08's
-// depth test, chapter 21's multisampling and chapter 22's depth bias as
-// options. Later chapters name only what differs from
-// the defaults; a chapter that teaches a pipeline setting writes it out itself.
+// depth test, chapter 21's multisampling, chapter 22's depth bias and
+// chapter 27's pipeline cache as options. Later chapters name only what
+// differs from the defaults; a chapter that teaches a pipeline setting writes
+// it out itself.
 
 #include "vkt/core/owned.hpp"
 
@@ -47,6 +48,9 @@ struct GraphicsPipelineDesc {
     float min_sample_shading = 0.0f;
     const VkSpecializationInfo* vertex_specialization = nullptr;
     const VkSpecializationInfo* fragment_specialization = nullptr;
+    // Chapter 27: a pipeline cache to look the compiled shaders up in and add
+    // them to (none: every pipeline is compiled from scratch).
+    VkPipelineCache cache = VK_NULL_HANDLE;
 };
 
 // Viewport and scissor are dynamic state (set them each frame).
