@@ -42,6 +42,11 @@
 //   nan_position.gltf,       a quad (two triangles) with one corner's POSITION, or
 //   nan_normal.gltf          its NORMAL, NaN: drawn with exit 0, half the quad
 //                            missing, or lit black in 23
+//   mesh_2_32.gltf           a node whose "mesh" is 4294967296: tinygltf narrowed
+//                            it to 0 and mesh 0 was drawn (exit 0)
+//   mesh_negative.gltf       "mesh": -2147483649, reported as mesh 2147483647
+//   base_color_2.gltf        a baseColorFactor of 2 numbers: tinygltf dropped the
+//                            whole pbrMetallicRoughness block without a word
 //   instances_200.gltf       200 of them: within the limit on vertices drawn, but
 //                            26's flattened copy needs 9 GiB
 //
@@ -401,6 +406,14 @@ int main(int argc, char** argv) {
         write(out / "instances_200.gltf", many_instances(200, 300000));
         write(out / "nan_position.gltf", nan_quad(true));
         write(out / "nan_normal.gltf", nan_quad(false));
+        write(out / "mesh_2_32.gltf", triangle_with(R"([{"mesh": 4294967296}])"));
+        write(out / "mesh_negative.gltf", triangle_with(R"([{"mesh": -2147483649}])"));
+        std::string base_color_2 = triangle_with(
+            R"([{"mesh": 0}])",
+            R"(, "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [1, 0.5]}}])");
+        base_color_2.replace(base_color_2.find(R"("indices": 1)"), 12,
+                             R"("indices": 1, "material": 0)");
+        write(out / "base_color_2.gltf", base_color_2);
         if (argc == 2) {
             write(out / "huge_claim.png", png_claiming(16384, 16384));
             write(out / "huge_claim.gltf", textured_triangle("huge_claim.png"));

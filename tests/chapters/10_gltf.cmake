@@ -239,3 +239,19 @@ vkt_chapter_test(bad_input.10_gltf.nan_normal 10_gltf EXIT 1
   EXPECT "10_gltf: error: .*nan_normal.gltf: mesh 0 primitive 0 NORMAL: accessor 1: element 2, component 2, is NaN, not a finite number")
 set_tests_properties(bad_input.10_gltf.nan_position bad_input.10_gltf.nan_normal
   PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+# What tinygltf read wrong without a word, checked in the JSON it parsed
+# (common/scene/src/gltf_values.cpp). Before: "mesh": 4294967296 was narrowed
+# to 0 and mesh 0 drawn (exit 0); -2147483649 was reported as mesh
+# 2147483647; a baseColorFactor of 2 numbers made tinygltf drop the whole
+# pbrMetallicRoughness block and the triangle was drawn white (exit 0).
+vkt_chapter_test(bad_input.10_gltf.mesh_2_32 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/mesh_2_32.gltf
+  EXPECT "10_gltf: error: .*mesh_2_32.gltf: node 0: \"mesh\" is 4294967296, which is no index: glTF's are whole numbers from 0 to 2147483647")
+vkt_chapter_test(bad_input.10_gltf.mesh_negative 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/mesh_negative.gltf
+  EXPECT "10_gltf: error: .*mesh_negative.gltf: node 0: \"mesh\" is -2147483649, which is no index")
+vkt_chapter_test(bad_input.10_gltf.base_color_2 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/base_color_2.gltf
+  EXPECT "10_gltf: error: .*base_color_2.gltf: material 0 pbrMetallicRoughness: \"baseColorFactor\" has 2 numbers, not 4 \\(tinygltf would drop the whole pbrMetallicRoughness block, its textures too, without a word\\)")
+set_tests_properties(bad_input.10_gltf.mesh_2_32 bad_input.10_gltf.mesh_negative
+  bad_input.10_gltf.base_color_2 PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)

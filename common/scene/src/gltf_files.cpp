@@ -376,6 +376,9 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget&
     // Even where tinygltf only warned (it does for images), a refusal fails.
     if (!ok || !access.refusal.empty())
         fail(explain_load_failure({err, access.refusal}, model, file));
+    // What tinygltf read without a word: indices past an int, factors' lengths.
+    if (const std::optional<std::string> wrong = check_json_values(gltf_json_text(file)))
+        fail(*wrong);
     // A data: URI decoded here is a data: URI again (without its text, which
     // no one reads): gltf.cpp tells an image's file from its data by it.
     for (size_t n = 0; n < decoded_uris.size(); ++n) {
