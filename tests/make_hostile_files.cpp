@@ -50,6 +50,10 @@
 //   palette_index.png        a 2 x 2 palette PNG of one colour whose pixels use
 //                            index 5: libpng's complaint was silenced as a
 //                            warning and the pixels were drawn black (exit 0)
+//   materials_1e6.gltf       a million empty materials (3 MB): tinygltf's objects
+//                            for them took 2 GiB before anything was charged
+//   positions_2_24.gltf      POSITION of 2^24 zeros (no bufferView), not indexed:
+//                            the index list made for it was not charged
 //   instances_200.gltf       200 of them: within the limit on vertices drawn, but
 //                            26's flattened copy needs 9 GiB
 //
@@ -446,6 +450,11 @@ int main(int argc, char** argv) {
                              R"("indices": 1, "material": 0)");
         write(out / "base_color_2.gltf", base_color_2);
         write(out / "palette_index.png", png_palette_index_past_end());
+        write(out / "materials_1e6.gltf", many_materials(1000000));
+        write(out / "positions_2_24.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+  "accessors": [{"componentType": 5126, "count": 16777216, "type": "VEC3"}]}
+)");
         if (argc == 2) {
             write(out / "huge_claim.png", png_claiming(16384, 16384));
             write(out / "huge_claim.gltf", textured_triangle("huge_claim.png"));

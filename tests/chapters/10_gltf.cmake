@@ -255,3 +255,12 @@ vkt_chapter_test(bad_input.10_gltf.base_color_2 10_gltf EXIT 1
   EXPECT "10_gltf: error: .*base_color_2.gltf: material 0 pbrMetallicRoughness: \"baseColorFactor\" has 2 numbers, not 4 \\(tinygltf would drop the whole pbrMetallicRoughness block, its textures too, without a word\\)")
 set_tests_properties(bad_input.10_gltf.mesh_2_32 bad_input.10_gltf.mesh_negative
   bad_input.10_gltf.base_color_2 PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+# The budget charges what is really allocated. POSITION of 2^24 zeros (no
+# bufferView), not indexed, with --max-memory 200M: its floats (192 MiB) fit,
+# the index list made for it (64 MiB) does not. Before, that list and the
+# triangle list copied from it were not charged (with 2^27 and 1600M: a
+# 2,716 MB peak), and the refusal came later, at "its vertices and indices".
+vkt_chapter_test(bad_input.10_gltf.generated_indices 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/positions_2_24.gltf --max-memory 200M
+  EXPECT "10_gltf: error: .*positions_2_24.gltf: mesh 0 primitive 0: its index list, generated: needs 64 MiB, which would bring what this file needs to [0-9]+ MiB, past the limit of 200 MiB \\(--max-memory\\)")
+set_tests_properties(bad_input.10_gltf.generated_indices PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)

@@ -333,6 +333,28 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget&
     budget.charge(
         values * json_value_bytes + 5 * uint64_t(json.size()),
         path.string() + ": its JSON, parsed (" + std::to_string(values) + " values at most)");
+    // tinygltf's own object for each element of the root's arrays, far
+    // larger than its JSON: "{}" in "materials" is a tinygltf::Material of
+    // 2,144 bytes (tinygltf 2.7), so 3 MB of them would take 2 GiB.
+    const std::pair<std::string_view, size_t> objects[] = {
+        {"materials", sizeof(tinygltf::Material)},
+        {"nodes", sizeof(tinygltf::Node)},
+        {"meshes", sizeof(tinygltf::Mesh)},
+        {"accessors", sizeof(tinygltf::Accessor)},
+        {"bufferViews", sizeof(tinygltf::BufferView)},
+        {"buffers", sizeof(tinygltf::Buffer)},
+        {"images", sizeof(tinygltf::Image)},
+        {"textures", sizeof(tinygltf::Texture)},
+        {"samplers", sizeof(tinygltf::Sampler)},
+        {"scenes", sizeof(tinygltf::Scene)},
+        {"animations", sizeof(tinygltf::Animation)},
+        {"skins", sizeof(tinygltf::Skin)},
+        {"cameras", sizeof(tinygltf::Camera)},
+        {"lights", sizeof(tinygltf::Light)}};
+    uint64_t object_bytes = 0;
+    for (const auto& [member, size] : objects)
+        object_bytes += uint64_t(json_array_size(json, member).value_or(0)) * size;
+    budget.charge(object_bytes, path.string() + ": its elements, as tinygltf's objects");
     // tinygltf copies a .glb's BIN chunk into its buffer.
     budget.charge(file.size() - json.size(), path.string() + ": its BIN chunk, copied");
     tinygltf::TinyGLTF gltf;
