@@ -97,3 +97,12 @@ vkt_chapter_test(bad_input.09_textures.palette_index 09_textures EXIT 1
   ARGS --headless --frames 1 --texture ${VKT_HOSTILE_DIR}/palette_index.png
   EXPECT "09_textures: error: .*palette_index.png: cannot decode image: pixel \\(1, 0\\) is palette index 5, past the end of its palette of 1 colours")
 set_tests_properties(bad_input.09_textures.palette_index PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+# 1 GiB of NULs as a texture, with --max-memory 512M: refused from its first
+# bytes as not a PNG or JPEG. Before: its size was charged first (the budget's
+# refusal); with the default budget it was read whole (8 s, a 1.1 GB peak).
+if(VKT_TRUNCATE)
+  vkt_chapter_test(bad_input.09_textures.nuls_1g 09_textures EXIT 1
+    ARGS --headless --frames 1 --texture ${VKT_HOSTILE_DIR}/nuls_1g.png --max-memory 512M
+    EXPECT "09_textures: error: .*nuls_1g.png: cannot decode image: not a PNG or JPEG file")
+  set_tests_properties(bad_input.09_textures.nuls_1g PROPERTIES FIXTURES_REQUIRED vkt_nuls)
+endif()

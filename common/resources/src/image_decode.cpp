@@ -406,8 +406,12 @@ RgbaImage load_image_file(const std::filesystem::path& path) {
 }
 
 RgbaImage load_image_file(const std::filesystem::path& path, MemoryBudget& budget) {
+    // Its first bytes say whether it is a PNG or a JPEG at all, before a
+    // file of up to 1 GiB is read whole.
+    const std::vector<char> start = read_file_start(path, 8);  // throws "cannot open FILE"
+    kind_of(std::span(reinterpret_cast<const uint8_t*>(start.data()), start.size()), path.string());
     budget.charge(readable_file_size(path), path.string());  // the file's bytes, read
-    std::vector<char> file = read_file(path);                // throws "cannot open FILE"
+    std::vector<char> file = read_file(path);
     return decode_image(std::span(reinterpret_cast<const uint8_t*>(file.data()), file.size()),
                         path.string(), budget);
 }

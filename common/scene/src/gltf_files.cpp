@@ -309,6 +309,20 @@ void use_fs_callbacks(tinygltf::TinyGLTF& gltf, const tinygltf::FsCallbacks& cal
 tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget& budget) {
     auto fail = [&](const std::string& what) { throw Error(path.string() + ": " + what); };
     // "cannot open FILE", directories, 1 GiB: before anything is charged.
+    // Its first bytes say whether it is glTF at all (a .glb's magic, or the
+    // first character of JSON after white space), before it is read whole:
+    // a gigabyte of NULs is refused at once, not after 20 s of reading.
+    const std::vector<char> start = read_file_start(path, 4096);
+    if (start.empty()) fail("not a glTF file: it is empty");
+    const std::string_view head(start.data(), start.size());
+    const size_t first =
+        head.find_first_not_of(" \t\r\n", head.starts_with("\xEF\xBB\xBF") ? 3 : 0);
+    if (!head.starts_with("glTF") && first != std::string_view::npos &&
+        std::string_view("{[\"-0123456789tfn").find(head[first]) == std::string_view::npos)
+        fail(
+            "not a glTF file: a .gltf is a JSON object, beginning with '{', and this begins "
+            "with \"" +
+            printable(head.substr(first, 12), 12) + "\"");
     budget.charge(readable_file_size(path), path.string() + ": the file itself");
     std::vector<char> file = read_file(path);
     if (file.empty()) fail("not a glTF file: it is empty");
