@@ -54,6 +54,8 @@
 //                            for them took 2 GiB before anything was charged
 //   positions_2_24.gltf      POSITION of 2^24 zeros (no bufferView), not indexed:
 //                            the index list made for it was not charged
+//   indices_no_view.gltf     the triangle's index accessor without a bufferView:
+//                            tinygltf's refusal was blamed on "node 0"
 //   instances_200.gltf       200 of them: within the limit on vertices drawn, but
 //                            26's flattened copy needs 9 GiB
 //
@@ -451,6 +453,10 @@ int main(int argc, char** argv) {
         write(out / "base_color_2.gltf", base_color_2);
         write(out / "palette_index.png", png_palette_index_past_end());
         write(out / "materials_1e6.gltf", many_materials(1000000));
+        std::string no_view = triangle_with(R"([{"mesh": 0}])");
+        const std::string view_1 = R"({"bufferView": 1, "componentType": 5123)";
+        no_view.replace(no_view.find(view_1), view_1.size(), R"({"componentType": 5123)");
+        write(out / "indices_no_view.gltf", no_view);
         write(out / "positions_2_24.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 0}],
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
   "accessors": [{"componentType": 5126, "count": 16777216, "type": "VEC3"}]}

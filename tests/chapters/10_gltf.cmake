@@ -273,3 +273,15 @@ if(VKT_TRUNCATE)
     EXPECT "10_gltf: error: .*nuls_1g.gltf: not a glTF file: a .gltf is a JSON object, beginning with '\\{', and this begins with \"%00%00%00%00")
   set_tests_properties(bad_input.10_gltf.nuls_1g PROPERTIES FIXTURES_REQUIRED vkt_nuls)
 endif()
+# Messages in the FILE: ELEMENT: WHY form. An index accessor without a
+# bufferView: tinygltf refuses it while reading the mesh, and the refusal
+# was blamed on "node 0" ("node 0: tinygltf refuses it: accessor[1] invalid
+# bufferView"); the accessor is at fault, and is named.
+vkt_chapter_test(bad_input.10_gltf.indices_no_view 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/indices_no_view.gltf
+  EXPECT "10_gltf: error: .*indices_no_view.gltf: accessor 1: it is a primitive's \"indices\", and has no bufferView \\(or one that does not exist\\): glTF requires one for indices")
+set_tests_properties(bad_input.10_gltf.indices_no_view PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+# --model with an empty value: "needs a value", as every other flag says
+# (it said "wants a value").
+vkt_chapter_test(bad_input.10_gltf.model_empty 10_gltf EXIT 2 ARGS --model=
+  EXPECT "10_gltf: --model needs a value")
