@@ -42,11 +42,25 @@
 //   nan_position.gltf,       a quad (two triangles) with one corner's POSITION, or
 //   nan_normal.gltf          its NORMAL, NaN: drawn with exit 0, half the quad
 //                            missing, or lit black in 23
+//   mesh_2_32.gltf           a node whose "mesh" is 4294967296: tinygltf narrowed
+//                            it to 0 and mesh 0 was drawn (exit 0)
+//   mesh_negative.gltf       "mesh": -2147483649, reported as mesh 2147483647
+//   base_color_2.gltf        a baseColorFactor of 2 numbers: tinygltf dropped the
+//                            whole pbrMetallicRoughness block without a word
+//   palette_index.png        a 2 x 2 palette PNG of one colour whose pixels use
+//                            index 5: libpng's complaint was silenced as a
+//                            warning and the pixels were drawn black (exit 0)
+//   materials_1e6.gltf       a million empty materials (3 MB): tinygltf's objects
+//                            for them took 2 GiB before anything was charged
+//   positions_2_24.gltf      POSITION of 2^24 zeros (no bufferView), not indexed:
+//                            the index list made for it was not charged
+//   indices_no_view.gltf     the triangle's index accessor without a bufferView:
+//                            tinygltf's refusal was blamed on "node 0"
 //   instances_200.gltf       200 of them: within the limit on vertices drawn, but
 //                            26's flattened copy needs 9 GiB
 //
-//   vkt_make_hostile_files OUT_DIR [gltf]   (gltf: only the .gltf and .glb files that
-//                                            need no other file, for the fuzzer's
+//   vkt_make_hostile_files OUT_DIR [gltf]   (gltf: only the files that need no
+//                                            other file, for the fuzzers'
 //                                            regressions)
 
 #include <algorithm>
@@ -380,6 +394,34 @@ std::string nan_quad(bool nan_position) {
 )";
 }
 
+uint32_t adler32(const Bytes& data) {
+    uint32_t a = 1, b = 0;
+    for (uint8_t byte : data) {
+        a = (a + byte) % 65521;
+        b = (b + a) % 65521;
+    }
+    return b << 16 | a;
+}
+
+// A 2 x 2, 8-bit palette PNG with one colour (red) whose pixels are all
+// index 5, its rows in one stored (uncompressed) deflate block.
+Bytes png_palette_index_past_end() {
+    Bytes png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    Bytes ihdr;
+    put_u32_big(ihdr, 2);
+    put_u32_big(ihdr, 2);
+    ihdr.insert(ihdr.end(), {8, 3, 0, 0, 0});  // 8 bits, palette
+    png_chunk(png, "IHDR", ihdr);
+    png_chunk(png, "PLTE", {0xFF, 0x00, 0x00});
+    const Bytes rows = {0, 5, 5, 0, 5, 5};  // each row: filter 0, two indices
+    Bytes idat = {0x78, 0x01, 0x01, uint8_t(rows.size()), 0, uint8_t(~rows.size()), 0xFF};
+    idat.insert(idat.end(), rows.begin(), rows.end());
+    put_u32_big(idat, adler32(rows));
+    png_chunk(png, "IDAT", idat);
+    png_chunk(png, "IEND", {});
+    return png;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -401,6 +443,24 @@ int main(int argc, char** argv) {
         write(out / "instances_200.gltf", many_instances(200, 300000));
         write(out / "nan_position.gltf", nan_quad(true));
         write(out / "nan_normal.gltf", nan_quad(false));
+        write(out / "mesh_2_32.gltf", triangle_with(R"([{"mesh": 4294967296}])"));
+        write(out / "mesh_negative.gltf", triangle_with(R"([{"mesh": -2147483649}])"));
+        std::string base_color_2 = triangle_with(
+            R"([{"mesh": 0}])",
+            R"(, "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [1, 0.5]}}])");
+        base_color_2.replace(base_color_2.find(R"("indices": 1)"), 12,
+                             R"("indices": 1, "material": 0)");
+        write(out / "base_color_2.gltf", base_color_2);
+        write(out / "palette_index.png", png_palette_index_past_end());
+        write(out / "materials_1e6.gltf", many_materials(1000000));
+        std::string no_view = triangle_with(R"([{"mesh": 0}])");
+        const std::string view_1 = R"({"bufferView": 1, "componentType": 5123)";
+        no_view.replace(no_view.find(view_1), view_1.size(), R"({"componentType": 5123)");
+        write(out / "indices_no_view.gltf", no_view);
+        write(out / "positions_2_24.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+  "accessors": [{"componentType": 5126, "count": 16777216, "type": "VEC3"}]}
+)");
         if (argc == 2) {
             write(out / "huge_claim.png", png_claiming(16384, 16384));
             write(out / "huge_claim.gltf", textured_triangle("huge_claim.png"));

@@ -30,16 +30,14 @@ namespace {
 // [load]
 // Decoding is not Vulkan's business: vkt::decode_image hands PNG to libpng
 // and JPEG to libjpeg-turbo, and asks both for 8-bit RGBA whatever the file
-// holds (alpha 255 where it has none). The file itself is read by
-// vkt::read_file, which names it when it is missing, a directory or past 1 GiB.
-// The budget (--max-memory) is judged from the file's size and the image's
+// holds (alpha 255 where it has none). vkt::load_image_file reads the file's
+// first bytes (a PNG's or a JPEG's signature, or a refusal) before the whole
+// of it, and names it when it is missing, a directory or past 1 GiB. The
+// budget (--max-memory) is judged from the file's size and the image's
 // header, before a pixel is decoded: what the pixels will cost decoded,
 // staged and on the GPU with their mips.
 vkt::RgbaImage load_texture(const std::filesystem::path& path, vkt::MemoryBudget& budget) {
-    budget.charge(vkt::readable_file_size(path), path.string());
-    const std::vector<char> file = vkt::read_file(path);
-    return vkt::decode_image(std::span(reinterpret_cast<const uint8_t*>(file.data()), file.size()),
-                             path.string(), budget);
+    return vkt::load_image_file(path, budget);
 }
 // [/load]
 

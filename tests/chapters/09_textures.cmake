@@ -88,3 +88,21 @@ add_test(NAME ${test} COMMAND vkt_chapter_check --exe $<TARGET_FILE:09_textures>
   --expect "anisotropic filtering off" -- ${headless} --anisotropy 1)
 set_tests_properties(${test} PROPERTIES ENVIRONMENT "VK_DRIVER_FILES=${VKT_LAVAPIPE_ICD}"
   LABELS "chapter;bless")
+
+# Issue 39: a palette PNG whose pixels use index 5 of a palette of 1 colour
+# (tests/make_hostile_files.cpp). Before: exit 0, drawn black (libpng's
+# expansion looks nothing up and says nothing); the indices are now looked
+# up by the decoder, each checked.
+vkt_chapter_test(bad_input.09_textures.palette_index 09_textures EXIT 1
+  ARGS --headless --frames 1 --texture ${VKT_HOSTILE_DIR}/palette_index.png
+  EXPECT "09_textures: error: .*palette_index.png: cannot decode image: pixel \\(1, 0\\) is palette index 5, past the end of its palette of 1 colours")
+set_tests_properties(bad_input.09_textures.palette_index PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+# 1 GiB of NULs as a texture, with --max-memory 512M: refused from its first
+# bytes as not a PNG or JPEG. Before: its size was charged first (the budget's
+# refusal); with the default budget it was read whole (8 s, a 1.1 GB peak).
+if(VKT_TRUNCATE)
+  vkt_chapter_test(bad_input.09_textures.nuls_1g 09_textures EXIT 1
+    ARGS --headless --frames 1 --texture ${VKT_HOSTILE_DIR}/nuls_1g.png --max-memory 512M
+    EXPECT "09_textures: error: .*nuls_1g.png: cannot decode image: not a PNG or JPEG file")
+  set_tests_properties(bad_input.09_textures.nuls_1g PROPERTIES FIXTURES_REQUIRED vkt_nuls)
+endif()

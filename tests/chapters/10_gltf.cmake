@@ -239,3 +239,49 @@ vkt_chapter_test(bad_input.10_gltf.nan_normal 10_gltf EXIT 1
   EXPECT "10_gltf: error: .*nan_normal.gltf: mesh 0 primitive 0 NORMAL: accessor 1: element 2, component 2, is NaN, not a finite number")
 set_tests_properties(bad_input.10_gltf.nan_position bad_input.10_gltf.nan_normal
   PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+# What tinygltf read wrong without a word, checked in the JSON it parsed
+# (common/scene/src/gltf_values.cpp). Before: "mesh": 4294967296 was narrowed
+# to 0 and mesh 0 drawn (exit 0); -2147483649 was reported as mesh
+# 2147483647; a baseColorFactor of 2 numbers made tinygltf drop the whole
+# pbrMetallicRoughness block and the triangle was drawn white (exit 0).
+vkt_chapter_test(bad_input.10_gltf.mesh_2_32 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/mesh_2_32.gltf
+  EXPECT "10_gltf: error: .*mesh_2_32.gltf: node 0: \"mesh\" is 4294967296, which is no index: glTF's are whole numbers from 0 to 2147483647")
+vkt_chapter_test(bad_input.10_gltf.mesh_negative 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/mesh_negative.gltf
+  EXPECT "10_gltf: error: .*mesh_negative.gltf: node 0: \"mesh\" is -2147483649, which is no index")
+vkt_chapter_test(bad_input.10_gltf.base_color_2 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/base_color_2.gltf
+  EXPECT "10_gltf: error: .*base_color_2.gltf: material 0 pbrMetallicRoughness: \"baseColorFactor\" has 2 numbers, not 4 \\(tinygltf would drop the whole pbrMetallicRoughness block, its textures too, without a word\\)")
+set_tests_properties(bad_input.10_gltf.mesh_2_32 bad_input.10_gltf.mesh_negative
+  bad_input.10_gltf.base_color_2 PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+# The budget charges what is really allocated. POSITION of 2^24 zeros (no
+# bufferView), not indexed, with --max-memory 200M: its floats (192 MiB) fit,
+# the index list made for it (64 MiB) does not. Before, that list and the
+# triangle list copied from it were not charged (with 2^27 and 1600M: a
+# 2,716 MB peak), and the refusal came later, at "its vertices and indices".
+vkt_chapter_test(bad_input.10_gltf.generated_indices 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/positions_2_24.gltf --max-memory 200M
+  EXPECT "10_gltf: error: .*positions_2_24.gltf: mesh 0 primitive 0: its index list, generated: needs 64 MiB, which would bring what this file needs to [0-9]+ MiB, past the limit of 200 MiB \\(--max-memory\\)")
+set_tests_properties(bad_input.10_gltf.generated_indices PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+# 1 GiB of NULs as a model: refused from its first bytes, in a fraction of a
+# second. Before: read whole (11 s, a 1.1 GB peak), then refused for what its
+# JSON "values" would cost.
+if(VKT_TRUNCATE)
+  vkt_chapter_test(bad_input.10_gltf.nuls_1g 10_gltf EXIT 1
+    ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/nuls_1g.gltf
+    EXPECT "10_gltf: error: .*nuls_1g.gltf: not a glTF file: a .gltf is a JSON object, beginning with '\\{', and this begins with \"%00%00%00%00")
+  set_tests_properties(bad_input.10_gltf.nuls_1g PROPERTIES FIXTURES_REQUIRED vkt_nuls)
+endif()
+# Messages in the FILE: ELEMENT: WHY form. An index accessor without a
+# bufferView: tinygltf refuses it while reading the mesh, and the refusal
+# was blamed on "node 0" ("node 0: tinygltf refuses it: accessor[1] invalid
+# bufferView"); the accessor is at fault, and is named.
+vkt_chapter_test(bad_input.10_gltf.indices_no_view 10_gltf EXIT 1
+  ARGS ${vkt_10_run} --model ${VKT_HOSTILE_DIR}/indices_no_view.gltf
+  EXPECT "10_gltf: error: .*indices_no_view.gltf: accessor 1: it is a primitive's \"indices\", and has no bufferView \\(or one that does not exist\\): glTF requires one for indices")
+set_tests_properties(bad_input.10_gltf.indices_no_view PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+# --model with an empty value: "needs a value", as every other flag says
+# (it said "wants a value").
+vkt_chapter_test(bad_input.10_gltf.model_empty 10_gltf EXIT 2 ARGS --model=
+  EXPECT "10_gltf: --model needs a value")

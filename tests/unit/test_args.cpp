@@ -192,7 +192,7 @@ TEST_CASE("a chapter's flags refuse bad values with a clear message", "[args][ch
     CHECK(message({"--exposure", "nan"}) == "--exposure wants a number from 0.25 to 4, not 'nan'");
     CHECK(message({"--view", "depth"}) == "--view wants one of lit, albedo, normal, not 'depth'");
     CHECK(message({"--model"}) == "--model needs a value");
-    CHECK(message({"--model="}) == "--model wants a value");
+    CHECK(message({"--model="}) == "--model needs a value");
     CHECK(message({"--count", "3"}) == "unknown argument '--count'");
 }
 

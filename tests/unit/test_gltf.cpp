@@ -232,8 +232,15 @@ TEST_CASE("gltf: sparse vertex attributes replace the elements they name", "[glt
     CHECK(scene.vertices[2].position == glm::vec3(0, 2, 0));
     CHECK(scene.bounds_max == glm::vec3(1, 2, 0));
     CHECK(scene.warnings.empty());
-    // Without a base view the other elements are zeros.
-    scene = vkt::load_gltf(write_file("sparse_zeros.gltf", file("-1", "1", "0")));
+    // Without a base view the other elements are zeros. (A view of -1 is no
+    // index: tinygltf would take it for none, glTF allows 0 and up.)
+    CHECK_THAT(error_of(write_file("sparse_minus_1.gltf", file("-1", "1", "0"))),
+               ContainsSubstring("sparse_minus_1.gltf: accessor 0: \"bufferView\" is -1, which "
+                                 "is no index: glTF's are whole numbers from 0 to 2147483647"));
+    scene = vkt::load_gltf(write_file(
+        "sparse_zeros.gltf",
+        fill(file("0", "1", "0"),
+             {{R"("bufferView": 0, "componentType": 5126)", R"("componentType": 5126)"}})));
     REQUIRE(scene.vertices.size() == 3);
     CHECK(scene.vertices[1].position == glm::vec3(0, 0, 0));
     CHECK(scene.vertices[2].position == glm::vec3(0, 2, 0));

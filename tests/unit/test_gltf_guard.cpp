@@ -262,3 +262,33 @@ TEST_CASE("gltf messages: what tinygltf refuses is named, in words of the file's
                                      "image: not a PNG or JPEG file"));
     }
 }
+
+TEST_CASE("gltf guard: indices past an int or negative and factors of the wrong length are refused",
+          "[gltf][guard]") {
+    using vkt::check_json_values;
+    CHECK_FALSE(
+        check_json_values(R"({"nodes": [{"mesh": 0, "children": [1]}, {"mesh": 2147483647}]})"));
+    CHECK(
+        check_json_values(R"({"nodes": [{"mesh": 4294967296}]})") ==
+        R"(node 0: "mesh" is 4294967296, which is no index: glTF's are whole numbers from 0 to 2147483647)");
+    CHECK(check_json_values(R"({"nodes": [{}, {"children": [0, -1]}]})")
+              .value_or("")
+              .starts_with(R"(node 1: "children" element 1 is -1, which is no index)"));
+    // A key spelt with escapes is the same key to the parser.
+    CHECK(check_json_values(R"({"nodes": [{"\u006desh": 2147483648}]})").has_value());
+    CHECK(check_json_values(
+              R"({"meshes": [{"primitives": [{"attributes": {"POSITION": 99999999999}}]}]})")
+              .value_or("")
+              .starts_with(R"(mesh 0 primitive 0 attributes: "POSITION" is 99999999999)"));
+    // An application's data may hold any number.
+    CHECK_FALSE(check_json_values(R"({"nodes": [{"extras": {"mesh": -5, "children": [1e30]}}]})"));
+    CHECK(check_json_values(R"({"materials": [{"emissiveFactor": [1, 1]}]})") ==
+          R"(material 0: "emissiveFactor" has 2 numbers, not 3)");
+    CHECK(
+        check_json_values(R"({"materials": [{"pbrMetallicRoughness": {"baseColorFactor": 1}}]})")
+            .value_or("")
+            .starts_with(
+                R"(material 0 pbrMetallicRoughness: "baseColorFactor" is not an array of 4 numbers)"));
+    CHECK_FALSE(check_json_values(
+        R"({"materials": [{"pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 1]}, "emissiveFactor": [0, 0, 0]}]})"));
+}

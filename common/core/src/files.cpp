@@ -2,6 +2,7 @@
 
 #include "vkt/core/check.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -74,6 +75,16 @@ std::vector<char> read_file(const std::filesystem::path& path) {
     std::ifstream file(path, std::ios::binary);
     if (!file) throw Error("cannot open " + path.string());
     std::vector<char> bytes(static_cast<size_t>(size));
+    if (!file.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
+        throw Error("cannot read " + path.string());
+    return bytes;
+}
+
+std::vector<char> read_file_start(const std::filesystem::path& path, size_t count) {
+    const uintmax_t size = readable_file_size(path);
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw Error("cannot open " + path.string());
+    std::vector<char> bytes(static_cast<size_t>(std::min<uintmax_t>(size, count)));
     if (!file.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
         throw Error("cannot read " + path.string());
     return bytes;

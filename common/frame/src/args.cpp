@@ -185,7 +185,7 @@ std::string check_option_value(const OptionSpec& spec, std::string_view text) {
         }
         case OptionType::text:
         default:
-            if (text.empty()) throw UsageError(spec.name + " wants a value");
+            if (text.empty()) throw UsageError(spec.name + " needs a value");
             return given;
     }
 }

@@ -108,25 +108,64 @@ bool png_plausible(const PngReader& r, size_t file_size) {
     return uint64_t(r.height) * row <= deflate_max_ratio * file_size;
 }
 
+// A palette PNG's rows, read as one index a byte at the start of each RGBA
+// row, become RGBA in place (from the right, so no index is overwritten
+// before it is read). libpng's own expansion draws an index past the palette
+// black without a word (libpng 1.6.39 reports nothing), so the indices are
+// looked up here, each checked.
+bool png_palette_to_rgba(PngReader& r) {
+    png_colorp palette = nullptr;
+    int colours = 0;
+    png_get_PLTE(r.png, r.info, &palette, &colours);
+    png_bytep alpha = nullptr;
+    int alphas = 0;
+    if (png_get_valid(r.png, r.info, PNG_INFO_tRNS))
+        png_get_tRNS(r.png, r.info, &alpha, &alphas, nullptr);
+    for (size_t y = 0; y < r.height; ++y) {
+        uint8_t* row = r.rows[y];
+        for (size_t x = r.width; x-- > 0;) {
+            const uint8_t index = row[x];
+            if (index >= colours) {
+                std::snprintf(r.error, sizeof r.error,
+                              "pixel (%zu, %zu) is palette index %d, past the end of its palette "
+                              "of %d colours",
+                              x, y, index, colours);
+                return false;
+            }
+            row[4 * x + 3] = index < alphas ? alpha[index] : 0xFF;
+            row[4 * x + 2] = palette[index].blue;
+            row[4 * x + 1] = palette[index].green;
+            row[4 * x] = palette[index].red;
+        }
+    }
+    return true;
+}
+
 // The pixels, every kind of PNG converted to 8-bit RGBA on the way.
 bool png_pixels(PngReader& r) {
     if (setjmp(png_jmpbuf(r.png))) return false;
-    png_set_expand(r.png);    // palette to RGB, grey below 8 bits to 8, tRNS to alpha
-    png_set_strip_16(r.png);  // 16-bit channels: their high byte
-    png_set_gray_to_rgb(r.png);
-    png_set_add_alpha(r.png, 0xff, PNG_FILLER_AFTER);  // opaque where there is no alpha
-    png_set_interlace_handling(r.png);                 // Adam7: libpng puts the passes together
+    const bool palette = png_get_color_type(r.png, r.info) == PNG_COLOR_TYPE_PALETTE;
+    if (palette) {
+        png_set_packing(r.png);  // one index a byte, looked up by png_palette_to_rgba
+    } else {
+        png_set_expand(r.png);    // grey below 8 bits to 8, tRNS to alpha
+        png_set_strip_16(r.png);  // 16-bit channels: their high byte
+        png_set_gray_to_rgb(r.png);
+        png_set_add_alpha(r.png, 0xff, PNG_FILLER_AFTER);  // opaque where there is no alpha
+    }
+    png_set_interlace_handling(r.png);  // Adam7: libpng puts the passes together
     png_read_update_info(r.png, r.info);
     // libpng writes each row blind: check that a row is what we allocate.
-    if (png_get_bit_depth(r.png, r.info) != 8 || png_get_channels(r.png, r.info) != 4 ||
-        png_get_rowbytes(r.png, r.info) != size_t(r.width) * 4)
-        png_error(r.png, "not 8-bit RGBA after conversion");
+    const int channels = palette ? 1 : 4;
+    if (png_get_bit_depth(r.png, r.info) != 8 || png_get_channels(r.png, r.info) != channels ||
+        png_get_rowbytes(r.png, r.info) != size_t(r.width) * size_t(channels))
+        png_error(r.png, "not 8-bit RGBA (or palette indices) after conversion");
     r.pixels.resize(size_t(r.width) * r.height * 4);
     r.rows.resize(r.height);
     for (size_t y = 0; y < r.height; ++y) r.rows[y] = r.pixels.data() + y * r.width * 4;
     png_read_image(r.png, r.rows.data());
     png_read_end(r.png, nullptr);  // the rest of the file, checksums included
-    return true;
+    return !palette || png_palette_to_rgba(r);
 }
 
 // --- JPEG: libjpeg-turbo ------------------------------------------------------
@@ -367,8 +406,12 @@ RgbaImage load_image_file(const std::filesystem::path& path) {
 }
 
 RgbaImage load_image_file(const std::filesystem::path& path, MemoryBudget& budget) {
+    // Its first bytes say whether it is a PNG or a JPEG at all, before a
+    // file of up to 1 GiB is read whole.
+    const std::vector<char> start = read_file_start(path, 8);  // throws "cannot open FILE"
+    kind_of(std::span(reinterpret_cast<const uint8_t*>(start.data()), start.size()), path.string());
     budget.charge(readable_file_size(path), path.string());  // the file's bytes, read
-    std::vector<char> file = read_file(path);                // throws "cannot open FILE"
+    std::vector<char> file = read_file(path);
     return decode_image(std::span(reinterpret_cast<const uint8_t*>(file.data()), file.size()),
                         path.string(), budget);
 }

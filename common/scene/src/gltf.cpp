@@ -175,9 +175,17 @@ private:
                          std::to_string(indices[i]) + ", past the end of the vertex data (" +
                          std::to_string(count) + " vertices)");
         } else {
+            budget_.charge(uint64_t(count) * sizeof(uint32_t),
+                           path_.string() + ": " + what + ": its index list, generated");
             indices.resize(count);  // non-indexed: 0, 1, 2, ...
             for (size_t i = 0; i < count; ++i) indices[i] = uint32_t(i);
         }
+        // The list is a copy: 3 indices a triangle (a strip's or a fan's n - 2).
+        const uint64_t listed = mode == TINYGLTF_MODE_TRIANGLES
+                                    ? indices.size() / 3 * 3
+                                    : 3 * uint64_t(std::max<size_t>(indices.size(), 2) - 2);
+        budget_.charge(listed * sizeof(uint32_t),
+                       path_.string() + ": " + what + ": its triangle list");
         indices = to_triangle_list(indices, mode);
         if (indices.empty()) {
             warn("a primitive with no whole triangle is skipped");

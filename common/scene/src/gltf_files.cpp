@@ -310,6 +310,20 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget&
                                 const std::function<void(const std::string&)>& warn) {
     auto fail = [&](const std::string& what) { throw Error(path.string() + ": " + what); };
     // "cannot open FILE", directories, 1 GiB: before anything is charged.
+    // Its first bytes say whether it is glTF at all (a .glb's magic, or the
+    // first character of JSON after white space), before it is read whole:
+    // a gigabyte of NULs is refused at once, not after 20 s of reading.
+    const std::vector<char> start = read_file_start(path, 4096);
+    if (start.empty()) fail("not a glTF file: it is empty");
+    const std::string_view head(start.data(), start.size());
+    const size_t first =
+        head.find_first_not_of(" \t\r\n", head.starts_with("\xEF\xBB\xBF") ? 3 : 0);
+    if (!head.starts_with("glTF") && first != std::string_view::npos &&
+        std::string_view("{[\"-0123456789tfn").find(head[first]) == std::string_view::npos)
+        fail(
+            "not a glTF file: a .gltf is a JSON object, beginning with '{', and this begins "
+            "with \"" +
+            printable(head.substr(first, 12), 12) + "\"");
     budget.charge(readable_file_size(path), path.string() + ": the file itself");
     std::vector<char> file = read_file(path);
     if (file.empty()) fail("not a glTF file: it is empty");
@@ -334,6 +348,28 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget&
     budget.charge(
         values * json_value_bytes + 5 * uint64_t(json.size()),
         path.string() + ": its JSON, parsed (" + std::to_string(values) + " values at most)");
+    // tinygltf's own object for each element of the root's arrays, far
+    // larger than its JSON: "{}" in "materials" is a tinygltf::Material of
+    // 2,144 bytes (tinygltf 2.7), so 3 MB of them would take 2 GiB.
+    const std::pair<std::string_view, size_t> objects[] = {
+        {"materials", sizeof(tinygltf::Material)},
+        {"nodes", sizeof(tinygltf::Node)},
+        {"meshes", sizeof(tinygltf::Mesh)},
+        {"accessors", sizeof(tinygltf::Accessor)},
+        {"bufferViews", sizeof(tinygltf::BufferView)},
+        {"buffers", sizeof(tinygltf::Buffer)},
+        {"images", sizeof(tinygltf::Image)},
+        {"textures", sizeof(tinygltf::Texture)},
+        {"samplers", sizeof(tinygltf::Sampler)},
+        {"scenes", sizeof(tinygltf::Scene)},
+        {"animations", sizeof(tinygltf::Animation)},
+        {"skins", sizeof(tinygltf::Skin)},
+        {"cameras", sizeof(tinygltf::Camera)},
+        {"lights", sizeof(tinygltf::Light)}};
+    uint64_t object_bytes = 0;
+    for (const auto& [member, size] : objects)
+        object_bytes += uint64_t(json_array_size(json, member).value_or(0)) * size;
+    budget.charge(object_bytes, path.string() + ": its elements, as tinygltf's objects");
     // tinygltf copies a .glb's BIN chunk into its buffer.
     budget.charge(file.size() - json.size(), path.string() + ": its BIN chunk, copied");
     tinygltf::TinyGLTF gltf;
@@ -377,6 +413,9 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget&
     // Even where tinygltf only warned (it does for images), a refusal fails.
     if (!ok || !access.refusal.empty())
         fail(explain_load_failure({err, access.refusal}, model, file));
+    // What tinygltf read without a word: indices past an int, factors' lengths.
+    if (const std::optional<std::string> wrong = check_json_values(gltf_json_text(file)))
+        fail(*wrong);
     for (std::string_view rest = warn_text; !rest.empty();) {
         const size_t end = rest.find('\n');
         if (const std::string_view line = rest.substr(0, end); !line.empty())

@@ -179,6 +179,12 @@ std::string explain_load_failure(const LoadFailure& failure, const tinygltf::Mod
     if (std::optional<std::string> data_uri = invalid_data_uri(
             err.substr(0, err.find('\n')), failed.empty() ? "a buffer or an image" : failed))
         return *data_uri;
+    // tinygltf checks an index accessor's view while it reads a mesh, and
+    // the element it was reading is not the one at fault: the accessor is.
+    if (const std::string n = between(line, "accessor[", "] invalid bufferView"); !n.empty())
+        return "accessor " + printable(n, 12) +
+               ": it is a primitive's \"indices\", and has no bufferView (or one that does not "
+               "exist): glTF requires one for indices";
     const std::string what = failed.empty() ? (glb ? ".glb" : "the model") : failed;
     if (const std::string fault = property_fault(line); !fault.empty()) return what + ": " + fault;
     if (line.empty())

@@ -36,6 +36,11 @@ std::vector<char> read_file(const std::filesystem::path& path);
 // same messages); nothing is read.
 uintmax_t readable_file_size(const std::filesystem::path& path);
 
+// The first `count` bytes of a file (fewer if it is shorter): what a loader
+// looks at before it reads a file whole, so that a gigabyte that is not a
+// model or an image is refused at once. Throws "cannot open FILE".
+std::vector<char> read_file_start(const std::filesystem::path& path, size_t count);
+
 // Where `uri`, a relative file name that a file in `folder` contains (a glTF
 // buffer or image), points: `folder / uri` with symbolic links and ".."
 // resolved, and only if that lies inside `folder`. A model downloaded from

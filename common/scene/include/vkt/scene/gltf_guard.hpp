@@ -94,4 +94,18 @@ size_t json_value_count(std::string_view json);
 // undone (\uXXXX is kept as written); empty where it has none.
 std::string json_element_name(std::string_view json, std::string_view member, size_t index);
 
+// What tinygltf reads wrong without a word, checked in the JSON it parsed
+// (gltf_values.cpp; "extras" and "extensions" are left alone):
+//   - an index (a node's "mesh", a scene's "nodes", an attribute's accessor,
+//     a texture's "source", ...) or another member tinygltf narrows to an
+//     int: 4294967296 became 0 and drew mesh 0; -2147483649 became
+//     2147483647. Each must be a whole number from 0 to 2^31 - 1;
+//   - a material's factors: a "baseColorFactor" of other than 4 numbers made
+//     tinygltf drop the whole pbrMetallicRoughness block, its texture too;
+//     "emissiveFactor" must hold 3.
+// nullopt where all is well; else "ELEMENT: WHY" ("node 0: \"mesh\" is
+// 4294967296, which is no index: ..."). Expects JSON that parsed, nested at
+// most gltf_max_json_depth deep.
+std::optional<std::string> check_json_values(std::string_view json);
+
 }  // namespace vkt
