@@ -241,9 +241,16 @@ std::vector<uint32_t> Accessors::read_indices(int index, const std::string& what
              "UNSIGNED_SHORT or UNSIGNED_INT)");
     if (a.count > (size_t(1) << 28))
         fail(name + ": count " + std::to_string(a.count) + " is too large");
+    // An accessor without a view reads as zeros, which glTF allows for
+    // attributes but not for indices (their view must be an
+    // ELEMENT_ARRAY_BUFFER). tinygltf 2.7 refuses it while it parses
+    // (gltf_messages.cpp words that alike); 2.9 lets it through to here.
+    if (a.bufferView < 0)
+        fail("accessor " + std::to_string(index) +
+             ": it is a primitive's \"indices\", and has no bufferView (or one that does not "
+             "exist): glTF requires one for indices");
     budget_.charge(uint64_t(a.count) * sizeof(uint32_t), path_.string() + ": " + name + ", read");
     std::vector<uint32_t> out(a.count, 0);
-    if (a.bufferView < 0) return out;
     const size_t size = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(ct)));
     std::span<const uint8_t> bytes = element_range(a, name, size);
     const size_t stride = stride_of(a, size);
