@@ -17,6 +17,11 @@ cannot drift from the code: `{{#number ../shaders/17_tiled_deferred/tiles.glsl:M
 shows "2,048" and fails the build unless that file defines MAX_TILE_LIGHTS as
 2048 (`*K` and `/K` after the name scale it, `NAME#N` picks its N-th definition;
 book/source_constants.py, which the diagrams use to read their numbers too).
+A colour a page quotes from a chapter's picture names the reviewed test picture
+and the pixel in the same way: `{{#pixel ../tests/golden/23_materials.png:0,239 (44, 39, 33)}}`
+shows "(44, 39, 33)" and fails unless that pixel is that colour. A frame is named
+by its index (`frame 9 (t = 0.15 s)`), never by its position ("the tenth frame"):
+the build fails on either slip, on the pages and in the diagrams' text.
 
 The build fails (exit status 1, one line per problem) when an included file or
 marker does not exist, when a marker in chapters/, common/ or shaders/ is
@@ -298,6 +303,10 @@ def expand_page(root: Path, book: Path, page: Page, sources: Sources, problems: 
         fence_match = FENCE_RE.match(line)
         if fence is None and NUMBER_START_RE.search(line):
             line = expand_numbers(root, book, line, f"{where}:{number}", problems)
+        if fence is None and PIXEL_START_RE.search(line):
+            line = expand_pixels(root, book, line, f"{where}:{number}", problems)
+        if fence is None:
+            problems.extend(frame_name_problems(line, f"{where}:{number}"))
         if fence is None:
             if fence_match:
                 fence, fence_indent, language = fence_match.group(2), fence_match.group(1), fence_match.group(3)
@@ -400,6 +409,72 @@ def expand_numbers(root: Path, book: Path, line: str, where: str, problems: list
                         "shown>}}', optionally NAME#N and *K or /K after the name)")
         line = NUMBER_START_RE.sub("{{number", line)
     return line
+
+
+# A colour a page quotes from a chapter's picture names the reviewed test picture
+# and the pixel: {{#pixel ../tests/golden/23_materials.png:0,239 (44, 39, 33)}} shows
+# "(44, 39, 33)" and fails the build unless that pixel of the golden image is that
+# colour, exactly: the golden image is what a run of the chapter wrote, so a page
+# cannot quote a hand-worked value as what the program writes.
+PIXEL_RE = re.compile(r"\{\{#pixel\s+([^\s:{}]+):([0-9]+),([0-9]+)\s+(\(\s*[0-9]+,\s*[0-9]+,\s*[0-9]+\s*\))\s*\}\}")
+PIXEL_START_RE = re.compile(r"\{\{#pixel\b")
+_pictures: dict[Path, list] = {}
+
+
+def expand_pixels(root: Path, book: Path, line: str, where: str, problems: list[str]) -> str:
+    """A line's {{#pixel picture.png:X,Y (R, G, B)}} directives replaced by the colour
+    shown, each checked against that pixel of the picture."""
+    def one(match: re.Match) -> str:
+        path_text, x, y, shown = match.groups()
+        target = book / path_text
+        if not inside_root(root, target) or not target.is_file():
+            problems.append(f"{where}: {{{{#pixel}}}} names {path_text}, which does not exist here")
+            return shown
+        if target not in _pictures:
+            sys.path.insert(0, str(Path(__file__).resolve().parent / "diagrams"))
+            from golden import read_png  # the diagrams' PNG reader, standard library only
+            try:
+                _pictures[target] = read_png(target)
+            except SystemExit as error:
+                problems.append(f"{where}: {error}")
+                return shown
+        rows = _pictures[target]
+        x, y = int(x), int(y)
+        if not (0 <= y < len(rows) and 0 <= x < len(rows[0])):
+            problems.append(f"{where}: pixel ({x}, {y}) lies outside {path_text}")
+            return shown
+        written = tuple(int(v) for v in re.findall(r"[0-9]+", shown))
+        if written != tuple(rows[y][x]):
+            problems.append(f"{where}: the page says {shown} where pixel ({x}, {y}) of {path_text} is "
+                            f"{tuple(rows[y][x])}")
+        return shown
+    line = PIXEL_RE.sub(one, line)
+    if PIXEL_START_RE.search(line):
+        problems.append(f"{where}: malformed {{{{#pixel}}}} (want '{{{{#pixel <picture.png>:X,Y (R, G, B)}}}}')")
+        line = PIXEL_START_RE.sub("{{pixel", line)
+    return line
+
+
+# Frames are named by their index, from 0 (appendix_testing.md, "Which frame the
+# pictures show"): never by position ("the tenth frame"), and a frame's time is
+# its index / 60 s, so "frame 10 (t = 0.15 s)" is wrong twice over.
+FRAME_POSITION_RE = re.compile(r"\b(third|fourth|fifth|sixth|seventh|eighth|ninth|tenth|[0-9]+(?:st|nd|rd|th)) "
+                               r"frame\b", re.I)
+FRAME_TIME_RE = re.compile(r"\bframe ([0-9]+) \(t = ([0-9.]+) s\)")
+
+
+def frame_name_problems(text: str, where: str) -> list[str]:
+    problems = []
+    for match in FRAME_POSITION_RE.finditer(text):
+        problems.append(f"{where}: '{match.group(0)}': name a frame by its index from 0 (a run with "
+                        "--frames N ends on frame N-1), not by its position")
+    for match in FRAME_TIME_RE.finditer(text):
+        index, shown = int(match.group(1)), match.group(2)
+        decimals = len(shown.split(".", 1)[1]) if "." in shown else 0
+        if round(index / 60, decimals) != float(shown):
+            problems.append(f"{where}: '{match.group(0)}': frame {index} is at t = {index / 60:.{decimals}f} s "
+                            f"(its index / 60); t = {shown} s is frame {round(float(shown) * 60)}")
+    return problems
 
 
 # --------------------------------------------------------------------------
@@ -1109,6 +1184,7 @@ def render_changes(changes: ChapterChanges, page: Page, previous: Page, pages: l
 # --------------------------------------------------------------------------
 
 PRINT_PAGE = "book.html"
+CHANGES_LINK_RE = re.compile(r'<p class="changes-link">.*?</p>\n?', re.S)
 ID_ATTR_RE = re.compile(r'\bid="([^"]*)"')
 HREF_RE = re.compile(r'<a\b([^>]*?)\bhref="([^"]*)"')
 
@@ -1119,7 +1195,10 @@ def print_body(page: Page, page_names: set[str]) -> str:
     book's pages, to a source file or a picture, keeps its words and loses its
     target: a printed page cannot follow it)."""
     stem = page.html_name[:-5]
-    body = ID_ATTR_RE.sub(lambda m: f'id="{stem}--{m.group(1)}"', page.body)
+    # The changes pages are for the screen (a diff beside the sources); the print
+    # drops the line that links one rather than print a link that goes nowhere.
+    body = CHANGES_LINK_RE.sub("", page.body)
+    body = ID_ATTR_RE.sub(lambda m: f'id="{stem}--{m.group(1)}"', body)
 
     def link(match: re.Match) -> str:
         attrs, target = match.group(1), html.unescape(match.group(2))
@@ -1241,6 +1320,10 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
             assets.diagram_svgs[name] = render_diagram(root, source)
         except BookError as error:
             problems.append(str(error))
+            continue
+        svg_words = html.unescape(re.sub(r"<[^>]+>", " ", assets.diagram_svgs[name]))
+        problems.extend(frame_name_problems(re.sub(r"\s+", " ", svg_words),
+                                            source.relative_to(root).as_posix()))
 
     # Each chapter after the first: what changed since the one before, linked
     # from the top of its page.

@@ -86,7 +86,15 @@ SEARCH_QUERIES = (
     ("glTF", "10_gltf.html", r"what-is-in-a-gltf-file"),
     ("secondary command buffer", "27_threads.html", r"a-secondary-command-buffer-inside-dynamic-rendering"),
     ("pipeline cache", "27_threads.html", r"a-pipeline-cache-on-disk"),
+    ("shader binding table", "25_ray_tracing.html", r"the-shader-binding-table"),
+    ("frames in flight", "03_swapchain.html", r"frames-in-flight"),
+    ("PCF", "22_shadows.html", r"looking-a-point-up-cascade-compare-filter"),
 )
+# The "taught here" mark: on these queries' first result (the chapter that
+# teaches the whole phrase first, in a heading or its recap) and on no other
+# result of any query (it once marked 14 for "shader binding table", and 17 and
+# 21 for "frames in flight").
+TAUGHT_QUERIES = ("shader binding table", "frames in flight", "PCF", "descriptor", "queue family")
 
 
 class Failure(Exception):
@@ -322,6 +330,7 @@ new Promise((resolve) => {
     if (items.length || Date.now() - start > 10000) {
       resolve({links: items.map(li => li.querySelector('a').getAttribute('href')),
                snippets: items.map(li => (li.querySelector('.snippet') || {}).textContent || ''),
+               taught: items.map(li => !!li.querySelector('.taught')),
                status: (document.querySelector('.search-status') || {}).textContent || ''});
     } else {
       setTimeout(poll, 50);
@@ -412,6 +421,12 @@ def check_search(found: dict, query: str, page: str, section: str, book: Path, l
                         f"teaches it ({section}) (the results: {results})")
     elif anchor not in links.anchors(book / page):
         problems.append(f"search: '{query}' links {first}, which has no such section")
+    marked = [link for link, mark in zip(found["links"], found.get("taught", [])) if mark]
+    if query in TAUGHT_QUERIES and marked != found["links"][:1]:
+        problems.append(f"search: '{query}' marks {marked or 'no result'} 'taught here', not only its first "
+                        f"result {found['links'][0]}")
+    elif len(marked) > 1:
+        problems.append(f"search: '{query}' marks {marked} 'taught here': one result at most")
     for link, text in zip(found["links"], found["snippets"]):
         if re.search(r"(^|\s)//", text):
             problems.append(f"search: '{query}': the snippet of {link} shows a raw '//' comment: {text[:80]!r}")

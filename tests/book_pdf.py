@@ -107,6 +107,14 @@ def main(argv: list[str]) -> int:
               "chromium", file=sys.stderr)
         return 1
 
+    # A link the PDF cannot follow is not printed as one: the screen's "What
+    # changed since chapter NN" line links a page the PDF does not hold.
+    printed = source.read_text(encoding="utf-8")
+    if "changes_" in printed:
+        print("book_pdf.py: book.html links a changes page (changes_NN_name.html), which the PDF does not hold",
+              file=sys.stderr)
+        return 1
+
     chapters = {}
     for page in sorted(book.glob("[0-9][0-9]_*.html")):
         title = re.search(r"<h1[^>]*>(.*?)</h1>", page.read_text(encoding="utf-8"), re.S)
