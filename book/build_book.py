@@ -1061,33 +1061,71 @@ def render_source(root: Path, rel: str, pages: list[Page]) -> str:
 # What changed since the previous chapter
 # --------------------------------------------------------------------------
 
-# A chapter's own files, compared with the previous chapter's: its C++ (main.cpp
-# and local headers) and its shaders.
-CHANGE_SUFFIXES = (".cpp", ".hpp", ".vert", ".frag", ".comp", ".glsl")
+# A chapter's own files (every file of chapters/NN_name/ and shaders/NN_name/,
+# whatever its suffix: CMakeLists.txt, .rgen, .mesh ...), compared with those of
+# the chapter it builds on, and the files of common/ (or shaders/common/) it
+# adds or changes, shown whole. The page declares both at its top:
+#
+#   <!-- builds on: 22_shadows
+#        common: common/resources/include/vkt/resources/acceleration.hpp common/resources/src/acceleration.cpp -->
+#
+# Without that line a chapter builds on the chapter before it and touches no
+# file of common/.
 CHANGE_CONTEXT = 3  # unchanged lines shown around each change
+SHADER_SUFFIXES = (".vert", ".frag", ".comp", ".glsl", ".task", ".mesh", ".rgen", ".rchit", ".rmiss", ".rahit",
+                   ".rint", ".rcall", ".geom", ".tesc", ".tese")
+BUILDS_ON_RE = re.compile(r"\A\s*<!--\s*builds on:\s*(\S+)(?:\s+common:\s*(.*?))?\s*-->", re.S)
+
+
+@dataclass
+class Lineage:
+    base: str                 # "22_shadows": the chapter this one builds on
+    common: list[str]         # files of common/ or shaders/common/ it adds or changes
+    declared: bool            # whether the page says so (else: the chapter before, no common/)
+
+
+def chapter_lineage(root: Path, book: Path, page: Page, previous: str, chapters: set[str],
+                    problems: list[str]) -> Lineage:
+    """What a chapter page declares it builds on, checked: an earlier chapter, and
+    files of common/ that exist."""
+    text = (book / page.md_name).read_text(encoding="utf-8")
+    match = BUILDS_ON_RE.match(text)
+    if not match:
+        return Lineage(previous, [], False)
+    where = f"book/{page.md_name}:1"
+    base, common = match.group(1), (match.group(2) or "").split()
+    if base not in chapters or base >= page.md_name[:-3]:
+        problems.append(f"{where}: 'builds on: {base}' names no earlier chapter")
+        base = previous
+    for rel in common:
+        if not rel.startswith(("common/", "shaders/common/")) or not (root / rel).is_file():
+            problems.append(f"{where}: 'common: {rel}' is not a file of common/ or shaders/common/")
+    return Lineage(base, [rel for rel in common if (root / rel).is_file()], True)
 
 
 def chapter_files(root: Path, chapter: str) -> dict[str, str]:
     """A chapter's files as {name shown: path relative to the root}: chapters/NN_name/*
-    and shaders/NN_name/*, matched with the previous chapter's by that name."""
+    and shaders/NN_name/*, matched with the base chapter's by that name."""
     found = {}
     for folder, label in (("chapters", ""), ("shaders", "shaders/")):
         base = root / folder / chapter
         if base.is_dir():
-            for path in sorted(base.iterdir()):
-                if path.is_file() and path.suffix in CHANGE_SUFFIXES:
-                    found[label + path.name] = path.relative_to(root).as_posix()
+            for path in sorted(base.rglob("*")):
+                if path.is_file():
+                    found[label + path.relative_to(base).as_posix()] = path.relative_to(root).as_posix()
     return found
 
 
 def highlighted_lines(rel: str, text: str) -> list[str]:
     """A file's lines as highlighted HTML, one string per line (the highlighter closes
     its spans at each line end)."""
-    try:
-        lexer = get_lexer_for_filename(rel, stripnl=False)
-    except ClassNotFound:
-        lexer = get_lexer_by_name("glsl", stripnl=False) if rel.endswith((".vert", ".frag", ".comp", ".glsl")) \
-            else TextLexer(stripnl=False)
+    if rel.endswith(SHADER_SUFFIXES):
+        lexer = get_lexer_by_name("glsl", stripnl=False)
+    else:
+        try:
+            lexer = get_lexer_for_filename(rel, stripnl=False)
+        except ClassNotFound:
+            lexer = TextLexer(stripnl=False)
     code = pygments.highlight(text, lexer, HtmlFormatter(nowrap=True))
     lines = code.split("\n")
     return lines[:len(text.splitlines())]
@@ -1095,12 +1133,20 @@ def highlighted_lines(rel: str, text: str) -> list[str]:
 
 @dataclass
 class ChapterChanges:
-    chapter: str          # "07_uniform_buffers"
-    previous: str         # "06_push_constants"
+    chapter: str          # "24_ray_queries"
+    previous: str         # "22_shadows": the chapter it builds on
     html: str             # the diffs
     files: int            # files that differ, came or went
     added: int
     removed: int
+    named: list[str] = field(default_factory=list)     # every file the page names (repository paths)
+    common: int = 0       # files of common/ shown
+    common_lines: int = 0
+    declared: bool = False
+
+
+def file_anchor(name: str) -> str:
+    return re.sub(r"[^a-z0-9]+", "-", name.lower()).strip("-")
 
 
 def file_diff(name: str, old_rel: str | None, new_rel: str | None, root: Path) -> tuple[str, int, int]:
@@ -1134,16 +1180,30 @@ def file_diff(name: str, old_rel: str | None, new_rel: str | None, root: Path) -
         return "", 0, 0
     state = "new file" if not old_rel else "gone" if not new_rel else f"+{added} &minus;{removed}"
     title = new_rel or old_rel
-    body = (f'<h2 id="{html.escape(re.sub(r"[^a-z0-9]+", "-", name.lower()).strip("-"))}">'
+    body = (f'<h2 id="{html.escape(file_anchor(name))}">'
             f'<code>{html.escape(title)}</code> <span class="d-count">{state}</span></h2>\n')
     if not new_rel:
-        return body + f"<p>Not in this chapter: the previous chapter's own ({len(old_lines)} lines).</p>\n", 0, removed
+        return (body + f"<p>Not in this chapter: the base chapter's own ({len(old_lines)} lines, "
+                f"<code>{html.escape(old_rel)}</code>).</p>\n", 0, removed)
     return body + '<div class="highlight diff"><pre><code>' + "".join(rows) + "</code></pre></div>\n", added, removed
 
 
-def chapter_changes(root: Path, chapter: str, previous: str) -> ChapterChanges:
+def common_file(rel: str, root: Path) -> tuple[str, int]:
+    """A file of common/ that the chapter adds or changes, shown whole, its lines numbered."""
+    text = (root / rel).read_text(encoding="utf-8")
+    lines = highlighted_lines(rel, text)
+    rows = "".join(f'<span class="d-ctx"><span class="d-no"></span><span class="d-no">{n}</span>'
+                   f'<span class="d-sign"> </span>{code}</span>' for n, code in enumerate(lines, start=1))
+    body = (f'<h2 id="{html.escape(file_anchor(rel))}"><code>{html.escape(rel)}</code> '
+            f'<span class="d-count">in common, {len(lines)} lines</span></h2>\n'
+            f'<div class="highlight diff"><pre><code>{rows}</code></pre></div>\n')
+    return body, len(lines)
+
+
+def chapter_changes(root: Path, chapter: str, lineage: Lineage) -> ChapterChanges:
+    previous = lineage.base
     old, new = chapter_files(root, previous), chapter_files(root, chapter)
-    parts, files, added, removed = [], 0, 0, 0
+    parts, files, added, removed, same = [], 0, 0, 0, []
     names = sorted(set(old) | set(new), key=lambda n: (n.startswith("shaders/"), n != "main.cpp", n))
     for name in names:
         piece, plus, minus = file_diff(name, old.get(name), new.get(name), root)
@@ -1152,7 +1212,22 @@ def chapter_changes(root: Path, chapter: str, previous: str) -> ChapterChanges:
             files += 1
             added += plus
             removed += minus
-    return ChapterChanges(chapter, previous, "".join(parts), files, added, removed)
+        elif name in new:
+            same.append(new[name])
+    if same:
+        parts.append('<h2 id="unchanged">Unchanged</h2>\n<p>The same, line for line, as in chapter '
+                     f'{previous[:2]}: ' + ", ".join(f"<code>{html.escape(rel)}</code>" for rel in same) + ".</p>\n")
+    common_lines = 0
+    if lineage.common:
+        parts.append('<h2 id="common">In common/</h2>\n<p>The files of the helper library (and the shared '
+                     'shaders) that this chapter adds or changes, whole: what later chapters call.</p>\n')
+        for rel in lineage.common:
+            piece, count = common_file(rel, root)
+            parts.append(piece)
+            common_lines += count
+    named = sorted(new.values()) + list(lineage.common)
+    return ChapterChanges(chapter, previous, "".join(parts), files, added, removed, named, len(lineage.common),
+                          common_lines, lineage.declared)
 
 
 def changes_page_name(chapter: str) -> str:
@@ -1160,22 +1235,31 @@ def changes_page_name(chapter: str) -> str:
 
 
 def changes_link(changes: ChapterChanges) -> str:
-    return (f'<p class="changes-link"><a href="{changes_page_name(changes.chapter)}">What changed since chapter '
-            f'{changes.previous[:2]}</a>: {changes.files} file{"s" if changes.files != 1 else ""}, '
-            f'+{changes.added} &minus;{changes.removed} lines in its own folders.</p>')
+    common = ""
+    if changes.common:
+        common = (f"; and {changes.common} file{'s' if changes.common != 1 else ''} of <code>common/</code> "
+                  "it adds or changes")
+    return (f'<p class="changes-link">Builds on <a href="{changes.previous}.html">chapter {changes.previous[:2]}</a>: '
+            f'<a href="{changes_page_name(changes.chapter)}">what changed since it</a>, {changes.files} '
+            f'file{"s" if changes.files != 1 else ""}, +{changes.added} &minus;{changes.removed} lines in its own '
+            f'folders{common}.</p>')
 
 
 def render_changes(changes: ChapterChanges, page: Page, previous: Page, pages: list[Page]) -> str:
     title = f"Changes from chapter {changes.previous[:2]} to {changes.chapter[:2]}"
+    common = ""
+    if changes.common:
+        common = (f" Then the {changes.common} file{'s' if changes.common != 1 else ''} of <code>common/</code> "
+                  f"that this chapter adds or changes, whole ({changes.common_lines} lines).")
     content = (f'<main class="changes"><article>\n<h1>{html.escape(title)}</h1>\n'
-               f'<p>Chapter <a href="{page.html_name}">{html.escape(page.title)}</a> against '
-               f'<a href="{previous.html_name}">{html.escape(previous.title)}</a>: each file of '
+               f'<p>Chapter <a href="{page.html_name}">{html.escape(page.title)}</a> against the chapter it '
+               f'builds on, <a href="{previous.html_name}">{html.escape(previous.title)}</a>: each file of '
                f'<code>chapters/{changes.chapter}/</code> and <code>shaders/{changes.chapter}/</code> beside the '
                f'file of the same name in chapter {changes.previous[:2]}\'s folders, the lines that went in red '
-               f'(&minus;), those that came in green (+), {CHANGE_CONTEXT} unchanged lines around each change. '
-               f'What both chapters take from <code>common/</code> is not shown. {changes.files} '
-               f'file{"s" if changes.files != 1 else ""}, +{changes.added} &minus;{changes.removed} lines.</p>\n'
-               f'{changes.html}</article></main>')
+               f'(&minus;), those that came in green (+), {CHANGE_CONTEXT} unchanged lines around each change; '
+               f'the files that did not change are named after them. {changes.files} '
+               f'file{"s" if changes.files != 1 else ""}, +{changes.added} &minus;{changes.removed} lines.'
+               f'{common}</p>\n{changes.html}</article></main>')
     return document(title, pages[0].title, "", sidebar(pages, None, ""), content)
 
 
@@ -1328,11 +1412,13 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     # Each chapter after the first: what changed since the one before, linked
     # from the top of its page.
     chapter_pages = [p for p in pages if p.md_name[:2].isdigit()]
+    chapter_names = {p.md_name[:-3] for p in chapter_pages}
     changes: list[tuple[ChapterChanges, Page, Page]] = []
     for previous, page in zip(chapter_pages, chapter_pages[1:]):
-        found = chapter_changes(root, page.md_name[:-3], previous.md_name[:-3])
-        if found.files:
-            changes.append((found, page, previous))
+        lineage = chapter_lineage(root, book, page, previous.md_name[:-3], chapter_names, problems)
+        found = chapter_changes(root, page.md_name[:-3], lineage)
+        if found.files or found.common:
+            changes.append((found, page, by_name[lineage.base + ".md"]))
             page.body = re.sub(r"(</h1>)", lambda m: m.group(1) + "\n" + changes_link(found), page.body, count=1)
 
     svgs = dict(assets.diagram_svgs)
@@ -1363,8 +1449,11 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     (out / PRINT_PAGE).write_text(render_print(pages), encoding="utf-8")
     written += 1
     for found, page, previous in changes:
-        (out / changes_page_name(found.chapter)).write_text(render_changes(found, page, previous, pages),
-                                                           encoding="utf-8")
+        text = render_changes(found, page, previous, pages)
+        missing = [rel for rel in found.named if f"<code>{html.escape(rel)}</code>" not in text]
+        if missing:  # every file of the chapter is on its changes page, diffed or named
+            raise BookError(f"{changes_page_name(found.chapter)}: does not show {', '.join(missing)}")
+        (out / changes_page_name(found.chapter)).write_text(text, encoding="utf-8")
         written += 1
     if assets.images or assets.diagram_svgs:
         (out / "images").mkdir(exist_ok=True)
