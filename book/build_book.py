@@ -67,8 +67,14 @@ so that its smallest text is at least FIGURE_TEXT_PX pixels, and says so under
 it; every table scrolls sideways as a whole in a box of its own, with a line
 above it where it is wider than the column.
 
+Maths is TeX between \( and \) in a line, or \[ and \] on a line of its own,
+typeset in the reader's browser (and in the PDF) by KaTeX, which the builder
+copies into DIR/katex/ from Debian's libjs-katex (/usr/share/javascript/katex,
+or the folder VKT_KATEX_DIR names).
+
 Needs the standard library, python3-markdown and python3-pygments (Debian 12:
-markdown 3.4, pygments 2.14), and Graphviz's dot for the .dot diagrams.
+markdown 3.4, pygments 2.14), Graphviz's dot for the .dot diagrams, and
+libjs-katex.
 """
 
 from __future__ import annotations
@@ -249,6 +255,7 @@ class Page:
     toc: list = field(default_factory=list)
     ids: set = field(default_factory=set)
     includes: list[Include] = field(default_factory=list)
+    math: list[tuple[str, bool]] = field(default_factory=list)  # (TeX, display) by placeholder number
 
     @property
     def html_name(self) -> str:
@@ -307,6 +314,8 @@ def expand_page(root: Path, book: Path, page: Page, sources: Sources, problems: 
             line = expand_pixels(root, book, line, f"{where}:{number}", problems)
         if fence is None:
             problems.extend(frame_name_problems(line, f"{where}:{number}"))
+            if "\\(" in line or "\\[" in line:
+                line = extract_math(line, page, f"{where}:{number}", problems)
         if fence is None:
             if fence_match:
                 fence, fence_indent, language = fence_match.group(2), fence_match.group(1), fence_match.group(3)
@@ -453,6 +462,49 @@ def expand_pixels(root: Path, book: Path, line: str, where: str, problems: list[
         problems.append(f"{where}: malformed {{{{#pixel}}}} (want '{{{{#pixel <picture.png>:X,Y (R, G, B)}}}}')")
         line = PIXEL_START_RE.sub("{{pixel", line)
     return line
+
+
+# Maths is typeset by KaTeX (Debian's libjs-katex, copied into the book), from
+# TeX between \( and \) in a line, or \[ and \] on a line of its own (a
+# display). The builder keeps the TeX away from Markdown (whose _ and * would
+# make emphasis of it) and hands it to the page as <span class="math">TeX</span>,
+# which book/theme/book.js renders; a formula KaTeX cannot parse is a console
+# error, which the browser test reports. Never inside `code`.
+MATH_RE = re.compile(r"(`+)(.*?)\1|\\\[(.+?)\\\]|\\\((.+?)\\\)")
+MATH_TOKEN = "VKTMATH{}X"
+MATH_TOKEN_RE = re.compile(r"(<p>)?VKTMATH([0-9]+)X(</p>)?")
+KATEX_DIR = Path(os.environ.get("VKT_KATEX_DIR", "/usr/share/javascript/katex"))
+KATEX_FILES = ("katex.min.js", "katex.min.css")
+
+
+def extract_math(line: str, page: Page, where: str, problems: list[str]) -> str:
+    def one(match: re.Match) -> str:
+        if match.group(1):
+            return match.group(0)  # inline code stays code
+        display = match.group(3) is not None
+        tex = (match.group(3) if display else match.group(4)).strip()
+        if not tex:
+            problems.append(f"{where}: an empty formula")
+        if display and line.strip() != match.group(0):
+            problems.append(f"{where}: a display formula \\[ ... \\] stands on a line of its own")
+        page.math.append((tex, display))
+        return MATH_TOKEN.format(len(page.math) - 1)
+    line = MATH_RE.sub(one, line)
+    unclosed = re.sub(r"`+.*?`+", "", line)
+    if "\\(" in unclosed or "\\[" in unclosed:
+        problems.append(f"{where}: a formula opened with \\( or \\[ is not closed on the same line")
+    return line
+
+
+def place_math(body: str, math: list[tuple[str, bool]]) -> str:
+    def one(match: re.Match) -> str:
+        tex, display = math[int(match.group(2))]
+        if display:
+            inner = f'<div class="math display">{html.escape(tex)}</div>'
+            return inner if match.group(1) and match.group(3) else \
+                (match.group(1) or "") + inner + (match.group(3) or "")
+        return (match.group(1) or "") + f'<span class="math">{html.escape(tex)}</span>' + (match.group(3) or "")
+    return MATH_TOKEN_RE.sub(one, body)
 
 
 # Frames are named by their index, from 0 (appendix_testing.md, "Which frame the
@@ -911,7 +963,7 @@ def convert(page: Page) -> None:
             "toc": {"permalink": False},
         },
         output_format="html")
-    page.body = md.convert(page.markdown)
+    page.body = place_math(md.convert(page.markdown), page.math)
     page.toc = md.toc_tokens
     page.ids = set(re.findall(r'\bid="([^"]+)"', page.body))
 
@@ -1000,7 +1052,9 @@ def document(title: str, book_title: str, prefix: str, side: str, content: str) 
 <title>{html.escape(full_title)}</title>
 <link rel="stylesheet" href="{prefix}style.css">
 <link rel="stylesheet" href="{prefix}pygments.css">
+<link rel="stylesheet" href="{prefix}katex/katex.min.css">
 <script src="{prefix}search.js" defer></script>
+<script src="{prefix}katex/katex.min.js" defer></script>
 <script src="{prefix}book.js" defer></script>
 </head>
 <body>
@@ -1314,6 +1368,8 @@ def render_print(pages: list[Page]) -> str:
 <title>{html.escape(title)}</title>
 <link rel="stylesheet" href="style.css">
 <link rel="stylesheet" href="pygments.css">
+<link rel="stylesheet" href="katex/katex.min.css">
+<script src="katex/katex.min.js" defer></script>
 <script src="book.js" defer></script>
 </head>
 <body class="print-book">
@@ -1440,6 +1496,17 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     shutil.copyfile(THEME / "style.css", out / "style.css")
     shutil.copyfile(THEME / "search.js", out / "search.js")
     shutil.copyfile(THEME / "book.js", out / "book.js")
+    # KaTeX, for the maths: its script, its stylesheet and the fonts beside it, so
+    # that the book typesets offline (and in the PDF, which Chromium prints from it).
+    if not all((KATEX_DIR / name).is_file() for name in KATEX_FILES):
+        raise BookError(f"KaTeX is not in {KATEX_DIR} (the book typesets its maths with it): "
+                        "apt install libjs-katex, or set VKT_KATEX_DIR to a folder with katex.min.js, "
+                        "katex.min.css and fonts/")
+    (out / "katex" / "fonts").mkdir(parents=True, exist_ok=True)
+    for name in KATEX_FILES:
+        shutil.copyfile(KATEX_DIR / name, out / "katex" / name)
+    for font in sorted((KATEX_DIR / "fonts").glob("KaTeX_*.woff2")):
+        shutil.copyfile(font, out / "katex" / "fonts" / font.name)
     (out / "pygments.css").write_text(pygments_css(), encoding="utf-8")
     (out / "search-index.js").write_text(search_index(pages), encoding="utf-8")
     written += 5

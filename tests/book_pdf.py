@@ -135,6 +135,10 @@ def main(argv: list[str]) -> int:
         print(f"book_pdf.py: Chromium did not print the book (status {run.returncode}): {last}", file=sys.stderr)
         return 1
     problems, summary = check_pdf(target.read_bytes(), chapters)
+    # The maths is typeset in the PDF too: KaTeX's fonts are embedded, not the TeX printed.
+    if 'class="math' in printed and not re.search(rb"/BaseFont\s*/[A-Z]+\+KaTeX_Main", target.read_bytes()):
+        problems.append("book.pdf: the book has maths but embeds no KaTeX font: it printed before KaTeX "
+                        "typeset it, or without it")
     for problem in problems:
         print(f"book_pdf.py: {problem}", file=sys.stderr)
     if problems:
