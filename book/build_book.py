@@ -123,7 +123,18 @@ FENCE_RE = re.compile(r"^(\s*)(`{3,}|~{3,})\s*([^`\s]*)")
 # The book has three parts after its index: the chapters (NN_name.md), the
 # appendices (appendix_name.md) and the performance part (performance.md, its
 # front page, then perf_NN_name.md per measured chapter and perf_name.md).
-PAGE_RE = re.compile(r"^(index|performance|\d\d_[a-z0-9_]+|appendix_[a-z0-9_]+|perf_[a-z0-9_]+)\.md$")
+# A chapter whose page grew past one sitting keeps its core on NN_name.md and
+# goes further on sub-pages NNb_name.md, NNc_name.md ... (one idea each, in that
+# reading order, right after the core); the chapter's program stays whole, and
+# its checks (the picture, the closing sections, the changes page) are the core's.
+PAGE_RE = re.compile(r"^(index|performance|\d\d[b-z]?_[a-z0-9_]+|appendix_[a-z0-9_]+|perf_[a-z0-9_]+)\.md$")
+CHAPTER_PAGE_RE = re.compile(r"^\d\d_")
+SUB_PAGE_RE = re.compile(r"^\d\d[b-z]_")
+
+
+def is_chapter(name: str) -> bool:
+    """A chapter's core page (NN_name.md), not one of its sub-pages (NNb_name.md)."""
+    return bool(CHAPTER_PAGE_RE.match(name))
 IMAGE_SUFFIXES = (".png", ".jpg", ".jpeg", ".gif", ".svg", ".webp")
 # A picture `NAME.svg` that does not exist is drawn from NAME.py or NAME.dot beside it.
 DIAGRAM_SOURCES = (".py", ".dot")
@@ -598,6 +609,35 @@ def check_chapter_page(book: Path, page: Page) -> list[str]:
     return problems
 
 
+def check_sub_page(book: Path, page: Page, core: Page | None) -> list[str]:
+    """A sub-page goes further than its chapter's core page: the core exists and links
+    to it, and it keeps no lab notes (the closing sections are the core's)."""
+    where = f"book/{page.md_name}"
+    if core is None:
+        return [f"{where}: a sub-page of chapter {page.md_name[:2]}, which has no core page "
+                f"book/{page.md_name[:2]}_name.md"]
+    problems = []
+    if f"]({page.md_name}" not in (book / core.md_name).read_text(encoding="utf-8"):
+        problems.append(f"{where}: its chapter's core page, book/{core.md_name}, does not link to it")
+    fence = None
+    for number, line in enumerate((book / page.md_name).read_text(encoding="utf-8").splitlines(), start=1):
+        match = FENCE_RE.match(line)
+        if fence is None and match:
+            fence = match.group(2)
+            continue
+        if fence is not None and match and match.group(2).startswith(fence) and not match.group(3):
+            fence = None
+            continue
+        if "{{#include" in line:
+            continue
+        for pattern, what in LAB_NOTES:
+            found = pattern.search(line)
+            if found:
+                problems.append(f"{where}:{number}: {what} ('{found.group(0)}') belongs in the performance part, "
+                                "not in a chapter page")
+    return problems
+
+
 ATTR_RE = re.compile(r'\b(href|src)="([^"]*)"')
 
 
@@ -923,7 +963,7 @@ def search_sections(page: Page) -> list[SearchSection]:
     recap: list[tuple[str, str]] = []
     for anchor, heading, fragment in pieces:
         section = SearchSection(anchor, heading)
-        if page.md_name[:2].isdigit() and heading == "Recap":
+        if page.md_name[:2].isdigit() and heading == "Recap":  # a core page's or a sub-page's
             items, fragment = recap_items(fragment)
             recap += items
         split_by_kind(fragment, section)
@@ -1020,7 +1060,8 @@ def sidebar(pages: list[Page], current: Page | None, prefix: str) -> str:
             part = part_of(page.md_name)
             items.append(f'<li class="part">{html.escape(part)}</li>')
         mark = ' class="current" aria-current="page"' if page is current else ""
-        item = f'<li><a href="{prefix}{page.html_name}"{mark}>{html.escape(page.title)}</a>'
+        sub = ' class="sub-page"' if SUB_PAGE_RE.match(page.md_name) else ""
+        item = f'<li{sub}><a href="{prefix}{page.html_name}"{mark}>{html.escape(page.title)}</a>'
         if page is current and page.toc:
             sections = [t for t in page.toc if t["level"] == 1]
             subs = sections[0]["children"] if len(sections) == 1 else page.toc
@@ -1403,7 +1444,7 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     pages = [Page(name) for name in page_order(names)]
     numbers = {}
     for page in pages:
-        if page.md_name[:2].isdigit():
+        if is_chapter(page.md_name):
             if page.md_name[:2] in numbers:
                 problems.append(f"book/{page.md_name}: chapter number {page.md_name[:2]} is also "
                                 f"used by book/{numbers[page.md_name[:2]]}")
@@ -1421,12 +1462,15 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
         for folder in sorted(chapters.iterdir()):
             if folder.is_dir() and folder.name[:2].isdigit() and f"{folder.name}.md" not in page_names_md:
                 problems.append(f"chapters/{folder.name} has no page book/{folder.name}.md")
+    cores = {page.md_name[:2]: page for page in pages if is_chapter(page.md_name)}
     for page in pages:
-        if page.md_name[:2].isdigit():
+        if is_chapter(page.md_name):
             problems.extend(check_chapter_page(book, page))
+        elif SUB_PAGE_RE.match(page.md_name):
+            problems.extend(check_sub_page(book, page, cores.get(page.md_name[:2])))
     for page in pages:
         golden = f"tests/golden/{page.md_name[:-3]}.png"
-        if page.md_name[:2].isdigit() and (root / golden).exists() and golden not in page.markdown:
+        if is_chapter(page.md_name) and (root / golden).exists() and golden not in page.markdown:
             problems.append(f"book/{page.md_name}: does not show the chapter's picture, {golden}")
 
     # Every marker in the chapters, the helper library and the shaders must be
@@ -1467,7 +1511,7 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
 
     # Each chapter after the first: what changed since the one before, linked
     # from the top of its page.
-    chapter_pages = [p for p in pages if p.md_name[:2].isdigit()]
+    chapter_pages = [p for p in pages if is_chapter(p.md_name)]
     chapter_names = {p.md_name[:-3] for p in chapter_pages}
     changes: list[tuple[ChapterChanges, Page, Page]] = []
     for previous, page in zip(chapter_pages, chapter_pages[1:]):
