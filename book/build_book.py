@@ -267,6 +267,7 @@ class Page:
     ids: set = field(default_factory=set)
     includes: list[Include] = field(default_factory=list)
     math: list[tuple[str, bool]] = field(default_factory=list)  # (TeX, display) by placeholder number
+    recap_elsewhere: list = field(default_factory=list)  # (sub-page, anchor, words) its recap teaches there
 
     @property
     def html_name(self) -> str:
@@ -880,7 +881,8 @@ PLAIN_COMMENT_RE = re.compile(r"(?:^|(?<=\s))//[^\n]*", re.M)
 CAPTION_RE = re.compile(r'<p class="source">.*?</p>', re.S)
 FILES_LIST_RE = re.compile(r'<ul class="chapter-files">.*?</ul>', re.S)
 HEADING_RE = re.compile(r'<h([1-4])\b[^>]*\bid="([^"]*)"[^>]*>(.*?)</h\1>', re.S)
-LOCAL_LINK_RE = re.compile(r'<a\b[^>]*\bhref="#([^"]+)"[^>]*>(.*?)</a>', re.S)
+LOCAL_LINK_RE = re.compile(r'<a\b[^>]*\bhref="((?:\d\d[b-z]_[a-z0-9_]+\.html)?#[^"]+|\d\d[b-z]_[a-z0-9_]+\.html)"[^>]*>(.*?)</a>',
+                           re.S)
 
 
 def plain(fragment: str) -> str:
@@ -970,7 +972,10 @@ def search_sections(page: Page) -> list[SearchSection]:
         sections.append(section)
     by_anchor = {s.anchor: s for s in sections}
     for anchor, words in recap:
-        if anchor in by_anchor:
+        target, _, anchor = anchor.partition("#")
+        if target:  # an entry that links a sub-page of the chapter: taught there
+            page.recap_elsewhere.append((target, anchor, words))
+        elif anchor in by_anchor:
             by_anchor[anchor].recap.append(words)
     return [s for s in sections if s.heading or any(s.prose) or s.code or s.recap]
 
@@ -986,8 +991,14 @@ def search_index(pages: list[Page]) -> str:
     def joined(parts: list[str]) -> str:
         return " \u2022 ".join(p for p in parts if p.strip())
     data = {"pages": [[p.html_name, p.title, kind(p)] for p in pages], "sections": []}
+    cut = {page.html_name: search_sections(page) for page in pages}
+    for page in pages:  # a core page's recap entries that link its sub-pages' sections
+        for target, anchor, words in page.recap_elsewhere:
+            there = [s for s in cut.get(target, []) if s.anchor == anchor or (not anchor and s is cut[target][0])]
+            if there:
+                there[0].recap.append(words)
     for number, page in enumerate(pages):
-        for s in search_sections(page):
+        for s in cut[page.html_name]:
             data["sections"].append([number, s.anchor, s.heading, joined(s.recap), joined(s.prose),
                                      joined(s.code), joined(s.comments)])
     return ("// The book's search index, written by book/build_book.py; read by search.js.\n"

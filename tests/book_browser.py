@@ -17,7 +17,7 @@ the run fails on:
 It also types each of SEARCH_QUERIES into the search box of the index and
 checks that the first result is the chapter that teaches it, linked at the
 section that does (vkCmdPipelineBarrier2: chapter 03's barriers of a frame;
-quaternion: 14; subgroup: 20; ...), with no raw `//` comment in any snippet,
+quaternion: 14; subgroup: 20d, a sub-page of 20; ...), with no raw `//` comment in any snippet,
 and checks that every chart that
 benchmarks/plots.py draws is in the book with labelled axes and a legend (as
 SVG text).
@@ -68,7 +68,7 @@ FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-ne
 SEARCH_QUERIES = (
     ("vkCmdPipelineBarrier2", "03_swapchain.html", r"the-barriers-of-a-frame"),
     ("quaternion", "14_physics.html", r"a-rigid-body-that-turns|.*(?:orientation|quaternion|turns).*"),
-    ("subgroup", "20_ndim_compute.html", r"boxes|.*subgroup.*"),
+    ("subgroup", "20d_binning.html", r"boxes|.*subgroup.*"),
     ("G-buffer", "16_deferred.html", r"the-g-buffer-what-to-store-in-which-format"),
     ("descriptor", "07_uniform_buffers.html", r"the-descriptor-set-layout"),
     ("push constants", "06_push_constants.html", r"the-push-constant-block|06-push-constants"),
