@@ -800,6 +800,9 @@ def polish(body: str) -> str:
 # column; a tap or click opens it full size (book/theme/book.js), zoomed so its
 # smallest text is at least FIGURE_TEXT_PX pixels, and a line under it says so.
 FIGURE_TEXT_PX = 12
+# A figure's smallest text as shown on a phone (book/theme/style.css shows it at
+# least --phone-width wide there): above the browser test's 9 px at 400 px.
+PHONE_TEXT_PX = 9.6
 FIGURE_HINT = "Tap or click the figure to open it full size."
 FIGURE_RE = re.compile(r'<a class="figure" href="images/([^"]+\.svg)">(<img\b[^>]*>)</a>')
 FONT_SIZE_RE = re.compile(r"font-size\s*:\s*([0-9.]+)(px|em|%)?|font\s*:[^;]*?([0-9.]+)(px|em|%)")
@@ -856,9 +859,14 @@ def annotate_figures(body: str, svgs: dict[str, str]) -> str:
         if metrics is None:
             return match.group(0)
         width, text = metrics
-        return (f'<a class="figure" href="images/{match.group(1)}" data-width="{width:g}" '
-                f'data-min-text="{text:g}" data-text-px="{FIGURE_TEXT_PX}">{match.group(2)}</a>'
-                f'<span class="figure-hint">{FIGURE_HINT}</span>')
+        # On a phone the figure is shown at least this wide, in a box that scrolls
+        # sideways, so that its smallest text reads at PHONE_TEXT_PX as shown.
+        phone = max(0.0, width * PHONE_TEXT_PX / text)
+        return (f'<span class="figure-scroll" style="--phone-width: {phone:.0f}px">'
+                f'<a class="figure" href="images/{match.group(1)}" data-width="{width:g}" '
+                f'data-min-text="{text:g}" data-text-px="{FIGURE_TEXT_PX}">{match.group(2)}</a></span>'
+                f'<span class="figure-hint">{FIGURE_HINT}<span class="narrow-only"> On a narrow screen it '
+                f'scrolls sideways.</span></span>')
     return FIGURE_RE.sub(fix, body)
 
 
