@@ -733,7 +733,14 @@ def diagram_source(target: Path) -> Path | None:
     return None
 
 
-def render_diagram(root: Path, source: Path) -> str:
+# A diagram script that reads VKT_DIAGRAM_LAYOUT also draws a narrow layout of
+# itself (VKT_DIAGRAM_LAYOUT=narrow) for phones: NAME.narrow.svg, which a page on
+# a narrow screen shows instead of NAME.svg (a <picture>), the wide one still what
+# a tap opens.
+NARROW_LAYOUT = "VKT_DIAGRAM_LAYOUT"
+
+
+def render_diagram(root: Path, source: Path, layout: str = "") -> str:
     """Draws one diagram and checks that it is an SVG with text; BookError if not."""
     rel = source.resolve().relative_to(root.resolve()).as_posix()
     if source.suffix == ".py":
@@ -745,7 +752,7 @@ def render_diagram(root: Path, source: Path) -> str:
         command = [dot, "-Tsvg", source.name]
     try:
         run = subprocess.run(command, cwd=source.parent, capture_output=True, text=True, timeout=120,
-                             env=dict(os.environ, PYTHONDONTWRITEBYTECODE="1"))
+                             env=dict(os.environ, PYTHONDONTWRITEBYTECODE="1", VKT_DIAGRAM_LAYOUT=layout))
     except (OSError, subprocess.TimeoutExpired) as error:
         raise BookError(f"{rel}: cannot draw the diagram: {error}") from None
     if run.returncode != 0:
@@ -803,6 +810,7 @@ FIGURE_TEXT_PX = 12
 # A figure's smallest text as shown on a phone (book/theme/style.css shows it at
 # least --phone-width wide there): above the browser test's 9 px at 400 px.
 PHONE_TEXT_PX = 9.6
+PHONE_COLUMN_PX = 360  # the column's width on a 400 px phone, about
 FIGURE_HINT = "Tap or click the figure to open it full size."
 FIGURE_RE = re.compile(r'<a class="figure" href="images/([^"]+\.svg)">(<img\b[^>]*>)</a>')
 FONT_SIZE_RE = re.compile(r"font-size\s*:\s*([0-9.]+)(px|em|%)?|font\s*:[^;]*?([0-9.]+)(px|em|%)")
@@ -859,14 +867,23 @@ def annotate_figures(body: str, svgs: dict[str, str]) -> str:
         if metrics is None:
             return match.group(0)
         width, text = metrics
-        # On a phone the figure is shown at least this wide, in a box that scrolls
+        img = match.group(2)
+        narrow_name = html.unescape(match.group(1))[:-4] + ".narrow.svg"
+        narrow = svg_text_metrics(svgs.get(narrow_name, ""))
+        if narrow is not None:  # on a phone the narrow layout, and its text decides the width
+            img = (f'<picture><source media="screen and (max-width: 52rem)" srcset="images/{html.escape(narrow_name)}">'
+                   f'{img}</picture>')
+            phone = max(0.0, narrow[0] * PHONE_TEXT_PX / narrow[1])
+        else:
+            phone = max(0.0, width * PHONE_TEXT_PX / text)
+        scrolls = ('<span class="narrow-only"> On a narrow screen it scrolls sideways.</span>'
+                   if phone > PHONE_COLUMN_PX else "")
+        # On a phone the figure is shown at least `phone` wide, in a box that scrolls
         # sideways, so that its smallest text reads at PHONE_TEXT_PX as shown.
-        phone = max(0.0, width * PHONE_TEXT_PX / text)
         return (f'<span class="figure-scroll" style="--phone-width: {phone:.0f}px">'
                 f'<a class="figure" href="images/{match.group(1)}" data-width="{width:g}" '
-                f'data-min-text="{text:g}" data-text-px="{FIGURE_TEXT_PX}">{match.group(2)}</a></span>'
-                f'<span class="figure-hint">{FIGURE_HINT}<span class="narrow-only"> On a narrow screen it '
-                f'scrolls sideways.</span></span>')
+                f'data-min-text="{text:g}" data-text-px="{FIGURE_TEXT_PX}">{img}</a></span>'
+                f'<span class="figure-hint">{FIGURE_HINT}{scrolls}</span>')
     return FIGURE_RE.sub(fix, body)
 
 
@@ -1524,6 +1541,11 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
         except BookError as error:
             problems.append(str(error))
             continue
+        if source.suffix == ".py" and NARROW_LAYOUT in source.read_text(encoding="utf-8"):
+            try:
+                assets.diagram_svgs[name[:-4] + ".narrow.svg"] = render_diagram(root, source, "narrow")
+            except BookError as error:
+                problems.append(f"{error} (its narrow layout)")
         svg_words = html.unescape(re.sub(r"<[^>]+>", " ", assets.diagram_svgs[name]))
         problems.extend(frame_name_problems(re.sub(r"\s+", " ", svg_words),
                                             source.relative_to(root).as_posix()))

@@ -250,8 +250,13 @@ FIGURE_CHECK = r"""
 (async () => {
   const figures = [];
   for (const img of document.querySelectorAll('article img')) {
-    const src = img.getAttribute('src') || '';
+    let src = img.getAttribute('src') || '';
     if (!/\.svg$/.test(src)) continue;
+    // The picture shown: a diagram's narrow layout on a phone (<picture>), else src.
+    if (!img.complete) await new Promise(r => { img.onload = r; img.onerror = r; });
+    if (img.currentSrc && img.currentSrc.includes('/images/')) {
+      src = 'images/' + img.currentSrc.split('/images/').pop();
+    }
     const link = img.closest('a.figure');
     const hint = link && (link.closest('.figure-scroll') || link).nextElementSibling;
     const said = !!(hint && hint.classList.contains('figure-hint') && hint.getBoundingClientRect().height > 0
