@@ -17,6 +17,11 @@ cannot drift from the code: `{{#number ../shaders/17_tiled_deferred/tiles.glsl:M
 shows "2,048" and fails the build unless that file defines MAX_TILE_LIGHTS as
 2048 (`*K` and `/K` after the name scale it, `NAME#N` picks its N-th definition;
 book/source_constants.py, which the diagrams use to read their numbers too).
+A colour a page quotes from a chapter's picture names the reviewed test picture
+and the pixel in the same way: `{{#pixel ../tests/golden/23_materials.png:0,239 (44, 39, 33)}}`
+shows "(44, 39, 33)" and fails unless that pixel is that colour. A frame is named
+by its index (`frame 9 (t = 0.15 s)`), never by its position ("the tenth frame"):
+the build fails on either slip, on the pages and in the diagrams' text.
 
 The build fails (exit status 1, one line per problem) when an included file or
 marker does not exist, when a marker in chapters/, common/ or shaders/ is
@@ -62,8 +67,14 @@ so that its smallest text is at least FIGURE_TEXT_PX pixels, and says so under
 it; every table scrolls sideways as a whole in a box of its own, with a line
 above it where it is wider than the column.
 
+Maths is TeX between \( and \) in a line, or \[ and \] on a line of its own,
+typeset in the reader's browser (and in the PDF) by KaTeX, which the builder
+copies into DIR/katex/ from Debian's libjs-katex (/usr/share/javascript/katex,
+or the folder VKT_KATEX_DIR names).
+
 Needs the standard library, python3-markdown and python3-pygments (Debian 12:
-markdown 3.4, pygments 2.14), and Graphviz's dot for the .dot diagrams.
+markdown 3.4, pygments 2.14), Graphviz's dot for the .dot diagrams, and
+libjs-katex.
 """
 
 from __future__ import annotations
@@ -112,7 +123,18 @@ FENCE_RE = re.compile(r"^(\s*)(`{3,}|~{3,})\s*([^`\s]*)")
 # The book has three parts after its index: the chapters (NN_name.md), the
 # appendices (appendix_name.md) and the performance part (performance.md, its
 # front page, then perf_NN_name.md per measured chapter and perf_name.md).
-PAGE_RE = re.compile(r"^(index|performance|\d\d_[a-z0-9_]+|appendix_[a-z0-9_]+|perf_[a-z0-9_]+)\.md$")
+# A chapter whose page grew past one sitting keeps its core on NN_name.md and
+# goes further on sub-pages NNb_name.md, NNc_name.md ... (one idea each, in that
+# reading order, right after the core); the chapter's program stays whole, and
+# its checks (the picture, the closing sections, the changes page) are the core's.
+PAGE_RE = re.compile(r"^(index|performance|\d\d[b-z]?_[a-z0-9_]+|appendix_[a-z0-9_]+|perf_[a-z0-9_]+)\.md$")
+CHAPTER_PAGE_RE = re.compile(r"^\d\d_")
+SUB_PAGE_RE = re.compile(r"^\d\d[b-z]_")
+
+
+def is_chapter(name: str) -> bool:
+    """A chapter's core page (NN_name.md), not one of its sub-pages (NNb_name.md)."""
+    return bool(CHAPTER_PAGE_RE.match(name))
 IMAGE_SUFFIXES = (".png", ".jpg", ".jpeg", ".gif", ".svg", ".webp")
 # A picture `NAME.svg` that does not exist is drawn from NAME.py or NAME.dot beside it.
 DIAGRAM_SOURCES = (".py", ".dot")
@@ -244,6 +266,8 @@ class Page:
     toc: list = field(default_factory=list)
     ids: set = field(default_factory=set)
     includes: list[Include] = field(default_factory=list)
+    math: list[tuple[str, bool]] = field(default_factory=list)  # (TeX, display) by placeholder number
+    recap_elsewhere: list = field(default_factory=list)  # (sub-page, anchor, words) its recap teaches there
 
     @property
     def html_name(self) -> str:
@@ -298,6 +322,12 @@ def expand_page(root: Path, book: Path, page: Page, sources: Sources, problems: 
         fence_match = FENCE_RE.match(line)
         if fence is None and NUMBER_START_RE.search(line):
             line = expand_numbers(root, book, line, f"{where}:{number}", problems)
+        if fence is None and PIXEL_START_RE.search(line):
+            line = expand_pixels(root, book, line, f"{where}:{number}", problems)
+        if fence is None:
+            problems.extend(frame_name_problems(line, f"{where}:{number}"))
+            if "\\(" in line or "\\[" in line:
+                line = extract_math(line, page, f"{where}:{number}", problems)
         if fence is None:
             if fence_match:
                 fence, fence_indent, language = fence_match.group(2), fence_match.group(1), fence_match.group(3)
@@ -402,6 +432,115 @@ def expand_numbers(root: Path, book: Path, line: str, where: str, problems: list
     return line
 
 
+# A colour a page quotes from a chapter's picture names the reviewed test picture
+# and the pixel: {{#pixel ../tests/golden/23_materials.png:0,239 (44, 39, 33)}} shows
+# "(44, 39, 33)" and fails the build unless that pixel of the golden image is that
+# colour, exactly: the golden image is what a run of the chapter wrote, so a page
+# cannot quote a hand-worked value as what the program writes.
+PIXEL_RE = re.compile(r"\{\{#pixel\s+([^\s:{}]+):([0-9]+),([0-9]+)\s+(\(\s*[0-9]+,\s*[0-9]+,\s*[0-9]+\s*\))\s*\}\}")
+PIXEL_START_RE = re.compile(r"\{\{#pixel\b")
+_pictures: dict[Path, list] = {}
+
+
+def expand_pixels(root: Path, book: Path, line: str, where: str, problems: list[str]) -> str:
+    """A line's {{#pixel picture.png:X,Y (R, G, B)}} directives replaced by the colour
+    shown, each checked against that pixel of the picture."""
+    def one(match: re.Match) -> str:
+        path_text, x, y, shown = match.groups()
+        target = book / path_text
+        if not inside_root(root, target) or not target.is_file():
+            problems.append(f"{where}: {{{{#pixel}}}} names {path_text}, which does not exist here")
+            return shown
+        if target not in _pictures:
+            sys.path.insert(0, str(Path(__file__).resolve().parent / "diagrams"))
+            from golden import read_png  # the diagrams' PNG reader, standard library only
+            try:
+                _pictures[target] = read_png(target)
+            except SystemExit as error:
+                problems.append(f"{where}: {error}")
+                return shown
+        rows = _pictures[target]
+        x, y = int(x), int(y)
+        if not (0 <= y < len(rows) and 0 <= x < len(rows[0])):
+            problems.append(f"{where}: pixel ({x}, {y}) lies outside {path_text}")
+            return shown
+        written = tuple(int(v) for v in re.findall(r"[0-9]+", shown))
+        if written != tuple(rows[y][x]):
+            problems.append(f"{where}: the page says {shown} where pixel ({x}, {y}) of {path_text} is "
+                            f"{tuple(rows[y][x])}")
+        return shown
+    line = PIXEL_RE.sub(one, line)
+    if PIXEL_START_RE.search(line):
+        problems.append(f"{where}: malformed {{{{#pixel}}}} (want '{{{{#pixel <picture.png>:X,Y (R, G, B)}}}}')")
+        line = PIXEL_START_RE.sub("{{pixel", line)
+    return line
+
+
+# Maths is typeset by KaTeX (Debian's libjs-katex, copied into the book), from
+# TeX between \( and \) in a line, or \[ and \] on a line of its own (a
+# display). The builder keeps the TeX away from Markdown (whose _ and * would
+# make emphasis of it) and hands it to the page as <span class="math">TeX</span>,
+# which book/theme/book.js renders; a formula KaTeX cannot parse is a console
+# error, which the browser test reports. Never inside `code`.
+MATH_RE = re.compile(r"(`+)(.*?)\1|\\\[(.+?)\\\]|\\\((.+?)\\\)")
+MATH_TOKEN = "VKTMATH{}X"
+MATH_TOKEN_RE = re.compile(r"(<p>)?VKTMATH([0-9]+)X(</p>)?")
+KATEX_DIR = Path(os.environ.get("VKT_KATEX_DIR", "/usr/share/javascript/katex"))
+KATEX_FILES = ("katex.min.js", "katex.min.css")
+
+
+def extract_math(line: str, page: Page, where: str, problems: list[str]) -> str:
+    def one(match: re.Match) -> str:
+        if match.group(1):
+            return match.group(0)  # inline code stays code
+        display = match.group(3) is not None
+        tex = (match.group(3) if display else match.group(4)).strip()
+        if not tex:
+            problems.append(f"{where}: an empty formula")
+        if display and line.strip() != match.group(0):
+            problems.append(f"{where}: a display formula \\[ ... \\] stands on a line of its own")
+        page.math.append((tex, display))
+        return MATH_TOKEN.format(len(page.math) - 1)
+    line = MATH_RE.sub(one, line)
+    unclosed = re.sub(r"`+.*?`+", "", line)
+    if "\\(" in unclosed or "\\[" in unclosed:
+        problems.append(f"{where}: a formula opened with \\( or \\[ is not closed on the same line")
+    return line
+
+
+def place_math(body: str, math: list[tuple[str, bool]]) -> str:
+    def one(match: re.Match) -> str:
+        tex, display = math[int(match.group(2))]
+        if display:
+            inner = f'<div class="math display">{html.escape(tex)}</div>'
+            return inner if match.group(1) and match.group(3) else \
+                (match.group(1) or "") + inner + (match.group(3) or "")
+        return (match.group(1) or "") + f'<span class="math">{html.escape(tex)}</span>' + (match.group(3) or "")
+    return MATH_TOKEN_RE.sub(one, body)
+
+
+# Frames are named by their index, from 0 (appendix_testing.md, "Which frame the
+# pictures show"): never by position ("the tenth frame"), and a frame's time is
+# its index / 60 s, so "frame 10 (t = 0.15 s)" is wrong twice over.
+FRAME_POSITION_RE = re.compile(r"\b(third|fourth|fifth|sixth|seventh|eighth|ninth|tenth|[0-9]+(?:st|nd|rd|th)) "
+                               r"frame\b", re.I)
+FRAME_TIME_RE = re.compile(r"\bframe ([0-9]+) \(t = ([0-9.]+) s\)")
+
+
+def frame_name_problems(text: str, where: str) -> list[str]:
+    problems = []
+    for match in FRAME_POSITION_RE.finditer(text):
+        problems.append(f"{where}: '{match.group(0)}': name a frame by its index from 0 (a run with "
+                        "--frames N ends on frame N-1), not by its position")
+    for match in FRAME_TIME_RE.finditer(text):
+        index, shown = int(match.group(1)), match.group(2)
+        decimals = len(shown.split(".", 1)[1]) if "." in shown else 0
+        if round(index / 60, decimals) != float(shown):
+            problems.append(f"{where}: '{match.group(0)}': frame {index} is at t = {index / 60:.{decimals}f} s "
+                            f"(its index / 60); t = {shown} s is frame {round(float(shown) * 60)}")
+    return problems
+
+
 # --------------------------------------------------------------------------
 # What a chapter page must be
 # --------------------------------------------------------------------------
@@ -468,6 +607,35 @@ def check_chapter_page(book: Path, page: Page) -> list[str]:
     if "](#" not in "\n".join(lines[start["Recap"]:]):
         problems.append(f"{where}:{start['Recap']}: the 'Recap' links nothing on the page; "
                         "link each call or structure to where the page first uses it")
+    return problems
+
+
+def check_sub_page(book: Path, page: Page, core: Page | None) -> list[str]:
+    """A sub-page goes further than its chapter's core page: the core exists and links
+    to it, and it keeps no lab notes (the closing sections are the core's)."""
+    where = f"book/{page.md_name}"
+    if core is None:
+        return [f"{where}: a sub-page of chapter {page.md_name[:2]}, which has no core page "
+                f"book/{page.md_name[:2]}_name.md"]
+    problems = []
+    if f"]({page.md_name}" not in (book / core.md_name).read_text(encoding="utf-8"):
+        problems.append(f"{where}: its chapter's core page, book/{core.md_name}, does not link to it")
+    fence = None
+    for number, line in enumerate((book / page.md_name).read_text(encoding="utf-8").splitlines(), start=1):
+        match = FENCE_RE.match(line)
+        if fence is None and match:
+            fence = match.group(2)
+            continue
+        if fence is not None and match and match.group(2).startswith(fence) and not match.group(3):
+            fence = None
+            continue
+        if "{{#include" in line:
+            continue
+        for pattern, what in LAB_NOTES:
+            found = pattern.search(line)
+            if found:
+                problems.append(f"{where}:{number}: {what} ('{found.group(0)}') belongs in the performance part, "
+                                "not in a chapter page")
     return problems
 
 
@@ -713,7 +881,8 @@ PLAIN_COMMENT_RE = re.compile(r"(?:^|(?<=\s))//[^\n]*", re.M)
 CAPTION_RE = re.compile(r'<p class="source">.*?</p>', re.S)
 FILES_LIST_RE = re.compile(r'<ul class="chapter-files">.*?</ul>', re.S)
 HEADING_RE = re.compile(r'<h([1-4])\b[^>]*\bid="([^"]*)"[^>]*>(.*?)</h\1>', re.S)
-LOCAL_LINK_RE = re.compile(r'<a\b[^>]*\bhref="#([^"]+)"[^>]*>(.*?)</a>', re.S)
+LOCAL_LINK_RE = re.compile(r'<a\b[^>]*\bhref="((?:\d\d[b-z]_[a-z0-9_]+\.html)?#[^"]+|\d\d[b-z]_[a-z0-9_]+\.html)"[^>]*>(.*?)</a>',
+                           re.S)
 
 
 def plain(fragment: str) -> str:
@@ -796,14 +965,17 @@ def search_sections(page: Page) -> list[SearchSection]:
     recap: list[tuple[str, str]] = []
     for anchor, heading, fragment in pieces:
         section = SearchSection(anchor, heading)
-        if page.md_name[:2].isdigit() and heading == "Recap":
+        if page.md_name[:2].isdigit() and heading == "Recap":  # a core page's or a sub-page's
             items, fragment = recap_items(fragment)
             recap += items
         split_by_kind(fragment, section)
         sections.append(section)
     by_anchor = {s.anchor: s for s in sections}
     for anchor, words in recap:
-        if anchor in by_anchor:
+        target, _, anchor = anchor.partition("#")
+        if target:  # an entry that links a sub-page of the chapter: taught there
+            page.recap_elsewhere.append((target, anchor, words))
+        elif anchor in by_anchor:
             by_anchor[anchor].recap.append(words)
     return [s for s in sections if s.heading or any(s.prose) or s.code or s.recap]
 
@@ -819,8 +991,14 @@ def search_index(pages: list[Page]) -> str:
     def joined(parts: list[str]) -> str:
         return " \u2022 ".join(p for p in parts if p.strip())
     data = {"pages": [[p.html_name, p.title, kind(p)] for p in pages], "sections": []}
+    cut = {page.html_name: search_sections(page) for page in pages}
+    for page in pages:  # a core page's recap entries that link its sub-pages' sections
+        for target, anchor, words in page.recap_elsewhere:
+            there = [s for s in cut.get(target, []) if s.anchor == anchor or (not anchor and s is cut[target][0])]
+            if there:
+                there[0].recap.append(words)
     for number, page in enumerate(pages):
-        for s in search_sections(page):
+        for s in cut[page.html_name]:
             data["sections"].append([number, s.anchor, s.heading, joined(s.recap), joined(s.prose),
                                      joined(s.code), joined(s.comments)])
     return ("// The book's search index, written by book/build_book.py; read by search.js.\n"
@@ -836,7 +1014,7 @@ def convert(page: Page) -> None:
             "toc": {"permalink": False},
         },
         output_format="html")
-    page.body = md.convert(page.markdown)
+    page.body = place_math(md.convert(page.markdown), page.math)
     page.toc = md.toc_tokens
     page.ids = set(re.findall(r'\bid="([^"]+)"', page.body))
 
@@ -893,7 +1071,8 @@ def sidebar(pages: list[Page], current: Page | None, prefix: str) -> str:
             part = part_of(page.md_name)
             items.append(f'<li class="part">{html.escape(part)}</li>')
         mark = ' class="current" aria-current="page"' if page is current else ""
-        item = f'<li><a href="{prefix}{page.html_name}"{mark}>{html.escape(page.title)}</a>'
+        sub = ' class="sub-page"' if SUB_PAGE_RE.match(page.md_name) else ""
+        item = f'<li{sub}><a href="{prefix}{page.html_name}"{mark}>{html.escape(page.title)}</a>'
         if page is current and page.toc:
             sections = [t for t in page.toc if t["level"] == 1]
             subs = sections[0]["children"] if len(sections) == 1 else page.toc
@@ -925,7 +1104,9 @@ def document(title: str, book_title: str, prefix: str, side: str, content: str) 
 <title>{html.escape(full_title)}</title>
 <link rel="stylesheet" href="{prefix}style.css">
 <link rel="stylesheet" href="{prefix}pygments.css">
+<link rel="stylesheet" href="{prefix}katex/katex.min.css">
 <script src="{prefix}search.js" defer></script>
+<script src="{prefix}katex/katex.min.js" defer></script>
 <script src="{prefix}book.js" defer></script>
 </head>
 <body>
@@ -986,33 +1167,71 @@ def render_source(root: Path, rel: str, pages: list[Page]) -> str:
 # What changed since the previous chapter
 # --------------------------------------------------------------------------
 
-# A chapter's own files, compared with the previous chapter's: its C++ (main.cpp
-# and local headers) and its shaders.
-CHANGE_SUFFIXES = (".cpp", ".hpp", ".vert", ".frag", ".comp", ".glsl")
+# A chapter's own files (every file of chapters/NN_name/ and shaders/NN_name/,
+# whatever its suffix: CMakeLists.txt, .rgen, .mesh ...), compared with those of
+# the chapter it builds on, and the files of common/ (or shaders/common/) it
+# adds or changes, shown whole. The page declares both at its top:
+#
+#   <!-- builds on: 22_shadows
+#        common: common/resources/include/vkt/resources/acceleration.hpp common/resources/src/acceleration.cpp -->
+#
+# Without that line a chapter builds on the chapter before it and touches no
+# file of common/.
 CHANGE_CONTEXT = 3  # unchanged lines shown around each change
+SHADER_SUFFIXES = (".vert", ".frag", ".comp", ".glsl", ".task", ".mesh", ".rgen", ".rchit", ".rmiss", ".rahit",
+                   ".rint", ".rcall", ".geom", ".tesc", ".tese")
+BUILDS_ON_RE = re.compile(r"\A\s*<!--\s*builds on:\s*(\S+)(?:\s+common:\s*(.*?))?\s*-->", re.S)
+
+
+@dataclass
+class Lineage:
+    base: str                 # "22_shadows": the chapter this one builds on
+    common: list[str]         # files of common/ or shaders/common/ it adds or changes
+    declared: bool            # whether the page says so (else: the chapter before, no common/)
+
+
+def chapter_lineage(root: Path, book: Path, page: Page, previous: str, chapters: set[str],
+                    problems: list[str]) -> Lineage:
+    """What a chapter page declares it builds on, checked: an earlier chapter, and
+    files of common/ that exist."""
+    text = (book / page.md_name).read_text(encoding="utf-8")
+    match = BUILDS_ON_RE.match(text)
+    if not match:
+        return Lineage(previous, [], False)
+    where = f"book/{page.md_name}:1"
+    base, common = match.group(1), (match.group(2) or "").split()
+    if base not in chapters or base >= page.md_name[:-3]:
+        problems.append(f"{where}: 'builds on: {base}' names no earlier chapter")
+        base = previous
+    for rel in common:
+        if not rel.startswith(("common/", "shaders/common/")) or not (root / rel).is_file():
+            problems.append(f"{where}: 'common: {rel}' is not a file of common/ or shaders/common/")
+    return Lineage(base, [rel for rel in common if (root / rel).is_file()], True)
 
 
 def chapter_files(root: Path, chapter: str) -> dict[str, str]:
     """A chapter's files as {name shown: path relative to the root}: chapters/NN_name/*
-    and shaders/NN_name/*, matched with the previous chapter's by that name."""
+    and shaders/NN_name/*, matched with the base chapter's by that name."""
     found = {}
     for folder, label in (("chapters", ""), ("shaders", "shaders/")):
         base = root / folder / chapter
         if base.is_dir():
-            for path in sorted(base.iterdir()):
-                if path.is_file() and path.suffix in CHANGE_SUFFIXES:
-                    found[label + path.name] = path.relative_to(root).as_posix()
+            for path in sorted(base.rglob("*")):
+                if path.is_file():
+                    found[label + path.relative_to(base).as_posix()] = path.relative_to(root).as_posix()
     return found
 
 
 def highlighted_lines(rel: str, text: str) -> list[str]:
     """A file's lines as highlighted HTML, one string per line (the highlighter closes
     its spans at each line end)."""
-    try:
-        lexer = get_lexer_for_filename(rel, stripnl=False)
-    except ClassNotFound:
-        lexer = get_lexer_by_name("glsl", stripnl=False) if rel.endswith((".vert", ".frag", ".comp", ".glsl")) \
-            else TextLexer(stripnl=False)
+    if rel.endswith(SHADER_SUFFIXES):
+        lexer = get_lexer_by_name("glsl", stripnl=False)
+    else:
+        try:
+            lexer = get_lexer_for_filename(rel, stripnl=False)
+        except ClassNotFound:
+            lexer = TextLexer(stripnl=False)
     code = pygments.highlight(text, lexer, HtmlFormatter(nowrap=True))
     lines = code.split("\n")
     return lines[:len(text.splitlines())]
@@ -1020,12 +1239,20 @@ def highlighted_lines(rel: str, text: str) -> list[str]:
 
 @dataclass
 class ChapterChanges:
-    chapter: str          # "07_uniform_buffers"
-    previous: str         # "06_push_constants"
+    chapter: str          # "24_ray_queries"
+    previous: str         # "22_shadows": the chapter it builds on
     html: str             # the diffs
     files: int            # files that differ, came or went
     added: int
     removed: int
+    named: list[str] = field(default_factory=list)     # every file the page names (repository paths)
+    common: int = 0       # files of common/ shown
+    common_lines: int = 0
+    declared: bool = False
+
+
+def file_anchor(name: str) -> str:
+    return re.sub(r"[^a-z0-9]+", "-", name.lower()).strip("-")
 
 
 def file_diff(name: str, old_rel: str | None, new_rel: str | None, root: Path) -> tuple[str, int, int]:
@@ -1059,16 +1286,30 @@ def file_diff(name: str, old_rel: str | None, new_rel: str | None, root: Path) -
         return "", 0, 0
     state = "new file" if not old_rel else "gone" if not new_rel else f"+{added} &minus;{removed}"
     title = new_rel or old_rel
-    body = (f'<h2 id="{html.escape(re.sub(r"[^a-z0-9]+", "-", name.lower()).strip("-"))}">'
+    body = (f'<h2 id="{html.escape(file_anchor(name))}">'
             f'<code>{html.escape(title)}</code> <span class="d-count">{state}</span></h2>\n')
     if not new_rel:
-        return body + f"<p>Not in this chapter: the previous chapter's own ({len(old_lines)} lines).</p>\n", 0, removed
+        return (body + f"<p>Not in this chapter: the base chapter's own ({len(old_lines)} lines, "
+                f"<code>{html.escape(old_rel)}</code>).</p>\n", 0, removed)
     return body + '<div class="highlight diff"><pre><code>' + "".join(rows) + "</code></pre></div>\n", added, removed
 
 
-def chapter_changes(root: Path, chapter: str, previous: str) -> ChapterChanges:
+def common_file(rel: str, root: Path) -> tuple[str, int]:
+    """A file of common/ that the chapter adds or changes, shown whole, its lines numbered."""
+    text = (root / rel).read_text(encoding="utf-8")
+    lines = highlighted_lines(rel, text)
+    rows = "".join(f'<span class="d-ctx"><span class="d-no"></span><span class="d-no">{n}</span>'
+                   f'<span class="d-sign"> </span>{code}</span>' for n, code in enumerate(lines, start=1))
+    body = (f'<h2 id="{html.escape(file_anchor(rel))}"><code>{html.escape(rel)}</code> '
+            f'<span class="d-count">in common, {len(lines)} lines</span></h2>\n'
+            f'<div class="highlight diff"><pre><code>{rows}</code></pre></div>\n')
+    return body, len(lines)
+
+
+def chapter_changes(root: Path, chapter: str, lineage: Lineage) -> ChapterChanges:
+    previous = lineage.base
     old, new = chapter_files(root, previous), chapter_files(root, chapter)
-    parts, files, added, removed = [], 0, 0, 0
+    parts, files, added, removed, same = [], 0, 0, 0, []
     names = sorted(set(old) | set(new), key=lambda n: (n.startswith("shaders/"), n != "main.cpp", n))
     for name in names:
         piece, plus, minus = file_diff(name, old.get(name), new.get(name), root)
@@ -1077,7 +1318,22 @@ def chapter_changes(root: Path, chapter: str, previous: str) -> ChapterChanges:
             files += 1
             added += plus
             removed += minus
-    return ChapterChanges(chapter, previous, "".join(parts), files, added, removed)
+        elif name in new:
+            same.append(new[name])
+    if same:
+        parts.append('<h2 id="unchanged">Unchanged</h2>\n<p>The same, line for line, as in chapter '
+                     f'{previous[:2]}: ' + ", ".join(f"<code>{html.escape(rel)}</code>" for rel in same) + ".</p>\n")
+    common_lines = 0
+    if lineage.common:
+        parts.append('<h2 id="common">In common/</h2>\n<p>The files of the helper library (and the shared '
+                     'shaders) that this chapter adds or changes, whole: what later chapters call.</p>\n')
+        for rel in lineage.common:
+            piece, count = common_file(rel, root)
+            parts.append(piece)
+            common_lines += count
+    named = sorted(new.values()) + list(lineage.common)
+    return ChapterChanges(chapter, previous, "".join(parts), files, added, removed, named, len(lineage.common),
+                          common_lines, lineage.declared)
 
 
 def changes_page_name(chapter: str) -> str:
@@ -1085,22 +1341,31 @@ def changes_page_name(chapter: str) -> str:
 
 
 def changes_link(changes: ChapterChanges) -> str:
-    return (f'<p class="changes-link"><a href="{changes_page_name(changes.chapter)}">What changed since chapter '
-            f'{changes.previous[:2]}</a>: {changes.files} file{"s" if changes.files != 1 else ""}, '
-            f'+{changes.added} &minus;{changes.removed} lines in its own folders.</p>')
+    common = ""
+    if changes.common:
+        common = (f"; and {changes.common} file{'s' if changes.common != 1 else ''} of <code>common/</code> "
+                  "it adds or changes")
+    return (f'<p class="changes-link">Builds on <a href="{changes.previous}.html">chapter {changes.previous[:2]}</a>: '
+            f'<a href="{changes_page_name(changes.chapter)}">what changed since it</a>, {changes.files} '
+            f'file{"s" if changes.files != 1 else ""}, +{changes.added} &minus;{changes.removed} lines in its own '
+            f'folders{common}.</p>')
 
 
 def render_changes(changes: ChapterChanges, page: Page, previous: Page, pages: list[Page]) -> str:
     title = f"Changes from chapter {changes.previous[:2]} to {changes.chapter[:2]}"
+    common = ""
+    if changes.common:
+        common = (f" Then the {changes.common} file{'s' if changes.common != 1 else ''} of <code>common/</code> "
+                  f"that this chapter adds or changes, whole ({changes.common_lines} lines).")
     content = (f'<main class="changes"><article>\n<h1>{html.escape(title)}</h1>\n'
-               f'<p>Chapter <a href="{page.html_name}">{html.escape(page.title)}</a> against '
-               f'<a href="{previous.html_name}">{html.escape(previous.title)}</a>: each file of '
+               f'<p>Chapter <a href="{page.html_name}">{html.escape(page.title)}</a> against the chapter it '
+               f'builds on, <a href="{previous.html_name}">{html.escape(previous.title)}</a>: each file of '
                f'<code>chapters/{changes.chapter}/</code> and <code>shaders/{changes.chapter}/</code> beside the '
                f'file of the same name in chapter {changes.previous[:2]}\'s folders, the lines that went in red '
-               f'(&minus;), those that came in green (+), {CHANGE_CONTEXT} unchanged lines around each change. '
-               f'What both chapters take from <code>common/</code> is not shown. {changes.files} '
-               f'file{"s" if changes.files != 1 else ""}, +{changes.added} &minus;{changes.removed} lines.</p>\n'
-               f'{changes.html}</article></main>')
+               f'(&minus;), those that came in green (+), {CHANGE_CONTEXT} unchanged lines around each change; '
+               f'the files that did not change are named after them. {changes.files} '
+               f'file{"s" if changes.files != 1 else ""}, +{changes.added} &minus;{changes.removed} lines.'
+               f'{common}</p>\n{changes.html}</article></main>')
     return document(title, pages[0].title, "", sidebar(pages, None, ""), content)
 
 
@@ -1109,6 +1374,7 @@ def render_changes(changes: ChapterChanges, page: Page, previous: Page, pages: l
 # --------------------------------------------------------------------------
 
 PRINT_PAGE = "book.html"
+CHANGES_LINK_RE = re.compile(r'<p class="changes-link">.*?</p>\n?', re.S)
 ID_ATTR_RE = re.compile(r'\bid="([^"]*)"')
 HREF_RE = re.compile(r'<a\b([^>]*?)\bhref="([^"]*)"')
 
@@ -1119,7 +1385,10 @@ def print_body(page: Page, page_names: set[str]) -> str:
     book's pages, to a source file or a picture, keeps its words and loses its
     target: a printed page cannot follow it)."""
     stem = page.html_name[:-5]
-    body = ID_ATTR_RE.sub(lambda m: f'id="{stem}--{m.group(1)}"', page.body)
+    # The changes pages are for the screen (a diff beside the sources); the print
+    # drops the line that links one rather than print a link that goes nowhere.
+    body = CHANGES_LINK_RE.sub("", page.body)
+    body = ID_ATTR_RE.sub(lambda m: f'id="{stem}--{m.group(1)}"', body)
 
     def link(match: re.Match) -> str:
         attrs, target = match.group(1), html.unescape(match.group(2))
@@ -1151,6 +1420,8 @@ def render_print(pages: list[Page]) -> str:
 <title>{html.escape(title)}</title>
 <link rel="stylesheet" href="style.css">
 <link rel="stylesheet" href="pygments.css">
+<link rel="stylesheet" href="katex/katex.min.css">
+<script src="katex/katex.min.js" defer></script>
 <script src="book.js" defer></script>
 </head>
 <body class="print-book">
@@ -1184,7 +1455,7 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     pages = [Page(name) for name in page_order(names)]
     numbers = {}
     for page in pages:
-        if page.md_name[:2].isdigit():
+        if is_chapter(page.md_name):
             if page.md_name[:2] in numbers:
                 problems.append(f"book/{page.md_name}: chapter number {page.md_name[:2]} is also "
                                 f"used by book/{numbers[page.md_name[:2]]}")
@@ -1202,12 +1473,15 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
         for folder in sorted(chapters.iterdir()):
             if folder.is_dir() and folder.name[:2].isdigit() and f"{folder.name}.md" not in page_names_md:
                 problems.append(f"chapters/{folder.name} has no page book/{folder.name}.md")
+    cores = {page.md_name[:2]: page for page in pages if is_chapter(page.md_name)}
     for page in pages:
-        if page.md_name[:2].isdigit():
+        if is_chapter(page.md_name):
             problems.extend(check_chapter_page(book, page))
+        elif SUB_PAGE_RE.match(page.md_name):
+            problems.extend(check_sub_page(book, page, cores.get(page.md_name[:2])))
     for page in pages:
         golden = f"tests/golden/{page.md_name[:-3]}.png"
-        if page.md_name[:2].isdigit() and (root / golden).exists() and golden not in page.markdown:
+        if is_chapter(page.md_name) and (root / golden).exists() and golden not in page.markdown:
             problems.append(f"book/{page.md_name}: does not show the chapter's picture, {golden}")
 
     # Every marker in the chapters, the helper library and the shaders must be
@@ -1241,15 +1515,21 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
             assets.diagram_svgs[name] = render_diagram(root, source)
         except BookError as error:
             problems.append(str(error))
+            continue
+        svg_words = html.unescape(re.sub(r"<[^>]+>", " ", assets.diagram_svgs[name]))
+        problems.extend(frame_name_problems(re.sub(r"\s+", " ", svg_words),
+                                            source.relative_to(root).as_posix()))
 
     # Each chapter after the first: what changed since the one before, linked
     # from the top of its page.
-    chapter_pages = [p for p in pages if p.md_name[:2].isdigit()]
+    chapter_pages = [p for p in pages if is_chapter(p.md_name)]
+    chapter_names = {p.md_name[:-3] for p in chapter_pages}
     changes: list[tuple[ChapterChanges, Page, Page]] = []
     for previous, page in zip(chapter_pages, chapter_pages[1:]):
-        found = chapter_changes(root, page.md_name[:-3], previous.md_name[:-3])
-        if found.files:
-            changes.append((found, page, previous))
+        lineage = chapter_lineage(root, book, page, previous.md_name[:-3], chapter_names, problems)
+        found = chapter_changes(root, page.md_name[:-3], lineage)
+        if found.files or found.common:
+            changes.append((found, page, by_name[lineage.base + ".md"]))
             page.body = re.sub(r"(</h1>)", lambda m: m.group(1) + "\n" + changes_link(found), page.body, count=1)
 
     svgs = dict(assets.diagram_svgs)
@@ -1271,6 +1551,17 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     shutil.copyfile(THEME / "style.css", out / "style.css")
     shutil.copyfile(THEME / "search.js", out / "search.js")
     shutil.copyfile(THEME / "book.js", out / "book.js")
+    # KaTeX, for the maths: its script, its stylesheet and the fonts beside it, so
+    # that the book typesets offline (and in the PDF, which Chromium prints from it).
+    if not all((KATEX_DIR / name).is_file() for name in KATEX_FILES):
+        raise BookError(f"KaTeX is not in {KATEX_DIR} (the book typesets its maths with it): "
+                        "apt install libjs-katex, or set VKT_KATEX_DIR to a folder with katex.min.js, "
+                        "katex.min.css and fonts/")
+    (out / "katex" / "fonts").mkdir(parents=True, exist_ok=True)
+    for name in KATEX_FILES:
+        shutil.copyfile(KATEX_DIR / name, out / "katex" / name)
+    for font in sorted((KATEX_DIR / "fonts").glob("KaTeX_*.woff2")):
+        shutil.copyfile(font, out / "katex" / "fonts" / font.name)
     (out / "pygments.css").write_text(pygments_css(), encoding="utf-8")
     (out / "search-index.js").write_text(search_index(pages), encoding="utf-8")
     written += 5
@@ -1280,8 +1571,11 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
     (out / PRINT_PAGE).write_text(render_print(pages), encoding="utf-8")
     written += 1
     for found, page, previous in changes:
-        (out / changes_page_name(found.chapter)).write_text(render_changes(found, page, previous, pages),
-                                                           encoding="utf-8")
+        text = render_changes(found, page, previous, pages)
+        missing = [rel for rel in found.named if f"<code>{html.escape(rel)}</code>" not in text]
+        if missing:  # every file of the chapter is on its changes page, diffed or named
+            raise BookError(f"{changes_page_name(found.chapter)}: does not show {', '.join(missing)}")
+        (out / changes_page_name(found.chapter)).write_text(text, encoding="utf-8")
         written += 1
     if assets.images or assets.diagram_svgs:
         (out / "images").mkdir(exist_ok=True)

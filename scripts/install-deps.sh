@@ -32,7 +32,7 @@ apt_common=(
   libglfw3-dev libglm-dev libtinygltf-dev libpng-dev libjpeg-dev libstb-dev libx11-dev
   libimgui-dev
   xvfb xauth xdotool openbox wmctrl stress-ng
-  python3 python3-markdown python3-pygments
+  python3 python3-markdown python3-pygments libjs-katex
   python3-matplotlib python3-pil fonts-dejavu-core graphviz shellcheck clang clang-tidy
   clang-format nlohmann-json3-dev gdb
 )
@@ -58,7 +58,7 @@ fedora_packages=(
   mesa-vulkan-drivers glfw-devel glm-devel tinygltf-devel libpng-devel libjpeg-turbo-devel
   stb-devel catch-devel libX11-devel imgui-devel
   xorg-x11-server-Xvfb xorg-x11-xauth xdotool openbox wmctrl stress-ng
-  python3 python3-markdown python3-pygments python3-matplotlib graphviz chromium
+  python3 python3-markdown python3-pygments python3-matplotlib graphviz chromium js-katex
   ShellCheck clang clang-tools-extra compiler-rt json-devel gdb
 )
 arch_packages=(
@@ -66,7 +66,7 @@ arch_packages=(
   vulkan-icd-loader vulkan-headers vulkan-validation-layers glslang vulkan-tools
   vulkan-swrast glfw glm tinygltf libpng libjpeg-turbo stb catch2 libx11 imgui
   xorg-server-xvfb xorg-xauth xdotool openbox wmctrl stress-ng
-  python python-markdown python-pygments python-matplotlib graphviz chromium
+  python python-markdown python-pygments python-matplotlib graphviz chromium katex
   shellcheck clang compiler-rt nlohmann-json gdb
 )
 

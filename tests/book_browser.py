@@ -17,7 +17,7 @@ the run fails on:
 It also types each of SEARCH_QUERIES into the search box of the index and
 checks that the first result is the chapter that teaches it, linked at the
 section that does (vkCmdPipelineBarrier2: chapter 03's barriers of a frame;
-quaternion: 14; subgroup: 20; ...), with no raw `//` comment in any snippet,
+quaternion: 14; subgroup: 20d, a sub-page of 20; ...), with no raw `//` comment in any snippet,
 and checks that every chart that
 benchmarks/plots.py draws is in the book with labelled axes and a legend (as
 SVG text).
@@ -68,7 +68,7 @@ FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-ne
 SEARCH_QUERIES = (
     ("vkCmdPipelineBarrier2", "03_swapchain.html", r"the-barriers-of-a-frame"),
     ("quaternion", "14_physics.html", r"a-rigid-body-that-turns|.*(?:orientation|quaternion|turns).*"),
-    ("subgroup", "20_ndim_compute.html", r"boxes|.*subgroup.*"),
+    ("subgroup", "20d_binning.html", r"boxes|.*subgroup.*"),
     ("G-buffer", "16_deferred.html", r"the-g-buffer-what-to-store-in-which-format"),
     ("descriptor", "07_uniform_buffers.html", r"the-descriptor-set-layout"),
     ("push constants", "06_push_constants.html", r"the-push-constant-block|06-push-constants"),
@@ -86,7 +86,15 @@ SEARCH_QUERIES = (
     ("glTF", "10_gltf.html", r"what-is-in-a-gltf-file"),
     ("secondary command buffer", "27_threads.html", r"a-secondary-command-buffer-inside-dynamic-rendering"),
     ("pipeline cache", "27_threads.html", r"a-pipeline-cache-on-disk"),
+    ("shader binding table", "25_ray_tracing.html", r"the-shader-binding-table"),
+    ("frames in flight", "03_swapchain.html", r"frames-in-flight"),
+    ("PCF", "22_shadows.html", r"looking-a-point-up-cascade-compare-filter"),
 )
+# The "taught here" mark: on these queries' first result (the chapter that
+# teaches the whole phrase first, in a heading or its recap) and on no other
+# result of any query (it once marked 14 for "shader binding table", and 17 and
+# 21 for "frames in flight").
+TAUGHT_QUERIES = ("shader binding table", "frames in flight", "PCF", "descriptor", "queue family")
 
 
 class Failure(Exception):
@@ -322,6 +330,7 @@ new Promise((resolve) => {
     if (items.length || Date.now() - start > 10000) {
       resolve({links: items.map(li => li.querySelector('a').getAttribute('href')),
                snippets: items.map(li => (li.querySelector('.snippet') || {}).textContent || ''),
+               taught: items.map(li => !!li.querySelector('.taught')),
                status: (document.querySelector('.search-status') || {}).textContent || ''});
     } else {
       setTimeout(poll, 50);
@@ -375,22 +384,34 @@ def check_figures(figures: list[tuple[str, int, dict]], svg_text: dict) -> tuple
     return problems, note
 
 
-def check_changes(book: Path) -> list[str]:
-    """Every chapter after the first links, at its top, to its changes since the one
-    before (changes_NN_name.html), which shows its main.cpp against the previous one's."""
+def check_changes(book: Path, root: Path = ROOT) -> list[str]:
+    """Every chapter after the first links, at its top, to its changes since the chapter
+    it builds on (changes_NN_name.html), which names every file of the chapter's own
+    folders (chapters/NN_name/ and shaders/NN_name/, whatever the suffix) and each file
+    of common/ that the page declares it adds or changes (its first line,
+    `<!-- builds on: NN_name common: ... -->`)."""
     problems = []
     chapters = sorted(p for p in book.glob("[0-9][0-9]_*.html"))
     for page in chapters[1:]:
         text = page.read_text(encoding="utf-8")
-        link = re.search(r'<p class="changes-link"><a href="(changes_[^"]+\.html)"', text)
+        link = re.search(r'<p class="changes-link">.*?<a href="(changes_[^"]+\.html)"', text, re.S)
         if not link or text.find('class="changes-link"') > text.find("</h1>") + 200:
-            problems.append(f"{page.name}: no link to its changes since the previous chapter under its title")
+            problems.append(f"{page.name}: no link to its changes since the chapter it builds on under its title")
             continue
         changes = book / link.group(1)
         if not changes.is_file():
             problems.append(f"{page.name}: its changes page {link.group(1)} does not exist")
-        elif f"chapters/{page.stem}/main.cpp" not in changes.read_text(encoding="utf-8"):
-            problems.append(f"{link.group(1)}: no diff of chapters/{page.stem}/main.cpp")
+            continue
+        shown = changes.read_text(encoding="utf-8")
+        files = [path.relative_to(root).as_posix() for folder in ("chapters", "shaders")
+                 for path in sorted((root / folder / page.stem).rglob("*")) if path.is_file()]
+        source = root / "book" / (page.stem + ".md")
+        header = re.match(r"\s*<!--\s*builds on:\s*\S+(?:\s+common:\s*(.*?))?\s*-->",
+                          source.read_text(encoding="utf-8") if source.is_file() else "", re.S)
+        files += (header.group(1) or "").split() if header else []
+        for rel in files:
+            if f"<code>{html.escape(rel)}</code>" not in shown:
+                problems.append(f"{link.group(1)}: {rel}, a file of chapter {page.stem[:2]}, is missing")
     return problems
 
 
@@ -412,6 +433,12 @@ def check_search(found: dict, query: str, page: str, section: str, book: Path, l
                         f"teaches it ({section}) (the results: {results})")
     elif anchor not in links.anchors(book / page):
         problems.append(f"search: '{query}' links {first}, which has no such section")
+    marked = [link for link, mark in zip(found["links"], found.get("taught", [])) if mark]
+    if query in TAUGHT_QUERIES and marked != found["links"][:1]:
+        problems.append(f"search: '{query}' marks {marked or 'no result'} 'taught here', not only its first "
+                        f"result {found['links'][0]}")
+    elif len(marked) > 1:
+        problems.append(f"search: '{query}' marks {marked} 'taught here': one result at most")
     for link, text in zip(found["links"], found["snippets"]):
         if re.search(r"(^|\s)//", text):
             problems.append(f"search: '{query}': the snippet of {link} shows a raw '//' comment: {text[:80]!r}")
@@ -562,6 +589,10 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--figure-fixture", action="store_true",
                         help="no browser: run the figure-text check on two made-up figures, one too small "
                              "as shown at 1280 px, and print what it finds (the check's own test)")
+    parser.add_argument("--changes-only", action="store_true",
+                        help="no browser: check only that each changes page names every file of its chapter")
+    parser.add_argument("--root", type=Path, default=ROOT,
+                        help="the repository the book was built from (default: this one)")
     parser.add_argument("--chromium", default="",
                         help="the browser (default: the first of " + ", ".join(CHROMIUM_NAMES) + ")")
     parser.add_argument("--skip-without-chromium", action="store_true",
@@ -593,6 +624,15 @@ def main(argv: list[str]) -> int:
     if not (book / "index.html").is_file():
         print(f"book_browser.py: {book} holds no built book (no index.html)", file=sys.stderr)
         return 1
+    if args.changes_only:
+        problems = check_changes(book, args.root.resolve())
+        for problem in problems:
+            print(f"book_browser.py: {problem}", file=sys.stderr)
+        if problems:
+            return 1
+        print(f"book_browser.py: every changes page names every file of its chapter and the files of common/ "
+              f"its page declares ({len(list(book.glob('changes_*.html')))} pages)")
+        return 0
     chromium = find_chromium(args.chromium)
     if not chromium:
         tried = args.chromium or ", ".join(CHROMIUM_NAMES)

@@ -107,6 +107,14 @@ def main(argv: list[str]) -> int:
               "chromium", file=sys.stderr)
         return 1
 
+    # A link the PDF cannot follow is not printed as one: the screen's "What
+    # changed since chapter NN" line links a page the PDF does not hold.
+    printed = source.read_text(encoding="utf-8")
+    if "changes_" in printed:
+        print("book_pdf.py: book.html links a changes page (changes_NN_name.html), which the PDF does not hold",
+              file=sys.stderr)
+        return 1
+
     chapters = {}
     for page in sorted(book.glob("[0-9][0-9]_*.html")):
         title = re.search(r"<h1[^>]*>(.*?)</h1>", page.read_text(encoding="utf-8"), re.S)
@@ -127,6 +135,10 @@ def main(argv: list[str]) -> int:
         print(f"book_pdf.py: Chromium did not print the book (status {run.returncode}): {last}", file=sys.stderr)
         return 1
     problems, summary = check_pdf(target.read_bytes(), chapters)
+    # The maths is typeset in the PDF too: KaTeX's fonts are embedded, not the TeX printed.
+    if 'class="math' in printed and not re.search(rb"/BaseFont\s*/[A-Z]+\+KaTeX_Main", target.read_bytes()):
+        problems.append("book.pdf: the book has maths but embeds no KaTeX font: it printed before KaTeX "
+                        "typeset it, or without it")
     for problem in problems:
         print(f"book_pdf.py: {problem}", file=sys.stderr)
     if problems:

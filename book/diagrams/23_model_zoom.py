@@ -29,7 +29,7 @@ def main() -> None:
             "enlarged 5 times: a red and white checker, a dark polished metal stud on every square "
             "with a small highlight, a darker ring where each stud meets the square, and an orange "
             "glowing ring in the middle of each face. The left cube has tangents in the file, the "
-            "right one has them made in the shader; they look the same.")
+            "right one has them made in the shader; both show the same round raised studs, though the cubes stand at different angles.")
     s.text(20, 28, "--model assets/gltf/pbr_cubes.gltf at 320x240, enlarged 5 times", size=14, bold=True)
     enlarged(s, read_png(GOLDEN / "23_materials_model.png"), LEFT, TOP, CROP_W, CROP_H, X0, Y0, ZOOM)
     for point, diameter in MARKS:

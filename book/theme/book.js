@@ -11,6 +11,8 @@
 //
 // A table wider than the column scrolls sideways in its own box; the line
 // above it that says so is shown only where that is the case.
+//
+// And the maths is typeset, by KaTeX (typeset(), below).
 (function () {
   "use strict";
 
@@ -71,7 +73,28 @@
     }
   }
 
+  // The maths: each <span class="math"> and <div class="math display"> holds TeX,
+  // typeset by KaTeX (katex/katex.min.js, Debian's libjs-katex, loaded before this
+  // script). A formula KaTeX cannot parse stays as TeX and is a console error, which
+  // the browser test reports.
+  function typeset() {
+    var formulas = document.querySelectorAll(".math");
+    if (!formulas.length) return;
+    if (!window.katex) { console.error("KaTeX did not load (katex/katex.min.js): the maths shows as TeX"); return; }
+    for (var i = 0; i < formulas.length; i++) {
+      var tex = formulas[i].textContent;
+      try {
+        window.katex.render(tex, formulas[i], {displayMode: formulas[i].classList.contains("display"),
+                                               throwOnError: true, output: "htmlAndMathml"});
+        formulas[i].setAttribute("data-tex", tex);
+      } catch (error) {
+        console.error("KaTeX cannot typeset '" + tex + "': " + error.message);
+      }
+    }
+  }
+
   function init() {
+    typeset();
     var links = document.querySelectorAll("a.figure[data-width]");
     for (var i = 0; i < links.length; i++) {
       links[i].addEventListener("click", function (event) {

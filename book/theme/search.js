@@ -18,7 +18,9 @@
 // order with the word in a heading or its recap (where it is introduced), all
 // times 1 for a chapter or an appendix, 0.6 for the performance part and 0.4
 // for the index. Only pages holding every word are listed; ties go to the page
-// that comes first in reading order. Each result links to its best section;
+// that comes first in reading order. The one result marked "taught here" is
+// the first chapter whose best section has the whole query in its heading or
+// its recap entry. Each result links to its best section;
 // its snippet comes from that section's prose, else its code, else its
 // comments (shown as words, without the `//`).
 // index.html?q=WORDS opens with the results for WORDS.
@@ -100,9 +102,16 @@
     if (!words.length) return [];
     var pages = index.pages.map(function (page, i) {
       return {page: i, hits: words.map(function () { return 0; }), taught: words.map(function () { return false; }),
-              best: -1, bestScore: -1, where: -1, bonus: 0};
+              best: -1, bestScore: -1, where: -1, bonus: 0, teaches: false, taughtHere: false};
     });
     var phrase = words.join(" ");
+    // The whole query as a phrase, each word with its endings ("frames in flight"
+    // for "frame in flight"): what a heading or a recap entry must hold for the
+    // "taught here" mark.
+    var taughtPhrase = new RegExp("(?:^|[^a-z0-9])" + words.map(function (w) {
+      var root = w.length > 4 ? w.replace(/(?:ies|y)$/, "") : w;  // "family" and "families"
+      return root.replace(/[.*+?^${}()|[\]\\]/g, "\\$&");
+    }).join("[a-z0-9]*[\\s\\-]+") + "[a-z0-9]*");
     lowered.forEach(function (fields, s) {
       var p = pages[index.sections[s][0]], score = 0, where = -1;
       words.forEach(function (w, k) {
@@ -133,6 +142,15 @@
       words.forEach(function (w) { if (title.indexOf(w) !== -1) p.bonus += 10; });
       p.score = (p.bestScore + breadth + p.bonus) * (KIND_WEIGHT[index.pages[p.page][2]] || 1);
     });
+    // "Taught here" marks one page at most: the first chapter in reading order
+    // whose best section holds the whole phrase in its heading or its recap entry.
+    var teacher = null;
+    found.forEach(function (p) {
+      var best = lowered[p.best];
+      p.teaches = taughtPhrase.test(best[HEADING]) || taughtPhrase.test(best[RECAP]);
+      if (index.pages[p.page][2] === "chapter" && p.teaches && (!teacher || p.page < teacher.page)) teacher = p;
+    });
+    if (teacher) teacher.taughtHere = true;
     found.sort(function (a, b) { return b.score - a.score || a.page - b.page; });
     return found.map(function (p) { p.words = words; return p; });
   }
@@ -194,7 +212,7 @@
       link.href = base + page[0] + (section[1] ? "#" + section[1] : "");
       link.textContent = page[1];
       item.appendChild(link);
-      if (r.where === HEADING || r.where === RECAP) {
+      if (r.taughtHere) {
         var taught = document.createElement("span");
         taught.className = "taught";
         taught.textContent = " taught here";

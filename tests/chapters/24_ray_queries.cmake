@@ -33,7 +33,7 @@ vkt_chapter_test(chapter.24_ray_queries.moved_update 24_ray_queries
   SAME_AS chapter.24_ray_queries.moved_rebuild ${VKT_24_PIXEL}
   ARGS --headless --validation --frames 40 --size ${VKT_TEST_SIZE} --tlas update)
 # And the comparison sees a shadow left where the objects were: the refitted
-# top level at frame 40 against the rebuilt one at frame 10 (the objects
+# top level at frame 39 against the rebuilt one at frame 9 (the objects
 # have moved since) must fail, naming the picture.
 vkt_chapter_test(chapter.24_ray_queries.moved_differs 24_ray_queries
   SAME_AS chapter.24_ray_queries.rebuild
