@@ -13,7 +13,7 @@ inline void check_flags(const vkt::Options& options) {
     if (model && options.has("--verify"))
         throw vkt::UsageError("--verify checks the generated spheres: leave out --model");
     const std::string verify = options.has("--verify") ? options.text("--verify") : "";
-    const std::string view = options.text("--view");
+    const std::string& view = options.text("--view");
     const bool uniform = options.text("--sky") == "uniform";
     if (verify == "furnace" && !furnace)
         throw vkt::UsageError("--verify furnace needs --scene furnace");
