@@ -86,6 +86,7 @@ SEARCH_QUERIES = (
     ("glTF", "10_gltf.html", r"what-is-in-a-gltf-file"),
     ("secondary command buffer", "27_threads.html", r"a-secondary-command-buffer-inside-dynamic-rendering"),
     ("pipeline cache", "27_threads.html", r"a-pipeline-cache-on-disk"),
+    ("timeline semaphore", "29_async_compute.html", r"timeline-semaphores"),
 )
 
 

@@ -31,8 +31,11 @@
 namespace {
 
 constexpr VkFormat hdr_format = VK_FORMAT_R16G16B16A16_SFLOAT;
-// Scenes in flight: the one the tone map shows, and the one drawn ahead.
-constexpr uint32_t slots = 2;
+// Scenes in flight: the one a tone map shows, the one drawn ahead, and a
+// third the host records into meanwhile. With two, drawing scene N + 2
+// would wait for tone map N, just submitted: the graphics queue would run
+// dry every frame while the host woke up and submitted (the H200 showed it).
+constexpr uint32_t slots = 3;
 
 struct ScenePush {
     float width, height, time;
@@ -52,7 +55,8 @@ public:
           async_(context.options.text("--queues") == "async"),
           lamps_(uint32_t(context.options.integer("--lamps"))),
           bloom_strength_(float(context.options.number("--bloom"))),
-          blooms_{vkt::Bloom(gpu_, context.chapter), vkt::Bloom(gpu_, context.chapter)},
+          blooms_{vkt::Bloom(gpu_, context.chapter), vkt::Bloom(gpu_, context.chapter),
+                  vkt::Bloom(gpu_, context.chapter)},
           scene_done_(ch29::create_timeline(gpu_.device)),
           bloom_done_(ch29::create_timeline(gpu_.device)),
           frame_done_(ch29::create_timeline(gpu_.device)) {
