@@ -1,7 +1,8 @@
 #version 450
 // Chapter 29's scene, drawn by the graphics queue into the HDR image: a dusk
-// gradient and --lamps bright discs on slow orbits, far brighter than white
-// (radiance up to 24), so that chapter 23's bloom has light to spread. Each
+// gradient with stars and --lamps bright discs on slow orbits, far brighter
+// than white (radiance up to 24), so that chapter 23's bloom has light to
+// spread. Each
 // pixel adds up every lamp: --lamps sets how much graphics work a frame has.
 layout(push_constant) uniform Scene {
     vec2 size;    // the image, in pixels
@@ -15,10 +16,19 @@ layout(location = 0) out vec4 radiance;
 const vec3 sky_top = vec3(0.02, 0.03, 0.08);
 const vec3 sky_bottom = vec3(0.10, 0.05, 0.12);
 const float lamp_radius = 0.04;  // of the image's height
+const float star = 0.6;          // a star's radiance
 
 void main() {
     vec2 p = (gl_FragCoord.xy - 0.5 * scene.size) / scene.size.y;  // height 1, centre 0
     vec3 sum = mix(sky_top, sky_bottom, gl_FragCoord.y / scene.size.y);
+    // Stars: single pixels, about one in 300, picked by an integer hash of
+    // the pixel (the same on every device): sharp points that a blurred or
+    // shifted picture would not keep.
+    uvec2 q = uvec2(gl_FragCoord.xy);
+    uint h = (q.x * 73856093u) ^ (q.y * 19349663u);
+    h = (h ^ (h >> 13u)) * 0x5bd1e995u;
+    h ^= h >> 15u;
+    if (h % 300u == 7u) sum += vec3(star);
     for (uint i = 0u; i < scene.lamps; ++i) {
         float k = float(i);
         // Lamp i: an ellipse of its own, at its own speed; its colour from
