@@ -10,7 +10,6 @@
 // scaled by the exposure and squeezed into 0..1 by a tone curve (ACES).
 
 #include "blocks.hpp"
-#include "bloom.hpp"
 #include "environment.hpp"
 #include "flags.hpp"
 #include "grid.hpp"
@@ -22,6 +21,7 @@
 #include "vkt/core/check.hpp"
 #include "vkt/core/files.hpp"
 #include "vkt/frame/runner.hpp"
+#include "vkt/resources/bloom.hpp"
 #include "vkt/resources/depth.hpp"
 #include "vkt/resources/pipeline.hpp"
 #include "vkt/resources/rendering.hpp"
@@ -293,7 +293,7 @@ public:
             VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
         if (bloom_strength_ > 0.0f) {
             auto bloom_scope = frame.gpu_scope("bloom");
-            bloom_.record(cmd);
+            bloom_.record(cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
         }
         auto scope = frame.gpu_scope("tone map");
         vkt::begin_colour_rendering(cmd, frame.target_view, frame.extent,
@@ -355,7 +355,7 @@ private:
     uint32_t tone_map_;   // 0: ACES, 1: clamp
     float sky_scale_ = 1.0f;
     float bloom_strength_;  // 0: no bloom
-    Bloom bloom_;
+    vkt::Bloom bloom_;
     VkExtent2D extent_{};
     vkt::GltfScene scene_;
     std::optional<MaterialSets> materials_;
