@@ -89,6 +89,7 @@ SEARCH_QUERIES = (
     ("shader binding table", "25_ray_tracing.html", r"the-shader-binding-table"),
     ("frames in flight", "03_swapchain.html", r"frames-in-flight"),
     ("PCF", "22_shadows.html", r"looking-a-point-up-cascade-compare-filter"),
+    ("timeline semaphore", "29_async_compute.html", r"timeline-semaphores"),
 )
 # The "taught here" mark: on these queries' first result (the chapter that
 # teaches the whole phrase first, in a heading or its recap) and on no other

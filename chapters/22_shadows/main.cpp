@@ -11,6 +11,7 @@
 // texels as those far away.
 
 #include "cascades.hpp"
+#include "map_view.hpp"
 #include "scene.hpp"
 #include "uniforms.hpp"
 
@@ -42,7 +43,8 @@ public:
         : physical_(context.physical),
           device_(context.device),
           cascades_(uint32_t(context.options.integer("--cascades"))),
-          colour_cascades_(context.options.text("--view") == "cascades") {
+          colour_cascades_(context.options.text("--view") == "cascades"),
+          show_map_(context.options.text("--view") == "map") {
         vkt::shapes::MeshBuilder meshes;
         draws_ = make_scene(meshes);
         const vkt::Gpu gpu = context.gpu();
@@ -168,13 +170,18 @@ public:
                                                             .cull_mode = VK_CULL_MODE_BACK_BIT,
                                                             .color_formats = {context.color_format},
                                                             .depth_format = depth_format_});
+        if (show_map_)
+            map_view_ = MapView(device_, context.chapter, context.color_format,
+                                shadow_views_.back(), cascades_);
         resize(context.extent);
         std::fprintf(stderr,
                      "22_shadows: %u cascades of %ux%u, splits at %.1f %.1f %.1f %.1f, bias %.2f "
                      "+ %.2f x slope%s\n",
                      cascades_, shadow_size, shadow_size, block_.splits[0], block_.splits[1],
                      block_.splits[2], block_.splits[3], bias_constant_, bias_slope_,
-                     colour_cascades_ ? ", cascades coloured" : "");
+                     colour_cascades_ ? ", cascades coloured"
+                     : show_map_      ? ", the shadow map shown"
+                                      : "");
     }
 
     // [overlay]
@@ -276,6 +283,10 @@ public:
                            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
         // [/shadow-pass]
 
+        if (show_map_) {  // --view map: the map itself instead of the scene
+            map_view_.draw(cmd, frame.target_view, frame.extent, block_.light_from_world);
+            return;
+        }
         auto scope = frame.gpu_scope("lit");
         vkt::begin_depth_frame(cmd, depth_.image);
         vkt::begin_rendering(cmd, frame.target_view, frame.extent, {{0.45f, 0.6f, 0.8f, 1.0f}},
@@ -328,6 +339,8 @@ private:
     VkDevice device_;
     uint32_t cascades_;
     bool colour_cascades_;
+    bool show_map_;
+    MapView map_view_;                                // --view map
     float bias_constant_ = 0.0f, bias_slope_ = 0.0f;  // the shadow pipeline's depth bias
     vkt::ShaderModule shadow_vertex_;                 // kept: the overlay remakes that pipeline
     std::vector<Draw> draws_;
@@ -364,9 +377,10 @@ int main(int argc, char** argv) {
         {.name = "--view",
          .type = vkt::OptionType::choice,
          .value_name = "VIEW",
-         .help = "lit: the scene; cascades: each cascade tinted its own colour",
+         .help = "lit: the scene; cascades: each cascade tinted its own colour; map: the "
+                 "shadow map's depth, cascade by cascade",
          .default_value = "lit",
-         .choices = {"lit", "cascades"}},
+         .choices = {"lit", "cascades", "map"}},
         {.name = "--bias-constant",
          .type = vkt::OptionType::number,
          .value_name = "F",

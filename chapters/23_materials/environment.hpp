@@ -84,6 +84,7 @@ public:
     }
 
     VkDescriptorSetLayout layout() const { return scene_layout_; }
+    VkDescriptorSet set() const { return scene_set_; }
     VkImage lut() const { return lut_.image; }
 
     // [background]

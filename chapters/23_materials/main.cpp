@@ -10,9 +10,10 @@
 // scaled by the exposure and squeezed into 0..1 by a tone curve (ACES).
 
 #include "blocks.hpp"
-#include "bloom.hpp"
 #include "environment.hpp"
+#include "flags.hpp"
 #include "grid.hpp"
+#include "ibl_view.hpp"
 #include "materials.hpp"
 #include "verify.hpp"
 
@@ -20,6 +21,7 @@
 #include "vkt/core/check.hpp"
 #include "vkt/core/files.hpp"
 #include "vkt/frame/runner.hpp"
+#include "vkt/resources/bloom.hpp"
 #include "vkt/resources/depth.hpp"
 #include "vkt/resources/pipeline.hpp"
 #include "vkt/resources/rendering.hpp"
@@ -42,24 +44,6 @@ namespace {
 // significant digits at every size, where an _SRGB target stops at 1.0.
 constexpr VkFormat hdr_format = VK_FORMAT_R16G16B16A16_SFLOAT;
 // [/hdr-format]
-
-void check_flags(const vkt::Options& options) {
-    const bool model = options.has("--model"), furnace = options.text("--scene") == "furnace";
-    if (model && furnace)
-        throw vkt::UsageError("--model draws a glTF file: leave out --scene furnace");
-    if (model && options.has("--verify"))
-        throw vkt::UsageError("--verify checks the generated spheres: leave out --model");
-    const std::string verify = options.has("--verify") ? options.text("--verify") : "";
-    const bool uniform = options.text("--sky") == "uniform";
-    if (verify == "furnace" && !furnace)
-        throw vkt::UsageError("--verify furnace needs --scene furnace");
-    if (verify == "cpu" && !uniform)
-        throw vkt::UsageError(
-            "--verify cpu checks the uniform sky's CPU reference: add --sky uniform");
-    if (verify == "lut" && uniform)
-        throw vkt::UsageError(
-            "--verify lut checks the environment's BRDF table: leave out --sky uniform");
-}
 
 class Materials : public vkt::Renderer {
 public:
@@ -167,6 +151,10 @@ public:
                 scene_layout_, fullscreen,
                 vkt::load_shader(gpu_.device, context.chapter, "background.frag"), hdr_format,
                 depth_format_);
+        if (context.options.text("--view") != "scene")  // the light's images, not the scene
+            view_.emplace(gpu_, context.chapter, *environment_,
+                          IblView::kind(context.options.text("--view")), fullscreen, hdr_format,
+                          depth_format_);
 
         // [tonemap-pipeline]
         // The second pass: one full-screen triangle into the _SRGB target,
@@ -264,13 +252,14 @@ public:
             vkt::set_viewport_and_scissor(cmd, frame.extent);
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, scene_layout_, 0, 1,
                                     &frame_set_, 0, nullptr);
-            if (ibl_) environment_->draw_background(cmd, scene_layout_);
+            if (view_) view_->draw(cmd, frame.extent);
+            if (ibl_ && !view_) environment_->draw_background(cmd, scene_layout_);
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, scene_pipeline_);
             const VkBuffer buffer = vertices_.buffer;
             const VkDeviceSize offset = 0;
             vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
             vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
-            for (size_t d = 0; d < scene_.draws.size(); ++d) {
+            for (size_t d = 0; d < (view_ ? 0 : scene_.draws.size()); ++d) {
                 const vkt::GltfDraw& draw = scene_.draws[d];
                 const vkt::GltfPrimitive& primitive = scene_.primitives[draw.primitive];
                 const uint32_t material = model_ ? primitive.material : 0;
@@ -304,7 +293,7 @@ public:
             VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
         if (bloom_strength_ > 0.0f) {
             auto bloom_scope = frame.gpu_scope("bloom");
-            bloom_.record(cmd);
+            bloom_.record(cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
         }
         auto scope = frame.gpu_scope("tone map");
         vkt::begin_colour_rendering(cmd, frame.target_view, frame.extent,
@@ -366,11 +355,12 @@ private:
     uint32_t tone_map_;   // 0: ACES, 1: clamp
     float sky_scale_ = 1.0f;
     float bloom_strength_;  // 0: no bloom
-    Bloom bloom_;
+    vkt::Bloom bloom_;
     VkExtent2D extent_{};
     vkt::GltfScene scene_;
     std::optional<MaterialSets> materials_;
     std::optional<Environment> environment_;
+    std::optional<IblView> view_;  // --view other than scene
     vkt::Buffer vertices_, indices_, frame_buffer_;
     vkt::DescriptorSetLayout frame_layout_, hdr_layout_;
     vkt::DescriptorPool pool_;
@@ -433,6 +423,13 @@ int main(int argc, char** argv) {
          .value_name = "FILE",
          .help = "draw a glTF 2.0 file (.gltf or .glb) with its metallic-roughness textures"},
         vkt::max_memory_option(),
+        {.name = "--view",
+         .type = vkt::OptionType::choice,
+         .value_name = "VIEW",
+         .help = "scene; or the image-based light's images in its place: sky, irradiance, "
+                 "prefiltered (its six levels), brdf (the table)",
+         .default_value = "scene",
+         .choices = {"scene", "sky", "irradiance", "prefiltered", "brdf"}},
         {.name = "--verify",
          .type = vkt::OptionType::choice,
          .value_name = "CHECK",

@@ -10,6 +10,7 @@
 // structure changes every frame.
 
 #include "bottom_level.hpp"
+#include "box_view.hpp"
 #include "shadow_map.hpp"
 #include "top_level.hpp"
 
@@ -210,6 +211,14 @@ public:
                                                             .cull_mode = VK_CULL_MODE_BACK_BIT,
                                                             .color_formats = {context.color_format},
                                                             .depth_format = depth_format_});
+        if (context.options.text("--view") == "boxes") {
+            boxes_ = std::make_unique<ch24::BoxView>(gpu, context.chapter, context.color_format,
+                                                     depth_format_, context.frames_in_flight,
+                                                     uint32_t(objects_.size()), builder, mesh_);
+            std::fprintf(stderr,
+                         "24_ray_queries: boxes drawn: orange, each bottom level's bounds "
+                         "in the world; blue, each instance's box in the top level\n");
+        }
         resize(context.extent);
         const auto kib = [](VkDeviceSize bytes) { return double(bytes) / 1024.0; };
         std::fprintf(stderr,
@@ -243,9 +252,11 @@ public:
         objects_ = make_scene(mesh_, frame.time, crowd_);
         std::vector<glm::mat4> transforms;
         std::vector<VkDeviceAddress> bottom;
+        std::vector<uint32_t> kinds;
         for (const Object& o : objects_) {
             transforms.push_back(o.world_from_object);
             bottom.push_back(bottom_[o.kind].address());
+            kinds.push_back(o.kind);
         }
         top_->write_instances(frame.slot, transforms, bottom);
         {
@@ -306,6 +317,7 @@ public:
                                sizeof(glm::mat4) + sizeof(glm::vec4), &o);
             vkCmdDrawIndexed(cmd, o.mesh.index_count, 1, o.mesh.first_index, 0, 0);
         }
+        if (boxes_) boxes_->record(cmd, frame.slot, block_.clip_from_world, transforms, kinds);
         vkCmdEndRendering(cmd);
     }
 
@@ -320,6 +332,7 @@ private:
     std::vector<ch24::AccelerationStructure> bottom_;  // one per Mesh, compacted
     std::unique_ptr<ch24::TopLevel> top_;
     std::unique_ptr<ch24::ShadowMap> shadow_map_;
+    std::unique_ptr<ch24::BoxView> boxes_;  // --view boxes
     vkt::Buffer frame_buffer_;
     FrameBlock block_{};
     VkFormat depth_format_ = VK_FORMAT_UNDEFINED;
@@ -373,6 +386,13 @@ int main(int argc, char** argv) {
          .default_value = "0",
          .min = 0,
          .max = 16384},
+        {.name = "--view",
+         .type = vkt::OptionType::choice,
+         .value_name = "VIEW",
+         .help = "scene: the lit scene; boxes: it, with the boxes the acceleration structure "
+                 "is built from",
+         .default_value = "scene",
+         .choices = {"scene", "boxes"}},
     };
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
         return std::make_unique<RayQueries>(context);

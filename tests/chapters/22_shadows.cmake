@@ -20,6 +20,18 @@ vkt_chapter_window_test(22_shadows PIXEL 0,0,179,203,231)
 vkt_chapter_test(chapter.22_shadows.cascades 22_shadows GOLDEN_FILE 22_shadows_cascades.png
   LABELS bless PIXEL 0,0,179,203,231 ARGS ${headless} --view cascades
   EXPECT "cascades coloured")
+# The map view: each cascade's layer of the shadow map as a square, side by
+# side, depth stretched from the slice's nearest to 1 over black to white.
+# At 320x240 with three cascades a square is 106 pixels (320 / 3 the limit),
+# its corner at (1, 67). Hand-worked: (0, 0) is the background (0.1, 0.1,
+# 0.12), stored sRGB-encoded (89, 89, 97); (1, 100) is cascade 0's frame
+# (1, 0.3, 0.3), (255, 149, 149); (5, 70), cascade 0's far corner from the
+# camera, is a texel no caster covers (the light's box reaches past the
+# floor there): it keeps the clear depth 1.0, drawn pale blue (0.6, 0.75, 1),
+# (203, 225, 255). The grey between is the golden's.
+vkt_chapter_test(chapter.22_shadows.map 22_shadows GOLDEN_FILE 22_shadows_map.png
+  LABELS bless PIXEL 0,0,89,89,97 1,100,255,149,149 5,70,203,225,255
+  ARGS ${headless} --view map EXPECT "the shadow map shown")
 # One cascade and four: the same shadow and the same light at the two pixels.
 vkt_chapter_test(chapter.22_shadows.one_cascade 22_shadows ${VKT_22_PIXEL}
   ARGS ${headless} --cascades 1 EXPECT "1 cascades of 1024x1024")
@@ -47,7 +59,7 @@ vkt_chapter_test(bad_input.22_shadows.no_cascades 22_shadows EXIT 2 ARGS --casca
 vkt_chapter_test(bad_input.22_shadows.five_cascades 22_shadows EXIT 2 ARGS --cascades 5
   EXPECT "--cascades")
 vkt_chapter_test(bad_input.22_shadows.bad_view 22_shadows EXIT 2 ARGS --view depth
-  EXPECT "--view wants one of lit, cascades, not 'depth'")
+  EXPECT "--view wants one of lit, cascades, map, not 'depth'")
 vkt_chapter_test(bad_input.22_shadows.bad_bias_constant 22_shadows EXIT 2
   ARGS --bias-constant -1 EXPECT "--bias-constant wants a number from 0 to 1000")
 vkt_chapter_test(bad_input.22_shadows.bad_bias_slope 22_shadows EXIT 2

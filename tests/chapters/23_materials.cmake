@@ -178,3 +178,38 @@ vkt_chapter_test(bad_input.23_materials.nan_normal 23_materials EXIT 1
        --model ${VKT_HOSTILE_DIR}/nan_normal.gltf
   EXPECT "23_materials: error: .*nan_normal.gltf: mesh 0 primitive 0 NORMAL: accessor 1: element 2, component 2, is NaN, not a finite number")
 set_tests_properties(bad_input.23_materials.nan_normal PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
+
+# The image-based light's images (--view), drawn in place of the scene into
+# the HDR image and shown through the same exposure and ACES curve, at
+# 640x480 so that the page can show them large. Hand-worked from sky.comp's
+# formula, ACES (Narkowicz's fit) and the sRGB encoding: the background 0.02
+# gives (26, 26, 26). The cubes' crosses have faces of 160 pixels from
+# (0, 0): the +Y face's centre (240, 80) looks straight up, at the zenith
+# (0.03, 0.08, 0.22), (38, 85, 156); the -Y face's centre (240, 400) at the
+# ground (0.035, 0.03, 0.025), (44, 38, 33). The prefiltered cube's level 0
+# is for roughness 0, the sky unblurred: its panorama (213 x 106 pixels from
+# (0, 133)) at (106, 229) looks 72 degrees down, at the ground.
+set(vkt_23_views --headless --validation --frames ${VKT_TEST_FRAMES} --size 640x480)
+vkt_chapter_test(chapter.23_materials.view_sky 23_materials GOLDEN_FILE 23_materials_view_sky.png
+  LABELS bless PIXEL 40,40,26,26,26 240,80,38,85,156,2 240,400,44,38,33,2
+  ARGS ${vkt_23_views} --view sky)
+vkt_chapter_test(chapter.23_materials.view_irradiance 23_materials
+  GOLDEN_FILE 23_materials_view_irradiance.png LABELS bless PIXEL 40,40,26,26,26
+  ARGS ${vkt_23_views} --view irradiance)
+vkt_chapter_test(chapter.23_materials.view_prefiltered 23_materials
+  GOLDEN_FILE 23_materials_view_prefiltered.png LABELS bless PIXEL 5,5,26,26,26 106,229,44,38,33,2
+  ARGS ${vkt_23_views} --view prefiltered)
+# The BRDF table through the clamp curve, so red and green are its two
+# numbers as stored: at n.v 0.98 and roughness 0.02 (the top right texel)
+# the lobe is a mirror and Schlick's F is F0 + (1 - F0)(1 - n.v)^5, so A =
+# 1 - (1 - n.v)^5 = 1 and B = (1 - n.v)^5 = 0 to 8 digits: (255, 0, 0). The
+# background 0.02 unmapped: (39, 39, 39).
+vkt_chapter_test(chapter.23_materials.view_brdf 23_materials
+  GOLDEN_FILE 23_materials_view_brdf.png LABELS bless PIXEL 5,5,39,39,39 555,3,255,0,0,1
+  ARGS ${vkt_23_views} --view brdf --tone-map clamp)
+vkt_chapter_test(bad_input.23_materials.view_uniform_sky 23_materials EXIT 2
+  ARGS --view sky --sky uniform
+  EXPECT "--view sky shows the environment's images: leave out --sky uniform")
+vkt_chapter_test(bad_input.23_materials.view_verify 23_materials EXIT 2
+  ARGS --view brdf --verify furnace --scene furnace
+  EXPECT "--verify furnace checks the scene: leave out --view brdf")

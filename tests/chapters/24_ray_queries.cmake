@@ -100,3 +100,16 @@ vkt_chapter_test(bad_input.24_ray_queries.bad_crowd 24_ray_queries EXIT 2 ARGS -
   EXPECT "--crowd wants a whole number from 0 to 16384, not '16385'")
 vkt_chapter_test(bad_input.24_ray_queries.crowd_word 24_ray_queries EXIT 2 ARGS --crowd many
   EXPECT "--crowd wants a whole number")
+# The boxes view: the lit scene and, over it, each bottom level's box carried
+# into the world (orange) and each instance's axis-aligned box in the top
+# level (blue, drawn second). Hand-worked: the sphere (radius 0.5, scaled
+# 1.4, centre (-0.8, 0.7 + 0.3 sin 2t, 3), t = 9 / 60 at the tenth frame) is
+# not turned, so both its boxes are the cube of half-side 0.7 round it; the
+# back top edge, y = 1.489 and z = 2.3, projects to row 123.66 at 320x240,
+# across columns 94.5 to 155.6. So (110, 123) is blue (0.15, 0.3, 1), stored
+# (108, 149, 255), and (110, 125) just below it is lit floor.
+vkt_chapter_test(chapter.24_ray_queries.boxes 24_ray_queries GOLDEN_FILE 24_ray_queries_boxes.png
+  LABELS bless PIXEL 110,123,108,149,255 110,125,214,214,208,2
+  ARGS ${headless} --view boxes EXPECT "boxes drawn: orange, each bottom level's bounds")
+vkt_chapter_test(bad_input.24_ray_queries.bad_view 24_ray_queries EXIT 2 ARGS --view tree
+  EXPECT "--view wants one of scene, boxes, not 'tree'")

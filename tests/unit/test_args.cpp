@@ -205,6 +205,16 @@ TEST_CASE("--help and the usage line list a chapter's flags", "[args][chapter-op
     CHECK(help.find("point lights (1..65536) [default: 16]") != std::string::npos);
     CHECK(help.find("a glTF file") != std::string::npos);
     CHECK(help.find("--screenshot FILE.png") != std::string::npos);
+    // A range the help's own words give is not repeated.
+    const vkt::OptionSpec cascades[] = {{.name = "--cascades",
+                                         .type = vkt::OptionType::integer,
+                                         .value_name = "N",
+                                         .help = "how many cascades (1..4)",
+                                         .default_value = "3",
+                                         .min = 1,
+                                         .max = 4}};
+    CHECK(vkt::help_text("22_shadows", Flags::frame_loop, cascades)
+              .find("how many cascades (1..4) [default: 3]") != std::string::npos);
 }
 
 TEST_CASE("the alternatives --headless and --offscreen: both given is a usage error", "[args]") {

@@ -242,17 +242,34 @@ const DeviceCandidate& choose_device(std::span<const DeviceCandidate> candidates
     return *best;
 }
 
+uint32_t compute_only_family(VkPhysicalDevice device) {
+    uint32_t count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+    for (uint32_t i = 0; i < count; ++i)
+        if ((families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) &&
+            !(families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT))
+            return i;
+    return UINT32_MAX;
+}
+
 Device::Device(const DeviceCandidate& chosen, const DeviceRequirements& requirements)
     : physical_(chosen.handle), queue_family_(chosen.queue_family) {
     vkGetPhysicalDeviceProperties(physical_, &properties_);
 
     float priority = 1.0f;
-    VkDeviceQueueCreateInfo queue_info{
+    VkDeviceQueueCreateInfo queue_infos[2]{};
+    queue_infos[0] = {
         .sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO,
         .queueFamilyIndex = queue_family_,
         .queueCount = 1,
         .pQueuePriorities = &priority,
     };
+    compute_family_ = requirements.compute_family ? compute_only_family(physical_) : UINT32_MAX;
+    if (compute_family_ == UINT32_MAX) compute_family_ = queue_family_;  // none: the one queue
+    queue_infos[1] = queue_infos[0];
+    queue_infos[1].queueFamilyIndex = compute_family_;
     // Turn on exactly what is needed: the base features, the chapter's required
     // ones, and those optional ones this device has.
     FeatureChain available;
@@ -274,8 +291,8 @@ Device::Device(const DeviceCandidate& chosen, const DeviceRequirements& requirem
     VkDeviceCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
         .pNext = chain,
-        .queueCreateInfoCount = 1,
-        .pQueueCreateInfos = &queue_info,
+        .queueCreateInfoCount = compute_family_ == queue_family_ ? 1u : 2u,
+        .pQueueCreateInfos = queue_infos,
         .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
         .ppEnabledExtensionNames = extensions.data(),
     };
@@ -283,6 +300,7 @@ Device::Device(const DeviceCandidate& chosen, const DeviceRequirements& requirem
     VKT_CHECK(vkCreateDevice(physical_, &info, nullptr, &device_));
     enabled_.link(nullptr);  // those structs are the caller's, and may go now
     vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
+    vkGetDeviceQueue(device_, compute_family_, 0, &compute_queue_);
 }
 
 Device::~Device() {

@@ -319,12 +319,15 @@ std::string help_text(std::string_view program, Flags flags,
     if (!chapter_options.empty()) {
         text += "this chapter's own flags:\n";
         for (const auto& spec : chapter_options) {
-            std::string right = spec.help;
+            std::string right = spec.help, range;
             if (spec.type == OptionType::integer || spec.type == OptionType::number)
-                right += " (" + format_number(spec.min) + ".." + format_number(spec.max) + ")";
+                range = format_number(spec.min) + ".." + format_number(spec.max);
             if (spec.type == OptionType::bytes)
-                right += " (" + byte_count_text(uint64_t(spec.min)) + ".." +
-                         byte_count_text(uint64_t(spec.max)) + ")";
+                range = byte_count_text(uint64_t(spec.min)) + ".." +
+                        byte_count_text(uint64_t(spec.max));
+            // The range, unless the chapter's own words already give it.
+            if (!range.empty() && right.find(range) == std::string::npos)
+                right += " (" + range + ")";
             if (!spec.default_value.empty()) right += " [default: " + spec.default_value + "]";
             text += help_entry(spec.name, option_value_name(spec), right);
         }

@@ -63,6 +63,8 @@ void ChapterRun::run(const RendererFactory& factory) {
         .device = device_,
         .queue = device_.queue(),
         .queue_family = device_.queue_family(),
+        .compute_queue = device_.compute_queue(),
+        .compute_family = device_.compute_family(),
         .color_format = format_,
         .storage_format = storage_format_,
         .extent = extent_,
@@ -142,47 +144,51 @@ bool ChapterRun::draw_frame(uint64_t index, double time, const Input& input) {
         overlay_->build(input, extent_, time,
                         [&](OverlayPanel& panel) { renderer_->overlay(panel); });
     VKT_CHECK(vkResetCommandPool(device_, slot.pool, 0));
-    record(
-        slot, image_index,
-        Frame{.cmd = slot.cmd,
-              .target = straight ? swapchain_->images()[image_index] : own_[slot_index].image.get(),
-              .target_view = straight ? swapchain_->view(image_index) : own_[slot_index].view.get(),
-              .target_storage = straight || own_storage_.empty() ? VK_NULL_HANDLE
-                                                                 : own_storage_[slot_index].get(),
-              .extent = extent_,
-              .target_layout = spec_.target_layout,
-              .target_ready = target_ready(),
-              .index = index,
-              .time = time,
-              .slot = slot_index,
-              .input = input,
-              .timer = harness_.gpu_timer() ? &harness_.gpu_timer() : nullptr});
+    const Frame frame{
+        .cmd = slot.cmd,
+        .target = straight ? swapchain_->images()[image_index] : own_[slot_index].image.get(),
+        .target_view = straight ? swapchain_->view(image_index) : own_[slot_index].view.get(),
+        .target_storage =
+            straight || own_storage_.empty() ? VK_NULL_HANDLE : own_storage_[slot_index].get(),
+        .extent = extent_,
+        .target_layout = spec_.target_layout,
+        .target_ready = target_ready(),
+        .index = index,
+        .time = time,
+        .slot = slot_index,
+        .input = input,
+        .timer = harness_.gpu_timer() ? &harness_.gpu_timer() : nullptr};
+    record(slot, image_index, frame);
 
     // Submit: wait for the acquired image before the first write to it (the
     // chapter's drawing, or our copy), signal the image's own ready_to_present
-    // semaphore, and the slot's fence for the CPU.
-    VkSemaphoreSubmitInfo wait{
-        .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
-        .semaphore = slot.image_acquired,
-        .stageMask = acquire_wait_stage(),
-    };
-    VkSemaphoreSubmitInfo signal{
-        .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
-        .semaphore = swapchain_ ? swapchain_->ready_to_present(image_index) : VK_NULL_HANDLE,
-        .stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-    };
+    // semaphore, and the slot's fence for the CPU; and whatever the chapter
+    // asks besides (its own submits' semaphores, chapter 29).
+    FrameSemaphores sync = renderer_->semaphores(frame);
+    if (swapchain_) {
+        sync.wait.push_back({
+            .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
+            .semaphore = slot.image_acquired,
+            .stageMask = acquire_wait_stage(),
+        });
+        sync.signal.push_back({
+            .sType = VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO,
+            .semaphore = swapchain_->ready_to_present(image_index),
+            .stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+        });
+    }
     VkCommandBufferSubmitInfo command{
         .sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO,
         .commandBuffer = slot.cmd,
     };
     VkSubmitInfo2 submit{
         .sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
-        .waitSemaphoreInfoCount = swapchain_ ? 1u : 0u,
-        .pWaitSemaphoreInfos = &wait,
+        .waitSemaphoreInfoCount = uint32_t(sync.wait.size()),
+        .pWaitSemaphoreInfos = sync.wait.data(),
         .commandBufferInfoCount = 1,
         .pCommandBufferInfos = &command,
-        .signalSemaphoreInfoCount = swapchain_ ? 1u : 0u,
-        .pSignalSemaphoreInfos = &signal,
+        .signalSemaphoreInfoCount = uint32_t(sync.signal.size()),
+        .pSignalSemaphoreInfos = sync.signal.data(),
     };
     VKT_CHECK(vkQueueSubmit2(device_.queue(), 1, &submit, slot.done));
     last_slot_ = slot_index;

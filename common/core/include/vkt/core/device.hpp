@@ -85,6 +85,9 @@ struct DeviceRequirements {
     // until the Device is created, and names their extensions above.
     void* extension_features = nullptr;
     HiddenNames hidden;  // pretended missing (the tests' devices)
+    // Chapter 29's second queue: also one queue of a family that computes but
+    // cannot draw, where the device has such a family (Device::compute_queue).
+    bool compute_family = false;
 };
 
 // What we learned about one physical device.
@@ -115,6 +118,10 @@ int device_score(const DeviceCandidate& candidate);
 // extension the driver lacks with an error) counts as "no".
 bool can_present(VkPhysicalDevice device, uint32_t queue_family, VkSurfaceKHR surface);
 
+// Chapter 29: the first queue family that computes but cannot draw (the
+// "async compute" family some GPUs have), or UINT32_MAX where there is none.
+uint32_t compute_only_family(VkPhysicalDevice device);
+
 // Whether the device offers the extension.
 bool device_extension_available(VkPhysicalDevice device, const char* name);
 
@@ -140,6 +147,10 @@ public:
     VkPhysicalDevice physical() const { return physical_; }
     VkQueue queue() const { return queue_; }
     uint32_t queue_family() const { return queue_family_; }
+    // Chapter 29's: a queue of a compute-only family where the requirements
+    // asked for one and the device has one; else queue() and its family.
+    VkQueue compute_queue() const { return compute_queue_; }
+    uint32_t compute_family() const { return compute_family_; }
     const VkPhysicalDeviceProperties& properties() const { return properties_; }
     // Exactly the features that were enabled: the base ones, the required ones,
     // and the optional ones the device has.
@@ -151,6 +162,8 @@ private:
     VkDevice device_ = VK_NULL_HANDLE;
     VkQueue queue_ = VK_NULL_HANDLE;
     uint32_t queue_family_ = 0;
+    VkQueue compute_queue_ = VK_NULL_HANDLE;
+    uint32_t compute_family_ = 0;
     VkPhysicalDeviceProperties properties_{};
 };
 

@@ -28,6 +28,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace vkt {
 
@@ -40,6 +41,10 @@ struct Context {
     VkDevice device;
     VkQueue queue;
     uint32_t queue_family;
+    // Chapter 29's second queue (DeviceRequirements::compute_family): of a
+    // compute-only family where the device has one, else `queue` itself.
+    VkQueue compute_queue;
+    uint32_t compute_family;
     VkFormat color_format;  // the colour target's format (always an _SRGB format)
     // The format of Frame::target_storage where a frame has one: the _UNORM
     // format with color_format's byte order. VK_FORMAT_UNDEFINED: never (the
@@ -109,6 +114,13 @@ struct Frame {
     GpuScope gpu_scope(std::string_view name) const { return {timer, cmd, slot, name}; }
 };
 
+// Chapter 29's: semaphores the frame's submit waits for and signals, beside
+// the runner's own (the acquire and the present semaphores).
+struct FrameSemaphores {
+    std::vector<VkSemaphoreSubmitInfo> wait;
+    std::vector<VkSemaphoreSubmitInfo> signal;
+};
+
 class Renderer {
 public:
     virtual ~Renderer() = default;
@@ -117,6 +129,10 @@ public:
     // and access (TargetWrite, below). Drawn by the colour output unless the
     // chapter says otherwise. Asked after each record().
     virtual TargetWrite target_after(const Frame&) const { return drawn_by_colour_output; }
+    // What the frame's submit must wait for and signal besides the runner's
+    // own: work the chapter submitted itself, to this queue or another
+    // (chapter 29). Asked after each record().
+    virtual FrameSemaphores semaphores(const Frame&) { return {}; }
     // The colour target changed size (the window was resized); the GPU is idle.
     virtual void resize(VkExtent2D) {}
     // Chapter 21's overlay, in a window: the chapter's settings as widgets,

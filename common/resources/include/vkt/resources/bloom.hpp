@@ -3,7 +3,11 @@
 // it does in an eye or a lens. The HDR image is halved again and again into
 // the mip levels of one image by a compute pass (each level a wider blur),
 // and the levels are added back up from the smallest; the tone-mapping pass
-// mixes level 0, divided by the number of levels, into the picture.
+// mixes level 0, divided by the number of levels, into the picture. Chapter
+// 29 records it on a queue of its own (a compute-only family), which is why
+// record() is told which stages outside the chain read it on the same queue.
+// Its shaders are shaders/common/bloom/ (SHARED_SHADERS bloom/bloom_down.comp
+// bloom/bloom_up.comp).
 
 #include "vkt/core/barrier.hpp"
 #include "vkt/core/check.hpp"
@@ -17,6 +21,8 @@
 #include <algorithm>
 #include <string>
 #include <vector>
+
+namespace vkt {
 
 class Bloom {
 public:
@@ -117,15 +123,16 @@ public:
 
     // [bloom-record]
     // Last frame's chain is thrown away (after its reads, by this chain and
-    // the tone-mapping pass). Then down the chain, then up, each dispatch
-    // reading what the one before it wrote: a barrier between every two.
-    // The HDR image must already be readable by compute shaders.
-    void record(VkCommandBuffer cmd) const {
-        vkt::image_barrier(
-            cmd, image_.image, {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels_, 0, 1},
-            VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-            VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0,
-            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    // the tone-mapping pass: `readers`, the stages that read level 0 on this
+    // queue, chapter 23's fragment shader). Then down the chain, then up,
+    // each dispatch reading what the one before it wrote: a barrier between
+    // every two. The HDR image must already be readable by compute shaders.
+    void record(VkCommandBuffer cmd, VkPipelineStageFlags2 readers) const {
+        vkt::image_barrier(cmd, image_.image, {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels_, 0, 1},
+                           VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                           readers | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0,
+                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         for (uint32_t step = 0; step + 1 < 2 * levels_; ++step) {
             const bool down = step < levels_;
             const uint32_t target = down ? step : 2 * levels_ - 2 - step;
@@ -139,7 +146,7 @@ public:
             // last, the tone-mapping pass's).
             vkt::memory_barrier(
                 cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | readers,
                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
                     VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         }
@@ -147,6 +154,7 @@ public:
     // [/bloom-record]
 
     VkImageView level0() const { return views_.front(); }
+    VkImage image() const { return image_.image; }
     uint32_t levels() const { return levels_; }
     VkSampler sampler() const { return sampler_; }
 
@@ -163,3 +171,5 @@ private:
     vkt::DescriptorPool pool_;
     std::vector<VkDescriptorSet> sets_;
 };
+
+}  // namespace vkt
