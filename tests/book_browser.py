@@ -86,6 +86,8 @@ SEARCH_QUERIES = (
     ("glTF", "10_gltf.html", r"what-is-in-a-gltf-file"),
     ("secondary command buffer", "27_threads.html", r"a-secondary-command-buffer-inside-dynamic-rendering"),
     ("pipeline cache", "27_threads.html", r"a-pipeline-cache-on-disk"),
+    ("depth pyramid", "28_gpu_culling.html", r"the-depth-pyramid"),
+    ("vkCmdDrawIndexedIndirectCount", "28_gpu_culling.html", r"drawing-with-a-count"),
 )
 
 

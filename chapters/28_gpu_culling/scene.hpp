@@ -121,8 +121,9 @@ inline std::vector<Instance> make_instances(uint32_t n, const std::vector<Mesh>&
 // [cpu-frustum]
 // The CPU's frustum test, in double precision: a box is outside when all
 // eight corners lie beyond one plane of the clip volume (-w <= x, y <= w,
-// 0 <= z <= w). `margin` (relative to w) finds the boxes so near a plane
-// that float rounding on the GPU may decide either way: those are counted
+// 0 <= z <= w). Each plane is a row combination of the matrix; scaled to
+// unit normal, it gives a corner's distance in metres. Boxes within 1 cm of
+// a plane (float rounding on the GPU may decide either way) are counted
 // apart, as `boundary`.
 struct FrustumCount {
     uint32_t inside = 0, boundary = 0;
@@ -130,23 +131,20 @@ struct FrustumCount {
 inline FrustumCount count_in_frustum(const std::vector<Instance>& instances, uint32_t n,
                                      const glm::mat4& clip_from_world) {
     const glm::dmat4 m(clip_from_world);
+    const auto row = [&](int r) { return glm::dvec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
+    glm::dvec4 planes[6] = {row(3) + row(0), row(3) - row(0), row(3) + row(1),
+                            row(3) - row(1), row(2),          row(3) - row(2)};
+    for (glm::dvec4& plane : planes) plane /= glm::length(glm::dvec3(plane));
+    constexpr double margin = 0.01;
     FrustumCount count;
     for (uint32_t i = 0; i < n; ++i) {
         const glm::dvec3 c(instances[i].box_centre), h(instances[i].box_half);
         bool out_sure = false, out_maybe = false;
-        for (int plane = 0; plane < 6; ++plane) {
+        for (const glm::dvec4& plane : planes) {
             int beyond = 0, near_plane = 0;
             for (int k = 0; k < 8; ++k) {
                 const glm::dvec3 s(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
-                const glm::dvec4 p = m * glm::dvec4(c + s * h, 1.0);
-                // How far inside the plane the corner is (negative: beyond it).
-                const double d = plane == 0   ? p.x + p.w
-                                 : plane == 1 ? p.w - p.x
-                                 : plane == 2 ? p.y + p.w
-                                 : plane == 3 ? p.w - p.y
-                                 : plane == 4 ? p.z
-                                              : p.w - p.z;
-                const double margin = 1e-4 * (std::abs(p.w) + 1.0);
+                const double d = glm::dot(plane, glm::dvec4(c + s * h, 1.0));  // inside: d > 0
                 beyond += d < -margin;
                 near_plane += d < margin;
             }

@@ -7,9 +7,7 @@
 
 #include "culling_data.glsl"
 
-// [group]
 layout(local_size_x = 64) in;  // main.cpp's kCullGroup
-// [/group]
 
 struct Mesh {
     uint first_index, index_count;
