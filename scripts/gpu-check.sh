@@ -175,6 +175,9 @@ fi
 # Chapter 27: recording on 1 to 16 threads (the GPU machine has 16 cores),
 # then start-up with a cold and a warm pipeline cache.
 [ -x "$bin/27_threads" ] && THREADS="1 2 4 8 16" sweep 27_threads benchmarks/27_threads.sh "$bin"
+# Chapter 28: --cull none, frustum and occlusion at 1080p, 100,000 and
+# 400,000 instances.
+[ -x "$bin/28_gpu_culling" ] && sweep 28_gpu_culling benchmarks/28_gpu_culling.sh "$bin" 1920x1080 200 100000 400000
 # Chapter 29: the bloom on one queue and on a compute queue, with 48 and 512 lamps.
 [ -x "$bin/29_async_compute" ] && sweep 29_async_compute benchmarks/29_async_compute.sh "$bin"
 exit $status

@@ -90,6 +90,8 @@ SEARCH_QUERIES = (
     ("frames in flight", "03_swapchain.html", r"frames-in-flight"),
     ("PCF", "22_shadows.html", r"looking-a-point-up-cascade-compare-filter"),
     ("timeline semaphore", "29_async_compute.html", r"timeline-semaphores"),
+    ("depth pyramid", "28_gpu_culling.html", r"the-depth-pyramid"),
+    ("vkCmdDrawIndexedIndirectCount", "28_gpu_culling.html", r"drawing-with-a-count"),
 )
 # The "taught here" mark: on these queries' first result (the chapter that
 # teaches the whole phrase first, in a heading or its recap) and on no other

@@ -1,0 +1,87 @@
+# Chapter 28: GPU-driven culling (a compute pass culls instances into draw
+# lists with a count, drawn by vkCmdDrawIndexedIndirectCount; two-phase
+# occlusion culling against a depth pyramid).
+#
+# The tests draw 4,096 instances (a 64 x 64 field, 1.9 million triangles);
+# the chapter's default, 100,000, is for the H200 (book/perf_28_gpu_culling.md).
+#
+# Two pixels worked out by hand. The sky is the clear colour, linear (0.55,
+# 0.70, 0.90), stored sRGB-encoded as (196, 218, 243). The floor is linear
+# grey 0.45 with normal +y: lambert = dot(+y, normalize(0.4, 1, 0.3)) =
+# 1 / sqrt(1.25) = 0.8944, light 0.25 + 0.75 * 0.8944 = 0.9208, 0.45 * 0.9208
+# = 0.4144, sRGB 172.3: stored 172 (within 1), in the bare floor at the
+# bottom left.
+set(VKT_28_ARGS --instances 4096)
+set(VKT_28_PIXEL PIXEL 0,0,196,218,243 319,0,196,218,243 5,235,172,172,172,1)
+# The counts after the last frame: the GPU's frustum count must equal the
+# CPU's own (double-precision planes, scene.hpp; the chapter exits 1 when
+# they disagree, and none lies on the boundary here). The occlusion numbers
+# are the GPU's; the test asks that they add up.
+set(VKT_28_COUNTS
+  "last frame: ([0-9]+) of 4096 instances in the frustum \\(the CPU finds \\1, and 0 on its boundary\\)")
+vkt_chapter_test(chapter.28_gpu_culling 28_gpu_culling GOLDEN BLESS ${VKT_28_PIXEL}
+  ARGS ${headless} ${VKT_28_ARGS}
+  EXPECT "4096 instances of 4 meshes, 1935328 triangles; --cull occlusion"
+         "${VKT_28_COUNTS}, [0-9]+ drawn \\([0-9]+ early \\+ [0-9]+ late\\), [1-9][0-9]* occluded")
+vkt_chapter_test(chapter.28_gpu_culling.offscreen 28_gpu_culling SAME_AS chapter.28_gpu_culling
+  ${VKT_28_PIXEL} ARGS ${offscreen} ${VKT_28_ARGS} EXPECT "${VKT_28_COUNTS}")
+vkt_chapter_window_test(28_gpu_culling PIXEL 0,0,196,218,243 ARGS ${VKT_28_ARGS})
+
+# A culled instance is truly invisible: drawing every instance, or those in
+# the frustum, gives the picture occlusion culling gave, to the bit (same
+# machine, same run). --cull none draws all 4,096; frustum exactly what the
+# CPU counts in the frustum.
+vkt_chapter_test(chapter.28_gpu_culling.cull_none 28_gpu_culling SAME_AS chapter.28_gpu_culling
+  ${VKT_28_PIXEL} ARGS ${headless} ${VKT_28_ARGS} --cull none
+  EXPECT "${VKT_28_COUNTS}, 4096 drawn \\(4096 early \\+ 0 late\\), 0 occluded")
+vkt_chapter_test(chapter.28_gpu_culling.cull_frustum 28_gpu_culling
+  SAME_AS chapter.28_gpu_culling ${VKT_28_PIXEL} ARGS ${headless} ${VKT_28_ARGS} --cull frustum
+  EXPECT "last frame: ([0-9]+) of 4096 instances in the frustum \\(the CPU finds \\1, and 0 on its boundary\\), \\1 drawn \\(\\1 early \\+ 0 late\\), 0 occluded")
+# The pyramid's min taken by the sampler (VK_SAMPLER_REDUCTION_MODE_MIN,
+# which lavapipe offers) and by the shader: the same pyramid, the same culling.
+vkt_chapter_test(chapter.28_gpu_culling.reduce_sampler 28_gpu_culling
+  SAME_AS chapter.28_gpu_culling ARGS ${headless} ${VKT_28_ARGS} --reduce sampler
+  EXPECT "takes the min in the sampler \\(VK_SAMPLER_REDUCTION_MODE_MIN\\)" "${VKT_28_COUNTS}")
+vkt_chapter_test(chapter.28_gpu_culling.reduce_shader 28_gpu_culling
+  SAME_AS chapter.28_gpu_culling ARGS ${headless} ${VKT_28_ARGS} --reduce shader
+  EXPECT "takes the min in the shader \\(four texel fetches\\)" "${VKT_28_COUNTS}")
+# A field of one instance (a wall) and of 5 (not a square): nothing breaks.
+foreach(n 1 5)
+  vkt_chapter_test(chapter.28_gpu_culling.instances_${n} 28_gpu_culling PIXEL 0,0,196,218,243
+    ARGS ${headless} --instances ${n}
+    EXPECT "last frame: ([0-9]+) of ${n} instances in the frustum \\(the CPU finds \\1")
+endforeach()
+
+# The debug views. The pyramid: the sky is depth 0 (reversed: the far
+# plane), black. The culled: the occluded instances in red over the picture.
+vkt_chapter_test(chapter.28_gpu_culling.view_pyramid 28_gpu_culling PIXEL 0,0,0,0,0 319,0,0,0,0
+  ARGS ${headless} ${VKT_28_ARGS} --view pyramid --level 3 EXPECT "${VKT_28_COUNTS}")
+vkt_chapter_test(chapter.28_gpu_culling.view_culled 28_gpu_culling PIXEL 0,0,196,218,243
+  ARGS ${headless} ${VKT_28_ARGS} --view culled EXPECT "[1-9][0-9]* occluded")
+
+# --benchmark: the GPU's scopes of the two phases.
+vkt_chapter_test(chapter.28_gpu_culling.benchmark 28_gpu_culling
+  ARGS --headless --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark ${VKT_28_ARGS}
+  EXPECT "\"gpu_scopes_ms\": \\{\"cull 1\": \\{\"min\": [0-9.]+, \"median\": [0-9.]+"
+         "\"pyramid\": \\{" "\"cull 2\": \\{" "\"draw 2\": \\{")
+vkt_chapter_test(chapter.28_gpu_culling.help 28_gpu_culling EXIT 0 ARGS --help
+  EXPECT "usage: 28_gpu_culling" "--instances N" "--cull" "--view" "--level L" "--reduce")
+
+# Bad input: the command line (exit 2).
+vkt_chapter_test(bad_input.28_gpu_culling.instances_zero 28_gpu_culling EXIT 2
+  ARGS --instances 0 EXPECT "--instances wants a whole number from 1 to 1000000, not '0'")
+vkt_chapter_test(bad_input.28_gpu_culling.instances_too_many 28_gpu_culling EXIT 2
+  ARGS --instances 1000001 EXPECT "--instances wants a whole number from 1 to 1000000, not '1000001'")
+vkt_chapter_test(bad_input.28_gpu_culling.cull 28_gpu_culling EXIT 2 ARGS --cull some
+  EXPECT "--cull wants one of none, frustum, occlusion, not 'some'")
+vkt_chapter_test(bad_input.28_gpu_culling.view 28_gpu_culling EXIT 2 ARGS --view depth
+  EXPECT "--view wants one of shaded, pyramid, culled, not 'depth'")
+vkt_chapter_test(bad_input.28_gpu_culling.reduce 28_gpu_culling EXIT 2 ARGS --reduce max
+  EXPECT "--reduce wants one of auto, sampler, shader, not 'max'")
+vkt_chapter_test(bad_input.28_gpu_culling.level 28_gpu_culling EXIT 2 ARGS --level 16
+  EXPECT "--level wants a whole number from 0 to 15, not '16'")
+vkt_chapter_test(bad_input.28_gpu_culling.view_culled_without_occlusion 28_gpu_culling EXIT 2
+  ARGS --view culled --cull frustum
+  EXPECT "--view culled needs --cull occlusion: only it builds a pyramid and occludes instances")
+vkt_chapter_test(bad_input.28_gpu_culling.view_pyramid_without_occlusion 28_gpu_culling EXIT 2
+  ARGS --view pyramid --cull none EXPECT "--view pyramid needs --cull occlusion")
