@@ -12,6 +12,15 @@
 //       For each count (default 250 500 ... 16000): the scene after 2 s, then
 //       the same world stepped with each broad phase, brute force and
 //       sort-and-sweep, and each broad phase alone (CPU times).
+//   build/release/bin/physics_bench --stacks [--substeps N] [--iterations N] [--hertz H]
+//       Stacks that statics say must stand or fall, stepped awake with the
+//       solver's settings as given (the chapter's by default): the 20-box
+//       staircase at 63%, 80%, 93% and 110% of its tipping lean, ten boxes
+//       100 times heavier on a light one, one box 1,000 times heavier on a
+//       light one; then the default run's colliding median with the same
+//       settings, so that what a setting holds and what it costs come from
+//       one run. --substeps, --iterations and --hertz apply to the default
+//       run too.
 //
 // Times: each step's wall-clock time and the thread's CPU time (which a
 // machine busy with other work inflates less); medians of each.
@@ -62,8 +71,10 @@ struct Run {
     }
 };
 
-int scene(uint32_t count, uint32_t seed) {
-    World world;
+int scene(uint32_t count, uint32_t seed, const SolverSettings& solver) {
+    Settings settings;
+    settings.solver = solver;
+    World world(settings);
     add_falling_boxes(world, count, seed);
     const int steps_per_second = 120;
     const int first = 3 * steps_per_second / 2, last = 9 * steps_per_second / 2;
@@ -167,6 +178,88 @@ int scaling(std::vector<uint32_t> counts) {
     return 0;
 }
 
+// [stacks]
+// The probes of --stacks: worlds on a static floor (top face at y = 0),
+// never asleep, so that only the solver holds them.
+World awake_floor_world(const SolverSettings& solver) {
+    Settings settings;
+    settings.solver = solver;
+    settings.sleep.enabled = false;
+    World world(settings);
+    world.add_box({0, -0.5f, 0}, {20, 0.5f, 20}, 0.0f);
+    return world;
+}
+
+// Chapter 14's tower boxes (0.6 x 0.5 x 0.6 m), 20 of them, box k standing
+// lean k further along x. By statics the 19 boxes above the lowest have
+// their centre beyond its edge when lean > 0.030 m (10 lean > 0.3 m).
+void staircase(const SolverSettings& solver, float of_tipping) {
+    constexpr float kTipping = 0.030f;
+    const float lean = of_tipping * kTipping;
+    World world = awake_floor_world(solver);
+    for (int k = 0; k < 20; ++k)
+        world.add_box({lean * float(k), 0.25f + 0.5f * float(k), 0}, {0.3f, 0.25f, 0.3f}, 500.0f);
+    const std::size_t top = 20;
+    // 40 s: fallen once the top box is 1.75 m below where it was put; where
+    // the top settles is taken at 10 s, and its sway is how far it strays
+    // from there in the 30 s after.
+    double fell_at = -1.0, settled = 0.0, sway = 0.0;
+    for (int i = 1; i <= 120 * 40; ++i) {
+        world.step();
+        const glm::vec3 p = world.bodies()[top].position;
+        if (fell_at < 0.0 && p.y < 8.0f) fell_at = double(i) / 120.0;
+        if (i == 120 * 10) settled = p.x;
+        if (i > 120 * 10) sway = std::max(sway, std::abs(double(p.x) - settled));
+    }
+    std::printf(
+        "{\"probe\": \"staircase\", \"of_tipping\": %.2f, \"lean_m\": %.4f, "
+        "\"fell_at_s\": %.2f, \"top_x_at_10s_m\": %.4f, \"sway_10_40s_mm\": %.1f}\n",
+        of_tipping, lean, fell_at, fell_at < 0.0 ? settled : -1.0,
+        fell_at < 0.0 ? sway * 1000.0 : -1.0);
+    std::fflush(stdout);
+}
+
+// `count` cubes of 0.6 m, each `ratio` times as dense as the one cube under
+// them, 60 s awake: when the top cube first strays 0.1 m from where it was
+// put (fallen), the fastest twist about the vertical of any cube, and how far
+// the top has sunk after 2 s and after 60 s (the springs' give under the load).
+void heavy_on_light(const SolverSettings& solver, float ratio, int count) {
+    World world = awake_floor_world(solver);
+    world.add_box({0, 0.3f, 0}, glm::vec3(0.3f), 500.0f);
+    for (int k = 0; k < count; ++k)
+        world.add_box({0, 0.9f + 0.6f * float(k), 0}, glm::vec3(0.3f), 500.0f * ratio);
+    const std::size_t top = std::size_t(count) + 1;
+    const glm::vec3 put = world.bodies()[top].position;
+    double fell_at = -1.0, twist = 0.0, sunk = 0.0;
+    for (int i = 1; i <= 120 * 60; ++i) {
+        world.step();
+        const glm::vec3 p = world.bodies()[top].position;
+        if (fell_at < 0.0 && glm::length(p - put) > 0.1f) fell_at = double(i) / 120.0;
+        if (i == 240) sunk = double(put.y - p.y);
+        for (const Body& body : world.bodies())
+            twist = std::max(twist, double(std::abs(body.angular_velocity.y)));
+    }
+    const double sunk_at_end = double(put.y - world.bodies()[top].position.y);
+    std::printf(
+        "{\"probe\": \"heavy_on_light\", \"ratio\": %.0f, \"heavy_boxes\": %d, "
+        "\"fell_at_s\": %.2f, \"sunk_at_2s_mm\": %.2f, \"sunk_at_60s_mm\": %.2f, "
+        "\"most_twist_rad_s\": %.4f}\n",
+        ratio, count, fell_at, sunk * 1000.0, fell_at < 0.0 ? sunk_at_end * 1000.0 : -1.0, twist);
+    std::fflush(stdout);
+}
+
+int stacks(const SolverSettings& solver) {
+    std::printf(
+        "{\"probe\": \"settings\", \"substeps\": %d, \"iterations\": %d, "
+        "\"relax_iterations\": %d, \"contact_hertz\": %.1f}\n",
+        solver.substeps, solver.iterations, solver.relax_iterations, double(solver.contact_hertz));
+    for (float of_tipping : {0.63f, 0.80f, 0.93f, 1.10f}) staircase(solver, of_tipping);
+    heavy_on_light(solver, 100.0f, 10);
+    heavy_on_light(solver, 1000.0f, 1);
+    return scene(1000, 14, solver);
+}
+// [/stacks]
+
 bool parse_count(const char* text, uint32_t& count) {
     char* end = nullptr;
     const long value = std::strtol(text, &end, 10);
@@ -175,6 +268,19 @@ bool parse_count(const char* text, uint32_t& count) {
         return false;
     }
     count = uint32_t(value);
+    return true;
+}
+
+// A whole number from `low` to `high` for option `name`, or false with a message.
+bool parse_int(const char* name, const char* text, long low, long high, int& out) {
+    char* end = nullptr;
+    const long value = std::strtol(text, &end, 10);
+    if (end == text || *end != '\0' || value < low || value > high) {
+        std::fprintf(stderr, "physics_bench: %s is from %ld to %ld, not '%s'\n", name, low, high,
+                     text);
+        return false;
+    }
+    out = int(value);
     return true;
 }
 
@@ -188,10 +294,24 @@ int main(int argc, char** argv) {
         return scaling(counts);
     }
     uint32_t count = 1000, seed = 14;
+    bool probe_stacks = false;
+    SolverSettings solver;
     for (int i = 1; i < argc; i += 2) {
-        if (i + 1 < argc && std::strcmp(argv[i], "--count") == 0) {
+        const bool has_value = i + 1 < argc;
+        if (std::strcmp(argv[i], "--stacks") == 0) {
+            probe_stacks = true;
+            --i;  // no value
+        } else if (has_value && std::strcmp(argv[i], "--count") == 0) {
             if (!parse_count(argv[i + 1], count)) return 2;
-        } else if (i + 1 < argc && std::strcmp(argv[i], "--seed") == 0) {
+        } else if (has_value && std::strcmp(argv[i], "--substeps") == 0) {
+            if (!parse_int("--substeps", argv[i + 1], 1, 64, solver.substeps)) return 2;
+        } else if (has_value && std::strcmp(argv[i], "--iterations") == 0) {
+            if (!parse_int("--iterations", argv[i + 1], 1, 64, solver.iterations)) return 2;
+        } else if (has_value && std::strcmp(argv[i], "--hertz") == 0) {
+            int hertz = 0;
+            if (!parse_int("--hertz", argv[i + 1], 1, 100000, hertz)) return 2;
+            solver.contact_hertz = float(hertz);
+        } else if (has_value && std::strcmp(argv[i], "--seed") == 0) {
             char* end = nullptr;
             const unsigned long value = std::strtoul(argv[i + 1], &end, 10);
             if (end == argv[i + 1] || *end != '\0' || value > 0xffffffffUL) {
@@ -202,9 +322,10 @@ int main(int argc, char** argv) {
             seed = uint32_t(value);
         } else {
             std::fprintf(stderr,
-                         "usage: physics_bench [--count N] [--seed S] | --scaling [COUNT...]\n");
+                         "usage: physics_bench [--stacks] [--count N] [--seed S] [--substeps N] "
+                         "[--iterations N] [--hertz H] | --scaling [COUNT...]\n");
             return 2;
         }
     }
-    return scene(count, seed);
+    return probe_stacks ? stacks(solver) : scene(count, seed, solver);
 }
