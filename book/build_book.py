@@ -519,7 +519,7 @@ def place_math(body: str, math: list[tuple[str, bool]]) -> str:
     return MATH_TOKEN_RE.sub(one, body)
 
 
-# Frames are named by their index, from 0 (appendix_testing.md, "Which frame the
+# Frames are named by their index, from 0 (appendix_headless.md, "Which frame the
 # pictures show"): never by position ("the tenth frame"), and a frame's time is
 # its index / 60 s, so "frame 10 (t = 0.15 s)" is wrong twice over.
 FRAME_POSITION_RE = re.compile(r"\b(third|fourth|fifth|sixth|seventh|eighth|ninth|tenth|[0-9]+(?:st|nd|rd|th)) "

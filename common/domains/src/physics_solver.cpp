@@ -17,7 +17,7 @@ void tangent_basis(glm::vec3 n, glm::vec3& t1, glm::vec3& t2) {
 void soft_constraint(float hertz, float zeta, float h, float& bias_rate, float& mass_scale,
                      float& impulse_scale) {
     // A spring of angular frequency omega and damping ratio zeta on the
-    // overlap, stepped implicitly over h (book/14_physics.md derives it).
+    // overlap, stepped implicitly over h (book/14d_solver.md derives it).
     const float omega = 2.0f * 3.14159265f * hertz;
     const float a1 = 2.0f * zeta + h * omega;
     const float a2 = h * omega * a1;

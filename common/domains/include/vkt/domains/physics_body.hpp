@@ -36,7 +36,7 @@ static_assert(sizeof(Body) == 23 * sizeof(float), "no padding: the tests memcmp 
 // [box-inertia]
 // The inverse of a solid box's principal moments of inertia about its centre,
 // for mass m and half extents (a, b, c): I_x = m (b^2 + c^2) / 3, and so on
-// (book/14_physics.md derives it). Mass 0 (static) gives 0: infinitely heavy.
+// (book/14b_inertia.md derives it). Mass 0 (static) gives 0: infinitely heavy.
 glm::vec3 box_inverse_inertia(glm::vec3 half_extents, float mass);
 // [/box-inertia]
 

@@ -1,6 +1,6 @@
 #pragma once
 // The command line every chapter shares, from chapter 01 on (--validation); see
-// README.md's "Running a chapter" and the book's "Running headless and testing".
+// README.md's "Running a chapter" and the book's "Running headless" appendix.
 // Parsing is pure, so the unit tests can feed it any argument list.
 
 #include <cstdint>
