@@ -563,6 +563,9 @@ LAB_NOTES = (
 )
 
 
+MAX_PAGE_LINES = 450  # of Markdown, on every page
+
+
 def check_chapter_page(book: Path, page: Page) -> list[str]:
     """The ending every chapter page shares, and no lab notes in its prose or in the
     program output its code blocks quote (the sources they include are not read here)."""
@@ -1504,6 +1507,13 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
             problems.extend(check_chapter_page(book, page))
         elif SUB_PAGE_RE.match(page.md_name):
             problems.extend(check_sub_page(book, page, cores.get(page.md_name[:2])))
+    # A page a reader finishes in one sitting: past MAX_PAGE_LINES, split it by
+    # idea into a core page and sub-pages (CONTRIBUTING.md).
+    for page in pages:
+        count = len((book / page.md_name).read_text(encoding="utf-8").splitlines())
+        if count > MAX_PAGE_LINES:
+            problems.append(f"book/{page.md_name}: {count} lines, over {MAX_PAGE_LINES}: split it "
+                            "by idea into a core page and sub-pages (NNb_name.md, CONTRIBUTING.md)")
     for page in pages:
         golden = f"tests/golden/{page.md_name[:-3]}.png"
         if is_chapter(page.md_name) and (root / golden).exists() and golden not in page.markdown:
