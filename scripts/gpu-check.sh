@@ -105,6 +105,21 @@ if [ -x "$bin/23_materials" ]; then
     [ $rc -eq 0 ] || status=1
   done
 fi
+# The debug views that draw a chapter's own images (tests/chapters/22_shadows.cmake,
+# 23_materials.cmake): each against its own lavapipe golden. 24's --view boxes
+# needs VK_KHR_ray_query, checked above with the chapter.
+for run in "22_shadows|22_shadows_map|320x240|--view map" \
+           "23_materials|23_materials_view_sky|640x480|--view sky" \
+           "23_materials|23_materials_view_irradiance|640x480|--view irradiance" \
+           "23_materials|23_materials_view_prefiltered|640x480|--view prefiltered" \
+           "23_materials|23_materials_view_brdf|640x480|--view brdf --tone-map clamp"; do
+  IFS='|' read -r chapter name size extra <<<"$run"
+  [ -x "$bin/$chapter" ] || continue
+  check "$name" "$chapter" "tests/golden/$name.png" "" \
+    "--headless --validation --frames 10 --size $size $extra"; rc=$?
+  echo "$chapter $extra picture vs lavapipe golden: exit $rc; $(grep -h -E '^picture|^FAIL' "$out/gpu.$name.check.txt" | tr '\n' ' ')"
+  [ $rc -eq 0 ] || status=1
+done
 # Chapter 25 lays its shader binding table out by the device's alignments and
 # caps its recursion by the device's maxRayRecursionDepth: both lines, and the
 # picture without reflections against its own lavapipe golden.
