@@ -78,7 +78,7 @@ def contact_sheet(pictures: list[tuple[str, Path]], target: Path) -> None:
         font, bold = ImageFont.truetype(FONT, 15), ImageFont.truetype(FONT_BOLD, 22)
     except OSError:
         font = bold = ImageFont.load_default()
-    draw.text((pad, 16), "Vulkan in C++20: every chapter that draws, frame 60, headless", fill=(31, 35, 40),
+    draw.text((pad, 16), "Vulkan in C++20: every chapter that draws, headless, at frame 59 (the last of --frames 60)", fill=(31, 35, 40),
               font=bold)
     for i, (title, image) in enumerate(images):
         row, col = divmod(i, COLUMNS)
