@@ -23,6 +23,7 @@ run() {  # run LABEL FRAMES EXE ARGS...
     grep '^{' | tee -a "$out"
 }
 for round in $(seq "$rounds"); do
+  echo "# round $round of $rounds" | tee -a "$out"
   run "empty" 300 03_swapchain
   for dim in 4 8; do
     run "many $dim auto" 30 20_ndim_compute --scene many --dim "$dim"
