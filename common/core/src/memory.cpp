@@ -150,12 +150,13 @@ Image make_image(VkPhysicalDevice physical, VkDevice device, VkFormat format, Vk
     };
     // Past the device's largest image of this format, vkCreateImage itself
     // is an error: ask first (its pixels alone, the least it can need).
+    // A format the query does not answer for is left to vkCreateImage.
     VkImageFormatProperties limits{};
-    VKT_CHECK(vkGetPhysicalDeviceImageFormatProperties(physical, format, info.imageType,
-                                                       info.tiling, info.usage, 0, &limits));
+    const VkResult asked = vkGetPhysicalDeviceImageFormatProperties(
+        physical, format, info.imageType, info.tiling, info.usage, 0, &limits);
     const VkDeviceSize least = VkDeviceSize(extent.width) * extent.height * samples *
                                texel_bytes(format) * (mip_levels > 1 ? 4 : 3) / 3;
-    if (least > limits.maxResourceSize)
+    if (asked == VK_SUCCESS && least > limits.maxResourceSize)
         throw ImageTooLarge("the device's largest image of this format is " +
                                 std::to_string(limits.maxResourceSize) + " bytes" +
                                 " (maxResourceSize)",
