@@ -100,7 +100,7 @@ std::vector<char> read_file_start(const std::filesystem::path& path, size_t coun
 }
 
 std::string shown_path(const std::filesystem::path& path) {
-    const std::string text = path.string();
+    std::string text = path.string();
     const auto control = [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; };
     const bool plain =
         !text.empty() && text.front() != ' ' && text.back() != ' ' &&
