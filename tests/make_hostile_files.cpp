@@ -59,6 +59,23 @@
 //   instances_200.gltf       200 of them: within the limit on vertices drawn, but
 //                            26's flattened copy needs 9 GiB
 //
+// and those refused in words that named the wrong thing, or nothing:
+//
+//   empty_bin_chunk.glb      a .glb whose BIN chunk is empty: "buffer 0: tinygltf
+//                            refuses it: Insufficient storage space ..."
+//   cmyk.jpg, cmyk_image.gltf  a CMYK JPEG (4 components, no Adobe marker), and a
+//                            triangle textured with it: "Unsupported color
+//                            conversion request"
+//   dnl.jpg                  a JPEG of height 0: "Empty JPEG image (DNL not supported)"
+//   iend_out_of_place.png    a PNG whose IEND comes before its IDAT: "IEND: out of place"
+//   ihdr_zero_width.png      a PNG of width 0: "Invalid IHDR data"
+//   image_uri_outside.gltf   an image at "../outside.png": refused without "image 0:"
+//   "trailing_space.gltf ",  not glTF, under names a terminal shows wrongly (a
+//   "escape_\x1bc_reset.gltf" trailing space; ESC c, which resets a terminal):
+//                            the names were printed raw
+//   flat_8192.jpg            a flat 8192 x 8192 JPEG in 256 KiB (939 MiB decoded,
+//                            staged and mipmapped): what --max-memory 1G admits
+//
 //   vkt_make_hostile_files OUT_DIR [gltf]   (gltf: only the files that need no
 //                                            other file, for the fuzzers'
 //                                            regressions)
@@ -212,7 +229,8 @@ void write_big_data_uri(const fs::path& path, uint64_t size) {
 // one Huffman table of a single 1-bit code for DC and one for AC: each 8x8
 // block is two bits ("no change", "end of block"), a flat grey picture, and
 // `blocks` of them are in its scan. Written byte by byte: no encoder needed.
-Bytes jpeg_claiming(uint16_t width, uint16_t height, size_t blocks) {
+// With 4 `components` (and no Adobe marker) libjpeg reads it as CMYK.
+Bytes jpeg_claiming(uint16_t width, uint16_t height, size_t blocks, uint8_t components = 1) {
     Bytes jpeg = {0xFF, 0xD8};  // SOI
     auto segment = [&](uint8_t marker, const Bytes& data) {
         jpeg.insert(jpeg.end(),
@@ -222,8 +240,15 @@ Bytes jpeg_claiming(uint16_t width, uint16_t height, size_t blocks) {
     Bytes quantisation = {0x00};  // 8-bit table 0
     quantisation.resize(65, 1);
     segment(0xDB, quantisation);
-    segment(0xC0, {8, uint8_t(height >> 8), uint8_t(height), uint8_t(width >> 8), uint8_t(width), 1,
-                   1, 0x11, 0});   // 1 component: id 1, 1x1 sampling, table 0
+    Bytes frame = {
+        8, uint8_t(height >> 8), uint8_t(height), uint8_t(width >> 8), uint8_t(width), components};
+    Bytes scan = {components};
+    for (uint8_t c = 1; c <= components; ++c) {
+        frame.insert(frame.end(), {c, 0x11, 0});  // component c: 1x1 sampling, table 0
+        scan.insert(scan.end(), {c, 0x00});       // Huffman tables 0 and 0
+    }
+    scan.insert(scan.end(), {0, 63, 0});
+    segment(0xC0, frame);
     Bytes huffman_dc = {0x00, 1};  // DC table 0: one code of length 1 ...
     huffman_dc.resize(17, 0);
     huffman_dc.push_back(0x00);  // ... for category 0: no change
@@ -231,8 +256,8 @@ Bytes jpeg_claiming(uint16_t width, uint16_t height, size_t blocks) {
     Bytes huffman_ac = huffman_dc;
     huffman_ac[0] = 0x10;  // AC table 0: the one code is 0x00, end of block
     segment(0xC4, huffman_ac);
-    segment(0xDA, {1, 1, 0x00, 0, 63, 0});  // the scan: component 1, tables 0 and 0
-    const size_t bytes = (2 * blocks + 7) / 8;
+    segment(0xDA, scan);
+    const size_t bytes = (2 * blocks * components + 7) / 8;
     jpeg.insert(jpeg.end(), bytes, 0x00);   // two 0 bits a block (0x00 needs no stuffing)
     jpeg.insert(jpeg.end(), {0xFF, 0xD9});  // EOI
     return jpeg;
@@ -422,6 +447,44 @@ Bytes png_palette_index_past_end() {
     return png;
 }
 
+// A PNG of `chunks` after its signature, each chunk's type and data, in
+// that order: what libpng refuses for its order or its header.
+Bytes png_of(const std::vector<std::pair<const char*, Bytes>>& chunks) {
+    Bytes png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    for (const auto& [type, data] : chunks) png_chunk(png, type, data);
+    return png;
+}
+Bytes ihdr_of(uint32_t width, uint32_t height) {
+    Bytes ihdr;
+    put_u32_big(ihdr, width);
+    put_u32_big(ihdr, height);
+    ihdr.insert(ihdr.end(), {8, 6, 0, 0, 0});  // 8 bits, RGBA, deflate, no filter, no interlace
+    return ihdr;
+}
+// A 1 x 1 RGBA picture's one row (filter 0, 4 bytes), stored in deflate.
+Bytes one_pixel_idat() {
+    const Bytes row = {0, 0xFF, 0x80, 0x00, 0xFF};
+    Bytes idat = {0x78, 0x01, 0x01, uint8_t(row.size()), 0, uint8_t(~row.size()), 0xFF};
+    idat.insert(idat.end(), row.begin(), row.end());
+    put_u32_big(idat, adler32(row));
+    return idat;
+}
+
+// A .glb of `json` (padded with spaces to 4 bytes) and a BIN chunk of `bin`.
+Bytes glb_of(std::string json, const Bytes& bin) {
+    json.resize((json.size() + 3) / 4 * 4, ' ');
+    Bytes glb = {'g', 'l', 'T', 'F', 2, 0, 0, 0, 0, 0, 0, 0};
+    const auto chunk = [&](const char* type, const uint8_t* data, size_t size) {
+        for (size_t i = 0; i < 4; ++i) glb.push_back(uint8_t(uint32_t(size) >> (8 * i)));
+        glb.insert(glb.end(), type, type + 4);
+        glb.insert(glb.end(), data, data + size);
+    };
+    chunk("JSON", reinterpret_cast<const uint8_t*>(json.data()), json.size());
+    chunk("BIN\0", bin.data(), bin.size());
+    put_u32(glb, 8, uint32_t(glb.size()));
+    return glb;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -457,6 +520,25 @@ int main(int argc, char** argv) {
         const std::string view_1 = R"({"bufferView": 1, "componentType": 5123)";
         no_view.replace(no_view.find(view_1), view_1.size(), R"({"componentType": 5123)");
         write(out / "indices_no_view.gltf", no_view);
+        // An empty BIN chunk where the buffer wants 44 bytes of it.
+        write(out / "empty_bin_chunk.glb",
+              glb_of(R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+  "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+  "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+  "buffers": [{"byteLength": 44}]})",
+                     {}));
+        // Pictures the decoders refuse in their own jargon: CMYK, a height of
+        // 0 (to come in a DNL marker), a chunk out of place, a header of width 0.
+        write(out / "cmyk.jpg", jpeg_claiming(8, 8, 1, 4));
+        write(out / "dnl.jpg", jpeg_claiming(8, 0, 1));
+        write(
+            out / "iend_out_of_place.png",
+            png_of(
+                {{"IHDR", ihdr_of(1, 1)}, {"IEND", {}}, {"IDAT", one_pixel_idat()}, {"IEND", {}}}));
+        write(out / "ihdr_zero_width.png",
+              png_of({{"IHDR", ihdr_of(0, 1)}, {"IDAT", one_pixel_idat()}, {"IEND", {}}}));
         write(out / "positions_2_24.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 0}],
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
   "accessors": [{"componentType": 5126, "count": 16777216, "type": "VEC3"}]}
@@ -470,6 +552,18 @@ int main(int argc, char** argv) {
             write(out / "flat_4096.jpg", jpeg_claiming(4096, 4096, 512 * 512));
             write_fan(out / "fan_200000.gltf", 200000);
             write_zeros(out / "zeros_100000.gltf", 100000);
+            // An image whose URI leads out of the model's folder (refused,
+            // with tinygltf only warning), and the CMYK JPEG as a model's image.
+            write(out / "image_uri_outside.gltf", textured_triangle("../outside.png"));
+            write(out / "cmyk_image.gltf", textured_triangle("cmyk.jpg"));
+            // Names a terminal would show wrongly: a trailing space, an
+            // escape sequence (ESC c resets the terminal). Not glTF.
+            write(out / "trailing_space.gltf ", "not glTF\n");
+            const std::string escape = "escape_\x1b";  // then "c": ESC c
+            write(out / (escape + "c_reset.gltf"), "not glTF\n");
+            // A flat 8192 x 8192 JPEG of 256 KiB: 939 MiB decoded, staged and
+            // mipmapped, what a budget of 1 GiB still lets through.
+            write(out / "flat_8192.jpg", jpeg_claiming(8192, 8192, 1024 * 1024));
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "vkt_make_hostile_files: %s\n", e.what());

@@ -141,8 +141,12 @@ vkt::Image upload_texture(const vkt::Context& context, const vkt::RgbaImage& pix
 
     // [staging]
     // The levels to upload: level 0, or every level when the CPU makes them.
-    std::vector<vkt::RgbaImage> levels{pixels};
-    if (mips == "cpu") levels = vkt::generate_mips_cpu(pixels, /*srgb=*/true);
+    // Level 0 is the decoded picture itself, not a copy (at 8192 x 8192 a
+    // copy would be 256 MiB that --max-memory does not count).
+    std::vector<vkt::RgbaImage> cpu_levels;
+    if (mips == "cpu") cpu_levels = vkt::generate_mips_cpu(pixels, /*srgb=*/true);
+    const std::span<const vkt::RgbaImage> levels =
+        mips == "cpu" ? std::span<const vkt::RgbaImage>(cpu_levels) : std::span(&pixels, 1);
     VkDeviceSize total = 0;
     for (const auto& level : levels) total += level.pixels.size();
     vkt::Buffer staging =
@@ -236,7 +240,7 @@ public:
         vkt::RgbaImage pixels = load_texture(file, budget);
         const uint32_t max_size = context.properties.limits.maxImageDimension2D;
         if (pixels.width > max_size || pixels.height > max_size)
-            throw vkt::Error(file.string() + ": larger than this device's " +
+            throw vkt::Error(vkt::shown_path(file) + ": larger than this device's " +
                              std::to_string(max_size) + " texel limit");
 
         // [format-check]
@@ -260,7 +264,7 @@ public:
         // staging copy, level 0 included: 4/3 of the pixels again.
         if (mips == "cpu")
             budget.charge(uint64_t(pixels.pixels.size()) * 4 / 3,
-                          file.string() + ": its mip chain, made on the CPU");
+                          vkt::shown_path(file) + ": its mip chain, made on the CPU");
         texture_ = upload_texture(context, pixels, mips);
 
         // [sampler]
@@ -298,7 +302,7 @@ public:
                 ? "anisotropic filtering off"
                 : "anisotropic filtering off (the device has no samplerAnisotropy)";
         std::fprintf(stderr, "09_textures: %s, %ux%u, %u mip level%s (%s), %s\n",
-                     file.filename().string().c_str(), pixels.width, pixels.height,
+                     vkt::shown_path(file.filename()).c_str(), pixels.width, pixels.height,
                      texture_.mip_levels, texture_.mip_levels == 1 ? "" : "s", mips.c_str(),
                      filtering.c_str());
 

@@ -87,11 +87,12 @@ public:
                                       : vkt::asset_path("gltf/scene.gltf").string();
         scene_ = vkt::load_gltf(model, uint64_t(context.options.integer("--max-memory")));
         for (const std::string& warning : scene_.warnings)
-            std::fprintf(stderr, "10_gltf: %s: warning: %s\n", model.c_str(), warning.c_str());
+            std::fprintf(stderr, "10_gltf: %s: warning: %s\n", vkt::shown_path(model).c_str(),
+                         warning.c_str());
         std::fprintf(stderr,
                      "10_gltf: %s: draws %zu, primitives %zu, materials %zu, images %zu, "
                      "vertices %zu, indices %zu\n",
-                     model.c_str(), scene_.draws.size(), scene_.primitives.size(),
+                     vkt::shown_path(model).c_str(), scene_.draws.size(), scene_.primitives.size(),
                      scene_.materials.size(), scene_.images.size(), scene_.vertices.size(),
                      scene_.indices.size());
         // [/load]

@@ -66,8 +66,8 @@ public:
             scene_ = vkt::load_gltf(path, uint64_t(context.options.integer("--max-memory")),
                                     vkt::GltfMaterials::metallic_roughness);
             for (const std::string& warning : scene_.warnings)
-                std::fprintf(stderr, "23_materials: %s: warning: %s\n", path.c_str(),
-                             warning.c_str());
+                std::fprintf(stderr, "23_materials: %s: warning: %s\n",
+                             vkt::shown_path(path).c_str(), warning.c_str());
         } else {
             scene_ = grid::sphere_scene(furnace_);
         }

@@ -92,17 +92,18 @@ public:
         const std::string path = context.options.has("--model")
                                      ? context.options.text("--model")
                                      : vkt::asset_path("gltf/knot.glb").string();
+        const std::string shown = vkt::shown_path(path);  // for messages: quoted where odd
         const vkt::GltfScene scene =
             vkt::load_gltf(path, uint64_t(context.options.integer("--max-memory")));
         for (const std::string& warning : scene.warnings)
-            std::fprintf(stderr, "26_mesh_shaders: %s: warning: %s\n", path.c_str(),
+            std::fprintf(stderr, "26_mesh_shaders: %s: warning: %s\n", shown.c_str(),
                          warning.c_str());
         // The flattened copy is charged to the same budget as the load: a
         // mesh that many nodes share is copied once for each (its vertices
         // here, staged and on the GPU; its indices, and the meshlets' arrays
         // of at most 40 bytes an index).
         vkt::MemoryBudget budget(uint64_t(context.options.integer("--max-memory")));
-        budget.charge(scene.memory_charged, path + ": the scene as loaded");
+        budget.charge(scene.memory_charged, shown + ": the scene as loaded");
         uint64_t drawn_vertices = 0, drawn_indices = 0;
         for (const vkt::GltfDraw& draw : scene.draws) {
             drawn_vertices += scene.primitives[draw.primitive].vertex_count;
@@ -110,7 +111,7 @@ public:
         }
         budget.charge(drawn_vertices * (3 * sizeof(GpuVertex) + sizeof(glm::vec3)) +
                           drawn_indices * (3 * sizeof(uint32_t) + 40),
-                      path + ": its draws flattened into one mesh");
+                      shown + ": its draws flattened into one mesh");
         std::vector<GpuVertex> vertices;
         std::vector<glm::vec3> positions;
         std::vector<uint32_t> indices;
@@ -174,7 +175,7 @@ public:
         // allows at most maxTaskWorkGroupCount[0] of them along x.
         task_groups_ = (meshlet_count_ + kTaskGroup - 1) / kTaskGroup;
         if (task_groups_ > mesh_properties.maxTaskWorkGroupCount[0])
-            throw vkt::Error(path + ": " + std::to_string(meshlet_count_) +
+            throw vkt::Error(shown + ": " + std::to_string(meshlet_count_) +
                              " meshlets need more task workgroups than this device's "
                              "maxTaskWorkGroupCount[0] (" +
                              std::to_string(mesh_properties.maxTaskWorkGroupCount[0]) + ")");
@@ -183,7 +184,7 @@ public:
         std::fprintf(stderr,
                      "26_mesh_shaders: %s: %u triangles, %zu vertices -> %u meshlets "
                      "(at most %u vertices and %u triangles each; the device allows %u and %u)\n",
-                     path.c_str(), triangle_count_, vertices.size(), meshlet_count_, kMeshVertices,
+                     shown.c_str(), triangle_count_, vertices.size(), meshlet_count_, kMeshVertices,
                      kMeshTriangles, mesh_properties.maxMeshOutputVertices,
                      mesh_properties.maxMeshOutputPrimitives);
 
@@ -193,7 +194,7 @@ public:
         const VkDeviceSize largest =
             std::max(vertices.size() * sizeof(GpuVertex), built.vertices.size() * sizeof(uint32_t));
         if (largest > context.properties.limits.maxStorageBufferRange)
-            throw vkt::Error(path + ": its vertices need a storage buffer of " +
+            throw vkt::Error(shown + ": its vertices need a storage buffer of " +
                              std::to_string(largest) +
                              " bytes, more than this device's "
                              "maxStorageBufferRange (" +

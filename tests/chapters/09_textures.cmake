@@ -106,3 +106,22 @@ if(VKT_TRUNCATE)
     EXPECT "09_textures: error: .*nuls_1g.png: cannot decode image: not a PNG or JPEG file")
   set_tests_properties(bad_input.09_textures.nuls_1g PROPERTIES FIXTURES_REQUIRED vkt_nuls)
 endif()
+# Decoders' jargon said in words (common/resources/src/image_messages.cpp),
+# on pictures written by tests/make_hostile_files.cpp. Before, in libjpeg's
+# and libpng's own words: "Unsupported color conversion request", "Empty
+# JPEG image (DNL not supported)", "IEND: out of place", "Invalid IHDR data".
+vkt_chapter_test(bad_input.09_textures.cmyk_jpeg 09_textures EXIT 1
+  ARGS --headless --frames 1 --texture ${VKT_HOSTILE_DIR}/cmyk.jpg
+  EXPECT "09_textures: error: .*cmyk.jpg: cannot decode image: it is a CMYK JPEG \\(four inks, for print\\), which this loader does not convert to RGB: save it as an RGB JPEG or a PNG")
+vkt_chapter_test(bad_input.09_textures.dnl_jpeg 09_textures EXIT 1
+  ARGS --headless --frames 1 --texture ${VKT_HOSTILE_DIR}/dnl.jpg
+  EXPECT "09_textures: error: .*dnl.jpg: cannot decode image: its header gives a height of 0: the height would come after the first scan, in a DNL marker, which libjpeg-turbo does not read")
+vkt_chapter_test(bad_input.09_textures.png_chunk_out_of_place 09_textures EXIT 1
+  ARGS --headless --frames 1 --texture ${VKT_HOSTILE_DIR}/iend_out_of_place.png
+  EXPECT "09_textures: error: .*iend_out_of_place.png: cannot decode image: its end chunk \\(IEND\\) is out of place: a PNG is its header \\(IHDR\\) first, .* and its end \\(IEND\\) last")
+vkt_chapter_test(bad_input.09_textures.png_invalid_header 09_textures EXIT 1
+  ARGS --headless --frames 1 --texture ${VKT_HOSTILE_DIR}/ihdr_zero_width.png
+  EXPECT "09_textures: error: .*ihdr_zero_width.png: cannot decode image: its header chunk \\(IHDR\\) is invalid: image width is zero")
+set_tests_properties(bad_input.09_textures.cmyk_jpeg bad_input.09_textures.dnl_jpeg
+  bad_input.09_textures.png_chunk_out_of_place bad_input.09_textures.png_invalid_header
+  PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)

@@ -74,3 +74,11 @@ vkt_chapter_test(bad_input.21_multisampling.sample_shading_one_sample 21_multisa
 vkt_chapter_test(bad_input.21_multisampling.no_sample_rate_shading 21_multisampling EXIT 1
   ARGS --headless --frames 1 --sample-shading 1 ENV VKT_HIDE_FEATURES=sampleRateShading
   EXPECT "--sample-shading: .* lacks the sampleRateShading feature \\(hidden by VKT_HIDE_FEATURES\\)")
+# A size too large for the device, said so with the size: a 16384 x 16384
+# target of 4 samples is 4 GiB, one byte past lavapipe's largest image
+# (maxResourceSize), checked before the image is made (vkCreateImage would
+# be a validation error). Before: "vkBindImageMemory failed with
+# VK_ERROR_OUT_OF_DEVICE_MEMORY (-2) at memory.cpp:109", and no size.
+vkt_chapter_test(bad_input.21_multisampling.size_too_large 21_multisampling EXIT 1
+  ARGS --headless --validation --frames 1 --size 16384x16384
+  EXPECT "21_multisampling: error: --size 16384x16384: too large for this device: an image of 16384x16384, 4 samples a pixel, needs 4 GiB \\(4294967296 bytes\\), and the device's largest (image of this format|allocation) is [0-9]+ bytes \\((maxResourceSize|maxMemoryAllocationSize)\\); try a smaller --size")

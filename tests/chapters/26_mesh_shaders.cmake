@@ -159,7 +159,7 @@ vkt_chapter_test(bad_input.26_mesh_shaders.instances_2000 26_mesh_shaders EXIT 1
 vkt_chapter_test(bad_input.26_mesh_shaders.instances_200 26_mesh_shaders EXIT 1
   ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE}
        --model ${VKT_HOSTILE_DIR}/instances_200.gltf
-  EXPECT "26_mesh_shaders: error: .*instances_200.gltf: its draws flattened into one mesh: needs 9155 MiB, which would bring what this file needs to [0-9]+ MiB, past the limit of 2 GiB \\(--max-memory\\)")
+  EXPECT "26_mesh_shaders: error: .*instances_200.gltf: its draws flattened into one mesh: needs 9155 MiB, which would bring what this file needs to [0-9]+ MiB, past the limit of 1 GiB \\(--max-memory\\)")
 set_tests_properties(bad_input.26_mesh_shaders.instances_2000 bad_input.26_mesh_shaders.instances_200
   PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
 # A million empty materials (3 MB) with --max-memory 500M: tinygltf's objects

@@ -1,5 +1,7 @@
 #include "vkt/frame/args.hpp"
 
+#include "vkt/core/memory_budget.hpp"
+
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 
@@ -257,7 +259,9 @@ TEST_CASE("the shared flag --max-memory takes a size in bytes or with K M G T",
     auto parse = [&](std::vector<const char*> args) {
         return parse_args(args, Flags::frame_loop, options);
     };
-    CHECK(parse({}).integer("--max-memory") == int64_t(2) << 30);  // the default, 2G
+    // The default, 1G: the flag's text and vkt::default_max_memory agree.
+    CHECK(parse({}).integer("--max-memory") == int64_t(1) << 30);
+    CHECK(uint64_t(parse({}).integer("--max-memory")) == vkt::default_max_memory);
     CHECK(parse({"--max-memory", "512M"}).integer("--max-memory") == int64_t(512) << 20);
     CHECK(parse({"--max-memory=4G"}).integer("--max-memory") == int64_t(4) << 30);
     CHECK_THROWS_WITH(parse({"--max-memory", "lots"}),

@@ -189,7 +189,7 @@ TEST_CASE("gltf budget: an accessor of 2^28 zeros is refused before it is alloca
     CHECK_THAT(load_error(model, vkt::default_max_memory),
                ContainsSubstring("zeros.gltf: mesh 0 primitive 0 POSITION: accessor 0") &&
                    ContainsSubstring("read as floats: needs 3 GiB, which would bring what this "
-                                     "file needs to 3072 MiB, past the limit of 2 GiB "
+                                     "file needs to 3072 MiB, past the limit of 1 GiB "
                                      "(--max-memory)"));
     CHECK(vkt_test::peak_resident_mib() < before + 16.0);
 }

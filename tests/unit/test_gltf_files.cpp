@@ -128,6 +128,36 @@ TEST_CASE("files: read_file looks before it reads, and names what it refuses", "
     fs::remove(huge);
 }
 
+TEST_CASE("files: a path that is not plain is quoted and escaped in messages", "[files]") {
+    CHECK(vkt::shown_path("models/car.gltf") == "models/car.gltf");
+    CHECK(vkt::shown_path("my models/car.gltf") == "my models/car.gltf");  // a space inside: plain
+    CHECK(vkt::shown_path("models/car.gltf ") == "\"models/car.gltf \"");
+    CHECK(vkt::shown_path(" car.gltf") == "\" car.gltf\"");
+    CHECK(vkt::shown_path("escape_\x1b"
+                          "c_reset.gltf") == "\"escape_\\x1bc_reset.gltf\"");
+    CHECK(vkt::shown_path("two\nlines\t.gltf") == "\"two\\nlines\\t.gltf\"");
+    CHECK(vkt::shown_path("say \"hi\"\\.gltf") == "\"say \\\"hi\\\"\\\\.gltf\"");
+    CHECK(vkt::shown_path("") == "\"\"");
+    // And read_file's refusals show it so.
+    CHECK(error_of([] {
+              vkt::read_file(
+                  "no-such \x1b"
+                  "c.gltf ");
+          }) == "cannot open \"no-such \\x1bc.gltf \"");
+}
+
+#ifdef __linux__
+TEST_CASE(
+    "files: a file of /proc, whose size reads as 0, is read from its first bytes, never whole",
+    "[files]") {
+    const std::vector<char> start = vkt::read_file_start("/proc/self/status", 5);
+    CHECK(std::string(start.begin(), start.end()) == "Name:");
+    CHECK(error_of([] { vkt::read_file("/proc/self/status"); }) ==
+          "/proc/self/status: its size reads as 0 bytes, yet it holds data (a file of /proc or "
+          "/sys?): only a file whose size is known is read");
+}
+#endif
+
 TEST_CASE("files: resolve_inside keeps a URI inside its folder", "[files]") {
     const Folders f("resolve_inside");
     const fs::path folder = f.model;
@@ -217,7 +247,7 @@ TEST_CASE("gltf files: no URI reads outside the model's folder", "[gltf][files]"
     CHECK_THAT(
         model_error(f, "image.gltf",
                     triangle_json("tri.bin", 44, R"(, "images": [{"uri": "../outside/a.png"}])")),
-        ContainsSubstring("image.gltf: URI \"../outside/a.png\" leads out"));
+        ContainsSubstring("image.gltf: image 0: URI \"../outside/a.png\" leads out"));
 }
 
 TEST_CASE("gltf files: tinygltf issue 416's URI is one line naming it", "[gltf][files]") {
@@ -229,7 +259,8 @@ TEST_CASE("gltf files: tinygltf issue 416's URI is one line naming it", "[gltf][
         model_error(f, "issue416.gltf",
                     triangle_json("tri.bin", 44, R"(, "images": [{"uri": "%!QAAAQAAA5"}])"));
     CHECK(error == (f.model / "issue416.gltf").string() +
-                       ": URI \"%00AAAQAAA5\" is not a file name: it holds a control character");
+                       ": image 0: URI \"%00AAAQAAA5\" is not a file name: it holds a control "
+                       "character");
 }
 
 TEST_CASE("gltf files: directories and files past 1 GiB are refused by name", "[gltf][files]") {

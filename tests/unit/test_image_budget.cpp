@@ -59,7 +59,7 @@ std::string error_of(const std::vector<uint8_t>& bytes) {
 }  // namespace
 
 TEST_CASE("image budget: pixels, a staging copy and two mip chains are counted", "[texture]") {
-    // 8192 x 8192 x 4 = 256 MiB; + 2 x 4/3 of it: 939 MiB, inside 2 GiB.
+    // 8192 x 8192 x 4 = 256 MiB; + 2 x 4/3 of it: 939 MiB, inside 1 GiB.
     CHECK(vkt::image_memory_cost(8192, 8192) == 268435456ull + 2 * 357913941ull);
     CHECK(vkt::image_memory_cost(8192, 8192) <= vkt::default_max_memory);
     CHECK(vkt::image_memory_cost(16384, 16384) > vkt::default_max_memory);
@@ -76,7 +76,7 @@ TEST_CASE(
     const double before = vkt_test::peak_resident_mib();
     CHECK_THAT(error_of(claim),
                ContainsSubstring("claim.png: cannot decode image: it is 16384x16384: decoded, "
-                                 "staged and mipmapped it would take 3755 MiB, past the 2 GiB "
+                                 "staged and mipmapped it would take 3755 MiB, past the 1 GiB "
                                  "limit (--max-memory)"));
     const double after = vkt_test::peak_resident_mib();
     std::printf("peak resident memory: %.1f MiB before the refusal, %.1f MiB after\n", before,
@@ -87,7 +87,7 @@ TEST_CASE(
 
 TEST_CASE("image budget: a PNG too small for the pixels its header claims is refused",
           "[texture]") {
-    // 4096 x 4096 is inside the budget (235 MiB of 2 GiB), but 69 bytes inflate to at
+    // 4096 x 4096 is inside the budget (235 MiB of 1 GiB), but 69 bytes inflate to at
     // most 71 KB, not the 64 MiB of its rows.
     CHECK_THAT(error_of(png_claiming(4096, 4096)),
                ContainsSubstring("claim.png: cannot decode image: its header claims 4096x4096 "

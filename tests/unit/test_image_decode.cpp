@@ -165,12 +165,14 @@ TEST_CASE("decode_image refuses a corrupt PNG, naming it", "[image_decode]") {
     Bytes data = file;
     data[idat + 6] ^= 0x55;
     CHECK_THROWS_WITH(vkt::decode_image(data, "corrupt.png"),
-                      StartsWith("corrupt.png: cannot decode image: IDAT: "));
+                      StartsWith("corrupt.png: cannot decode image: its compressed pixel data "
+                                 "(IDAT) is corrupt ("));
     // The chunk's checksum (the last 4 bytes before the next chunk, IEND).
     Bytes crc = file;
     crc[find(file, {'I', 'E', 'N', 'D'}) - 5] ^= 0x55;
     CHECK_THROWS_WITH(vkt::decode_image(crc, "corrupt.png"),
-                      "corrupt.png: cannot decode image: IDAT: CRC error");
+                      "corrupt.png: cannot decode image: its pixel data (IDAT) is damaged: its "
+                      "checksum (CRC) does not match its bytes");
 }
 
 TEST_CASE("decode_image refuses a truncated PNG", "[image_decode]") {
@@ -199,7 +201,8 @@ TEST_CASE("decode_image refuses a truncated JPEG instead of greying its end", "[
     const Bytes file = jpeg_of(16, 16, 3, gradient(16, 16, 3));
     const Bytes cut(file.begin(), file.end() - 40);  // inside the scan data
     CHECK_THROWS_WITH(vkt::decode_image(cut, "cut.jpg"),
-                      "cut.jpg: cannot decode image: Premature end of JPEG file");
+                      "cut.jpg: cannot decode image: the file ends before its last pixels (cut "
+                      "short?)");
 }
 
 TEST_CASE("decode_image refuses a JPEG larger than max_image_side from its header",

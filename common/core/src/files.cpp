@@ -57,15 +57,15 @@ uintmax_t readable_file_size(const std::filesystem::path& path) {
     // block and /dev/zero never ends. So: what is it, and how large?
     std::error_code error;
     const std::filesystem::file_status status = std::filesystem::status(path, error);
-    if (error || !std::filesystem::exists(status)) throw Error("cannot open " + path.string());
+    if (error || !std::filesystem::exists(status)) throw Error("cannot open " + shown_path(path));
     if (std::filesystem::is_directory(status))
-        throw Error(path.string() + ": is a directory, not a file");
+        throw Error(shown_path(path) + ": is a directory, not a file");
     if (!std::filesystem::is_regular_file(status))
-        throw Error(path.string() + ": is not a regular file");
+        throw Error(shown_path(path) + ": is not a regular file");
     const uintmax_t size = std::filesystem::file_size(path, error);
-    if (error) throw Error("cannot open " + path.string());
+    if (error) throw Error("cannot open " + shown_path(path));
     if (size > max_file_bytes)
-        throw Error(path.string() + ": is " + std::to_string(size) +
+        throw Error(shown_path(path) + ": is " + std::to_string(size) +
                     " bytes, past the 1 GiB limit for one file");
     return size;
 }
@@ -73,21 +73,57 @@ uintmax_t readable_file_size(const std::filesystem::path& path) {
 std::vector<char> read_file(const std::filesystem::path& path) {
     const uintmax_t size = readable_file_size(path);
     std::ifstream file(path, std::ios::binary);
-    if (!file) throw Error("cannot open " + path.string());
+    if (!file) throw Error("cannot open " + shown_path(path));
     std::vector<char> bytes(static_cast<size_t>(size));
     if (!file.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
-        throw Error("cannot read " + path.string());
+        throw Error("cannot read " + shown_path(path));
+    // A file of /proc or /sys says it is 0 bytes long and yet holds some:
+    // what it holds is not known until it is read, so it is not read.
+    if (size == 0 && file.peek() != std::ifstream::traits_type::eof())
+        throw Error(shown_path(path) +
+                    ": its size reads as 0 bytes, yet it holds data (a file of /proc or /sys?): "
+                    "only a file whose size is known is read");
     return bytes;
 }
 
 std::vector<char> read_file_start(const std::filesystem::path& path, size_t count) {
-    const uintmax_t size = readable_file_size(path);
+    (void)readable_file_size(path);  // its checks: no directory, no device
     std::ifstream file(path, std::ios::binary);
-    if (!file) throw Error("cannot open " + path.string());
-    std::vector<char> bytes(static_cast<size_t>(std::min<uintmax_t>(size, count)));
-    if (!file.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
-        throw Error("cannot read " + path.string());
+    if (!file) throw Error("cannot open " + shown_path(path));
+    // Up to `count` bytes, whatever size the file claims (one of /proc
+    // claims 0): its first bytes are what they are.
+    std::vector<char> bytes(count);
+    file.read(bytes.data(), static_cast<std::streamsize>(count));
+    if (file.bad()) throw Error("cannot read " + shown_path(path));
+    bytes.resize(static_cast<size_t>(file.gcount()));
     return bytes;
+}
+
+std::string shown_path(const std::filesystem::path& path) {
+    std::string text = path.string();
+    const auto control = [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; };
+    const bool plain =
+        !text.empty() && text.front() != ' ' && text.back() != ' ' &&
+        std::none_of(text.begin(), text.end(), [&](char c) { return control(c) || c == '"'; });
+    if (plain) return text;
+    std::string out = "\"";
+    for (const char c : text) {
+        if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\t') {
+            out += "\\t";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else if (control(c)) {
+            const char* hex = "0123456789abcdef";
+            const auto byte = static_cast<unsigned char>(c);
+            out += {'\\', 'x', hex[byte >> 4], hex[byte & 15]};
+        } else {
+            if (c == '"' || c == '\\') out += '\\';
+            out += c;
+        }
+    }
+    return out + "\"";
 }
 
 std::string printable(std::string_view text, size_t limit) {
@@ -123,7 +159,7 @@ std::filesystem::path resolve_inside(const std::filesystem::path& folder, std::s
     if (error) throw Error(named + ": " + error.message());
     const fs::path inside = target.lexically_relative(root);
     if (inside.empty() || *inside.begin() == "..")
-        throw Error(named + " leads out of the model's folder (" + root.string() +
+        throw Error(named + " leads out of the model's folder (" + shown_path(root) +
                     "): a model may name only files in its own folder");
     return target;
 }

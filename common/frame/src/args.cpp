@@ -286,7 +286,7 @@ OptionSpec max_memory_option() {
             .help =
                 "the most memory the file may make this chapter use, decoded, staged and "
                 "on the GPU (512M, 4G)",
-            .default_value = "2G",
+            .default_value = "1G",  // vkt::default_max_memory
             .min = double(uint64_t(16) << 20),
             .max = double(uint64_t(1) << 40)};
 }

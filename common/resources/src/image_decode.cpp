@@ -15,6 +15,8 @@
 
 #include "vkt/resources/image_io.hpp"
 
+#include "image_messages.hpp"
+
 #include "vkt/core/check.hpp"
 #include "vkt/core/files.hpp"
 #include "vkt/core/memory_budget.hpp"
@@ -46,7 +48,8 @@ struct PngReader {
     size_t offset = 0;  // how far libpng has read
     png_structp png = nullptr;
     png_infop info = nullptr;
-    char error[256] = "";  // why it stopped: libpng's words, or ours
+    char error[256] = "";    // why it stopped: libpng's words, or ours
+    char warning[256] = "";  // libpng's last warning: the reason for some errors
     uint32_t width = 0, height = 0;
     int bit_depth = 0, channels = 0;  // as stored in the file
     std::vector<uint8_t> pixels;
@@ -68,8 +71,12 @@ struct PngReader {
 
 // A warning is about an ancillary chunk (a colour profile, a text) that
 // libpng found damaged and skipped; the picture is whole. libpng would
-// print it on stderr: say nothing.
-void png_warned(png_structp, png_const_charp) {}
+// print it on stderr: say nothing, but keep it, since libpng also warns with
+// the reason for an error it then gives in general words ("Invalid IHDR data").
+void png_warned(png_structp png, png_const_charp message) {
+    auto* reader = static_cast<PngReader*>(png_get_error_ptr(png));
+    std::snprintf(reader->warning, sizeof reader->warning, "%s", message);
+}
 
 // libpng reads through this: from memory, never past the end.
 void png_read_bytes(png_structp png, png_bytep out, size_t length) {
@@ -283,7 +290,7 @@ uint64_t jpeg_coefficient_bytes(const jpeg_decompress_struct& info) {
 
 // The pixels, as RGBA straight from libjpeg-turbo (alpha 255); colour and
 // grey JPEGs both. CMYK ones are refused by libjpeg ("Unsupported color
-// conversion request").
+// conversion request", said in words by jpeg_reason).
 bool jpeg_pixels(JpegReader& r) {
     if (setjmp(r.errors.jump)) return false;
     r.info.out_color_space = JCS_EXT_RGBA;
@@ -302,6 +309,12 @@ bool jpeg_pixels(JpegReader& r) {
     }
     jpeg_finish_decompress(&r.info);  // the rest of the file, up to its end marker
     return true;
+}
+
+// Why libjpeg-turbo stopped, in words (image_messages.cpp).
+std::string jpeg_reason(const JpegReader& r) {
+    return image_detail::jpeg_reason(r.errors.manager.msg_code, r.errors.text,
+                                     r.info.jpeg_color_space, r.info.num_components);
 }
 
 // --- Both ---------------------------------------------------------------------
@@ -331,11 +344,12 @@ Kind kind_of(std::span<const uint8_t> bytes, const std::string& what) {
 ImageSize read_image_size(std::span<const uint8_t> bytes, const std::string& what) {
     if (kind_of(bytes, what) == Kind::png) {
         PngReader reader(bytes);
-        if (!png_header(reader)) cannot_decode(what, reader.error);
+        if (!png_header(reader))
+            cannot_decode(what, image_detail::png_reason(reader.error, reader.warning));
         return {reader.width, reader.height};
     }
     JpegReader reader(bytes);
-    if (!jpeg_header(reader)) cannot_decode(what, reader.errors.text);
+    if (!jpeg_header(reader)) cannot_decode(what, jpeg_reason(reader));
     return {reader.info.image_width, reader.info.image_height};
 }
 
@@ -370,7 +384,8 @@ RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what,
     };
     if (kind_of(bytes, what) == Kind::png) {
         PngReader reader(bytes);
-        if (!png_header(reader)) cannot_decode(what, reader.error);
+        if (!png_header(reader))
+            cannot_decode(what, image_detail::png_reason(reader.error, reader.warning));
         check_size(reader.width, reader.height, 0);
         if (!png_plausible(reader, bytes.size()))
             cannot_decode(what, "its header claims " + std::to_string(reader.width) + "x" +
@@ -378,11 +393,12 @@ RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what,
                                     std::to_string(bytes.size()) +
                                     " bytes cannot hold (PNG's compression shrinks at most " +
                                     std::to_string(deflate_max_ratio) + " times)");
-        if (!png_pixels(reader)) cannot_decode(what, reader.error);
+        if (!png_pixels(reader))
+            cannot_decode(what, image_detail::png_reason(reader.error, reader.warning));
         return {reader.width, reader.height, std::move(reader.pixels)};
     }
     JpegReader reader(bytes);
-    if (!jpeg_header(reader)) cannot_decode(what, reader.errors.text);
+    if (!jpeg_header(reader)) cannot_decode(what, jpeg_reason(reader));
     check_size(reader.info.image_width, reader.info.image_height,
                jpeg_coefficient_bytes(reader.info));
     if (!jpeg_plausible(reader.info, bytes.size()))
@@ -391,7 +407,7 @@ RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what,
                                 std::to_string(bytes.size()) +
                                 " bytes cannot hold (a Huffman-coded JPEG spends at least a bit "
                                 "on every 8x8 block of a scan)");
-    if (!jpeg_pixels(reader)) cannot_decode(what, reader.errors.text);
+    if (!jpeg_pixels(reader)) cannot_decode(what, jpeg_reason(reader));
     return {reader.info.output_width, reader.info.output_height, std::move(reader.pixels)};
 }
 
@@ -409,11 +425,12 @@ RgbaImage load_image_file(const std::filesystem::path& path, MemoryBudget& budge
     // Its first bytes say whether it is a PNG or a JPEG at all, before a
     // file of up to 1 GiB is read whole.
     const std::vector<char> start = read_file_start(path, 8);  // throws "cannot open FILE"
-    kind_of(std::span(reinterpret_cast<const uint8_t*>(start.data()), start.size()), path.string());
-    budget.charge(readable_file_size(path), path.string());  // the file's bytes, read
+    kind_of(std::span(reinterpret_cast<const uint8_t*>(start.data()), start.size()),
+            shown_path(path));
+    budget.charge(readable_file_size(path), shown_path(path));  // the file's bytes, read
     std::vector<char> file = read_file(path);
     return decode_image(std::span(reinterpret_cast<const uint8_t*>(file.data()), file.size()),
-                        path.string(), budget);
+                        shown_path(path), budget);
 }
 
 }  // namespace vkt

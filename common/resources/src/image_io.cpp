@@ -1,6 +1,7 @@
 #include "vkt/resources/image_io.hpp"
 
 #include "vkt/core/check.hpp"
+#include "vkt/core/files.hpp"
 
 #include <png.h>
 
@@ -24,7 +25,7 @@ void write_png(const std::filesystem::path& path, const RgbaImage& image) {
     png.height = image.height;
     png.format = PNG_FORMAT_RGBA;
     if (!png_image_write_to_file(&png, path.string().c_str(), 0, image.pixels.data(), 0, nullptr))
-        throw Error("cannot write " + path.string() + ": " + png.message);
+        throw Error("cannot write " + shown_path(path) + ": " + png.message);
 }
 
 RgbaImage read_png(const std::filesystem::path& path) {

@@ -14,7 +14,7 @@ ShaderModule load_shader(VkDevice device, std::string_view chapter, std::string_
     uint32_t magic = 0;
     if (code.size() >= 4) std::memcpy(&magic, code.data(), 4);
     if (code.size() % 4 != 0 || magic != 0x07230203)
-        throw Error(path.string() + " is not SPIR-V (rebuild the chapter's shaders)");
+        throw Error(shown_path(path) + " is not SPIR-V (rebuild the chapter's shaders)");
     // pCode must be 4-byte aligned; a vector<char>'s storage from operator new is.
     VkShaderModuleCreateInfo info{
         .sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,

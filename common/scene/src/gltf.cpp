@@ -62,13 +62,13 @@ public:
 
 private:
     [[noreturn]] void fail(const std::string& what) const {
-        throw Error(path_.string() + ": " + what);
+        throw Error(shown_path(path_) + ": " + what);
     }
     // Each distinct warning once (a hash set: a file may make hundreds of
     // thousands), the first kListedWarnings listed, the rest counted.
     void warn(const std::string& what) {
         if (warned_.contains(what)) return;
-        budget_.charge(what.size() + 64, path_.string() + ": its warnings");
+        budget_.charge(what.size() + 64, shown_path(path_) + ": its warnings");
         warned_.insert(what);
         if (scene_.warnings.size() < kListedWarnings)
             scene_.warnings.push_back(what);
@@ -176,7 +176,7 @@ private:
                          std::to_string(count) + " vertices)");
         } else {
             budget_.charge(uint64_t(count) * sizeof(uint32_t),
-                           path_.string() + ": " + what + ": its index list, generated");
+                           shown_path(path_) + ": " + what + ": its index list, generated");
             indices.resize(count);  // non-indexed: 0, 1, 2, ...
             for (size_t i = 0; i < count; ++i) indices[i] = uint32_t(i);
         }
@@ -185,7 +185,7 @@ private:
                                     ? indices.size() / 3 * 3
                                     : 3 * uint64_t(std::max<size_t>(indices.size(), 2) - 2);
         budget_.charge(listed * sizeof(uint32_t),
-                       path_.string() + ": " + what + ": its triangle list");
+                       shown_path(path_) + ": " + what + ": its triangle list");
         indices = to_triangle_list(indices, mode);
         if (indices.empty()) {
             warn("a primitive with no whole triangle is skipped");
@@ -198,7 +198,7 @@ private:
         // every triangle becomes a vertex of its own.
         const uint64_t kept = (normals.empty() ? indices.size() : count) * sizeof(GltfVertex) +
                               indices.size() * sizeof(uint32_t);
-        budget_.charge(3 * kept, path_.string() + ": " + what + ": its vertices and indices");
+        budget_.charge(3 * kept, shown_path(path_) + ": " + what + ": its vertices and indices");
         std::vector<GltfVertex> vertices(count);
         for (size_t v = 0; v < count; ++v) {
             vertices[v].position = {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]};
@@ -357,7 +357,7 @@ private:
                  std::to_string(gltf_max_drawn_vertices) +
                  " (2^26: each node draws its mesh's vertices again)");
         budget_.charge(primitives.size() * sizeof(GltfDraw),
-                       path_.string() + ": " + what + ": its draws");
+                       shown_path(path_) + ": " + what + ": its draws");
         for (uint32_t primitive : primitives) scene_.draws.push_back({primitive, world});
     }
 

@@ -58,7 +58,7 @@ const char* type_name(int type) {
 }  // namespace
 
 void Accessors::fail(const std::string& what) const {
-    throw Error(path_.string() + ": " + what);
+    throw Error(shown_path(path_) + ": " + what);
 }
 
 std::span<const uint8_t> Accessors::view_bytes(int index, const std::string& what) const {
@@ -184,7 +184,7 @@ std::vector<float> Accessors::read_floats(int index, const std::string& what,
     // An accessor without a view is all zeros: a few bytes of JSON may ask for
     // 2^28 elements, so its floats are charged before they exist.
     budget_.charge(uint64_t(a.count) * uint64_t(components) * sizeof(float),
-                   path_.string() + ": " + name + ", read as floats");
+                   shown_path(path_) + ": " + name + ", read as floats");
     out.assign(a.count * size_t(components), 0.0f);
     const size_t element_size = size_t(components) * size_t(component_size);
     // One element's components, from `element`, into out[i].
@@ -246,10 +246,11 @@ std::vector<uint32_t> Accessors::read_indices(int index, const std::string& what
     // ELEMENT_ARRAY_BUFFER). tinygltf 2.7 refuses it while it parses
     // (gltf_messages.cpp words that alike); 2.9 lets it through to here.
     if (a.bufferView < 0)
-        fail("accessor " + std::to_string(index) +
-             ": it is a primitive's \"indices\", and has no bufferView (or one that does not "
-             "exist): glTF requires one for indices");
-    budget_.charge(uint64_t(a.count) * sizeof(uint32_t), path_.string() + ": " + name + ", read");
+        fail(name +
+             " has no bufferView (or one that does not exist): glTF requires one for "
+             "indices");
+    budget_.charge(uint64_t(a.count) * sizeof(uint32_t),
+                   shown_path(path_) + ": " + name + ", read");
     std::vector<uint32_t> out(a.count, 0);
     const size_t size = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(ct)));
     std::span<const uint8_t> bytes = element_range(a, name, size);

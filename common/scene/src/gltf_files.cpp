@@ -55,6 +55,10 @@ struct FileAccess {
     std::string prefix;   // folder as tinygltf joins it to a URI: ".../folder/"
     std::string refusal;  // the first refusal, "URI "../x" leads out of ..."
     std::string uri;      // the URI last asked for, as tinygltf %-decoded it
+    // tinygltf appends each image to the model as it reads it, so how many
+    // it holds when a URI is refused is the index of the image it is reading.
+    const tinygltf::Model* model = nullptr;
+    size_t refused_image = SIZE_MAX;
     MemoryBudget* budget = nullptr;
     // The data: URIs decoded here, each handed to tinygltf (moved) when it
     // asks for the file data_uri_name(N).
@@ -75,7 +79,9 @@ struct FileAccess {
     }
 
     void refuse(const std::string& why) {
-        if (refusal.empty()) refusal = why;
+        if (!refusal.empty()) return;
+        refusal = why;
+        if (model) refused_image = model->images.size();
     }
 
     // The file tinygltf asks for, if it may have it. tinygltf hands over
@@ -173,6 +179,7 @@ bool decode_uri(const std::string& uri, std::string* out, void* user) {
         return true;
     }
     if (!tinygltf::URIDecode(uri, out, nullptr)) return false;
+    access->uri = *out;
     try {
         (void)resolve_inside(access->folder, *out);
         return true;
@@ -308,7 +315,7 @@ void use_fs_callbacks(tinygltf::TinyGLTF& gltf, const tinygltf::FsCallbacks& cal
 
 tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget& budget,
                                 const std::function<void(const std::string&)>& warn) {
-    auto fail = [&](const std::string& what) { throw Error(path.string() + ": " + what); };
+    auto fail = [&](const std::string& what) { throw Error(shown_path(path) + ": " + what); };
     // "cannot open FILE", directories, 1 GiB: before anything is charged.
     // Its first bytes say whether it is glTF at all (a .glb's magic, or the
     // first character of JSON after white space), before it is read whole:
@@ -324,7 +331,7 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget&
             "not a glTF file: a .gltf is a JSON object, beginning with '{', and this begins "
             "with \"" +
             printable(head.substr(first, 12), 12) + "\"");
-    budget.charge(readable_file_size(path), path.string() + ": the file itself");
+    budget.charge(readable_file_size(path), shown_path(path) + ": the file itself");
     std::vector<char> file = read_file(path);
     if (file.empty()) fail("not a glTF file: it is empty");
     // The JSON's nesting and a .glb's chunks, before tinygltf trusts them (gltf_guard.cpp).
@@ -338,7 +345,7 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget&
     // A .gltf's data: URIs decoded here; `file` is then the JSON without them
     // (the file's own bytes are freed).
     std::vector<DecodedUri> decoded_uris;
-    file = decode_data_uris(std::move(file), access, decoded_uris, path.string());
+    file = decode_data_uris(std::move(file), access, decoded_uris, shown_path(path));
     // What tinygltf builds from the JSON: its values, and copies of its
     // strings. A data: URI left to tinygltf (in a .glb's JSON) is the worst
     // string: nlohmann's copy, tinygltf's, the substring it decodes, then
@@ -347,7 +354,7 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget&
     const uint64_t values = json_value_count(json);
     budget.charge(
         values * json_value_bytes + 5 * uint64_t(json.size()),
-        path.string() + ": its JSON, parsed (" + std::to_string(values) + " values at most)");
+        shown_path(path) + ": its JSON, parsed (" + std::to_string(values) + " values at most)");
     // tinygltf's own object for each element of the root's arrays, far
     // larger than its JSON: "{}" in "materials" is a tinygltf::Material of
     // 2,144 bytes (tinygltf 2.7), so 3 MB of them would take 2 GiB.
@@ -369,9 +376,9 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget&
     uint64_t object_bytes = 0;
     for (const auto& [member, size] : objects)
         object_bytes += uint64_t(json_array_size(json, member).value_or(0)) * size;
-    budget.charge(object_bytes, path.string() + ": its elements, as tinygltf's objects");
+    budget.charge(object_bytes, shown_path(path) + ": its elements, as tinygltf's objects");
     // tinygltf copies a .glb's BIN chunk into its buffer.
-    budget.charge(file.size() - json.size(), path.string() + ": its BIN chunk, copied");
+    budget.charge(file.size() - json.size(), shown_path(path) + ": its BIN chunk, copied");
     tinygltf::TinyGLTF gltf;
     // Named, not in order: tinygltf 2.8 added a member in the middle.
     tinygltf::FsCallbacks callbacks{};
@@ -394,6 +401,7 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget&
     gltf.SetImageLoader(keep_image_bytes, nullptr);
 
     tinygltf::Model model;
+    access.model = &model;
     std::string err, warn_text;
     const bool glb = file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
     bool ok = false;
@@ -412,7 +420,7 @@ tinygltf::Model parse_gltf_file(const std::filesystem::path& path, MemoryBudget&
     }
     // Even where tinygltf only warned (it does for images), a refusal fails.
     if (!ok || !access.refusal.empty())
-        fail(explain_load_failure({err, access.refusal}, model, file));
+        fail(explain_load_failure({err, access.refusal, access.refused_image}, model, file));
     // What tinygltf read without a word: indices past an int, factors' lengths.
     if (const std::optional<std::string> wrong = check_json_values(gltf_json_text(file)))
         fail(*wrong);

@@ -239,6 +239,12 @@ GlbLayout check_glb_layout(std::span<const uint8_t> file) {
             layout.json_length = length;
         } else if (layout.chunk_count == 1 && type != glb_bin) {
             fail(named + ": the second chunk must be BIN (tinygltf reads no other kind)");
+        } else if (layout.chunk_count == 1 && length == 0) {
+            // tinygltf 2.7's words for it: "Insufficient storage space for
+            // Chunk1(BIN data) ... Must have 4 bytes or more bytes, but got 4".
+            fail(named +
+                 ": it is empty, and a buffer is at least 1 byte long (a .glb with no "
+                 "binary data leaves its BIN chunk out)");
         }
         at += 8 + length;
     }

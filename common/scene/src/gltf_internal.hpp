@@ -54,6 +54,9 @@ inline constexpr uint64_t json_value_bytes = 64 + sizeof(tinygltf::Value);
 struct LoadFailure {
     std::string err;
     std::string refusal;
+    // The image being read when the refusal came (tinygltf only warns about
+    // an image it cannot read, and goes on), or SIZE_MAX.
+    size_t refused_image = SIZE_MAX;
 };
 // Why tinygltf refused `file` (the model file's bytes), as "WHAT: WHY" in one
 // line: WHAT the element by index and name where it can be found, "not a

@@ -26,7 +26,7 @@ public:
                  " of them, past this loader's limit of " + std::to_string(gltf_max_materials) +
                  " (each becomes a descriptor set of its own)");
         budget_.charge(model_.materials.size() * sizeof(GltfMaterial),
-                       path_.string() + ": its materials");
+                       shown_path(path_) + ": its materials");
         for (size_t m = 0; m < model_.materials.size(); ++m) {
             const tinygltf::Material& source = model_.materials[m];
             const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
@@ -77,7 +77,7 @@ public:
 
 private:
     [[noreturn]] void fail(const std::string& what) const {
-        throw Error(path_.string() + ": " + what);
+        throw Error(shown_path(path_) + ": " + what);
     }
 
     // The image of texture `index` named by a material's `slot`, or -1.
@@ -118,7 +118,7 @@ private:
         // "image 2", "image 2 (\"bricks\")", "image 2 (bricks.png)", "image 2 (\"bricks\",
         // bricks.png)"
         const bool file = !source.uri.empty() && source.uri.rfind("data:", 0) != 0;
-        std::string what = path_.string() + ": image " + std::to_string(index);
+        std::string what = shown_path(path_) + ": image " + std::to_string(index);
         if (!source.name.empty() || file) {
             std::string label;
             if (!source.name.empty())

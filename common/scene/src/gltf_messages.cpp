@@ -165,8 +165,14 @@ std::string explain_load_failure(const LoadFailure& failure, const tinygltf::Mod
         return (failed.empty() ? "a buffer" : failed) +
                ": its \"uri\" is missing: in a .gltf every buffer names its bytes by a URI (a "
                "file beside the model, or a data: URI)";
-    if (!failure.refusal.empty())
-        return failed.empty() ? failure.refusal : failed + ": " + failure.refusal;
+    if (!failure.refusal.empty()) {
+        // An image's URI: tinygltf only warned, so no array was cut short.
+        const std::string about = !failed.empty() ? failed
+                                  : failure.refused_image < model.images.size()
+                                      ? element(json, "images", "image", failure.refused_image)
+                                      : std::string();
+        return about.empty() ? failure.refusal : about + ": " + failure.refusal;
+    }
     if (std::optional<std::string> json_error = json_library_error(err, json)) return *json_error;
     if (contains(err, "Root element is not a JSON object"))
         return "not a glTF file: its JSON is an array or a single value, not an object";
@@ -181,10 +187,16 @@ std::string explain_load_failure(const LoadFailure& failure, const tinygltf::Mod
         return *data_uri;
     // tinygltf checks an index accessor's view while it reads a mesh, and
     // the element it was reading is not the one at fault: the accessor is.
-    if (const std::string n = between(line, "accessor[", "] invalid bufferView"); !n.empty())
-        return "accessor " + printable(n, 12) +
-               ": it is a primitive's \"indices\", and has no bufferView (or one that does not "
-               "exist): glTF requires one for indices";
+    if (const std::string n = between(line, "accessor[", "] invalid bufferView"); !n.empty()) {
+        // Its meshes are whole by then: name the first primitive that uses it.
+        std::string user;
+        for (size_t m = 0; m < model.meshes.size() && user.empty(); ++m)
+            for (size_t p = 0; p < model.meshes[m].primitives.size() && user.empty(); ++p)
+                if (std::to_string(model.meshes[m].primitives[p].indices) == n)
+                    user = "mesh " + std::to_string(m) + " primitive " + std::to_string(p) + ": ";
+        return user + "index accessor " + printable(n, 12) +
+               " has no bufferView (or one that does not exist): glTF requires one for indices";
+    }
     const std::string what = failed.empty() ? (glb ? ".glb" : "the model") : failed;
     if (const std::string fault = property_fault(line); !fault.empty()) return what + ": " + fault;
     if (line.empty())

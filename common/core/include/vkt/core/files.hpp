@@ -29,7 +29,8 @@ inline constexpr uintmax_t max_file_bytes = uintmax_t(1) << 30;
 // make it allocate what the file system reports for a directory or a device:
 // "cannot open FILE" (missing or unreadable), "FILE: is a directory, not a
 // file", "FILE: is not a regular file" (a device, a pipe) and "FILE: is N
-// bytes, past the 1 GiB limit for one file".
+// bytes, past the 1 GiB limit for one file"; and "FILE: its size reads as 0
+// bytes, yet it holds data" for a file of /proc or /sys.
 std::vector<char> read_file(const std::filesystem::path& path);
 
 // The size of the file read_file would read, after the same checks (and the
@@ -38,7 +39,9 @@ uintmax_t readable_file_size(const std::filesystem::path& path);
 
 // The first `count` bytes of a file (fewer if it is shorter): what a loader
 // looks at before it reads a file whole, so that a gigabyte that is not a
-// model or an image is refused at once. Throws "cannot open FILE".
+// model or an image is refused at once. Read whatever size the file system
+// reports (a file of /proc reports 0). Throws "cannot open FILE", and
+// read_file's refusals of a directory, a device, a file past 1 GiB.
 std::vector<char> read_file_start(const std::filesystem::path& path, size_t count);
 
 // Where `uri`, a relative file name that a file in `folder` contains (a glTF
@@ -49,6 +52,14 @@ std::vector<char> read_file_start(const std::filesystem::path& path, size_t coun
 // character, is absolute (or has a drive), or leads out of the folder. The
 // file need not exist.
 std::filesystem::path resolve_inside(const std::filesystem::path& folder, std::string_view uri);
+
+// A file's path as a message shows it: as it is where that is plain; in
+// double quotes where it is not (a control character, a quote, white space
+// at either end), each control character escaped (\n, \t, \r, else \xHH),
+// and a quote or a backslash after a backslash. So a name's trailing space
+// is seen, and an escape sequence in a name never reaches the terminal:
+// "models/car.gltf " and "\x1b[31mred.gltf".
+std::string shown_path(const std::filesystem::path& path);
 
 // `text` fit for a one-line message: control characters as %XX (a NUL byte
 // shows as %00) and at most `limit` characters, then "...".

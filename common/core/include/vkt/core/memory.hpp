@@ -4,6 +4,7 @@
 // memory types, chapter 09 images in full, and chapter 21 multisampled,
 // transient attachments (create_attachment_image).
 
+#include "vkt/core/check.hpp"
 #include "vkt/core/owned.hpp"
 
 namespace vkt {
@@ -64,6 +65,31 @@ struct Image {
         bytes = other.bytes;
         return *this;
     }
+};
+
+// An image the device cannot hold: larger than its largest image of that
+// format (maxResourceSize), its largest allocation (maxMemoryAllocationSize)
+// or its memory heap (past_limit: too large, whatever else is in memory), or
+// within them all its allocation or bind answered out of memory (the memory
+// is full, or too full for it). It carries the image's size, so that
+// whoever chose that size can say so (the runner names --size), where the
+// failing call's name alone would tell a reader nothing. `why` says which
+// limit, or which call failed.
+class ImageTooLarge : public Error {
+public:
+    ImageTooLarge(const std::string& why, VkExtent2D extent, VkSampleCountFlagBits samples,
+                  VkDeviceSize bytes, bool past_limit)
+        : Error(why), extent_(extent), samples_(samples), bytes_(bytes), past_limit_(past_limit) {}
+    VkExtent2D extent() const { return extent_; }
+    VkSampleCountFlagBits samples() const { return samples_; }
+    VkDeviceSize bytes() const { return bytes_; }  // what it needs, at least
+    bool past_limit() const { return past_limit_; }
+
+private:
+    VkExtent2D extent_;
+    VkSampleCountFlagBits samples_;
+    VkDeviceSize bytes_;
+    bool past_limit_;
 };
 
 // A 2D image in device-local memory, one mip level, one layer, with a view.

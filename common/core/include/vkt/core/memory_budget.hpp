@@ -14,10 +14,14 @@
 
 namespace vkt {
 
-// --max-memory's default: 2 GiB, which leaves an 8 GB laptop its desktop,
-// a browser and the book while a chapter loads the largest model it allows.
-// Every asset of this repository needs less than 16 MiB.
-inline constexpr uint64_t default_max_memory = uint64_t(2) << 30;
+// --max-memory's default: 1 GiB. A chapter's peak is its budget plus what
+// Vulkan itself takes (about 110 MiB on lavapipe with validation), so 1 GiB
+// leaves an 8 GB laptop its desktop, a browser and the book while a chapter
+// loads what it allows, 8192 x 8192 textures among them (939 MiB). Measured
+// (tests/hostile_peaks.py, README's table): with 2 GiB, a PNG of 11,500 x
+// 11,500 in 408 KiB took 09_textures to 1.8 GB. Every asset of this
+// repository needs less than 16 MiB.
+inline constexpr uint64_t default_max_memory = uint64_t(1) << 30;
 
 class MemoryBudget {
 public:

@@ -33,7 +33,7 @@ struct RgbaImage {
 // What it will cost is charged to `budget` before the pixels are allocated.
 RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what,
                        MemoryBudget& budget);
-// The same with a budget of its own, of default_max_memory (2 GiB).
+// The same with a budget of its own, of default_max_memory (1 GiB).
 RgbaImage decode_image(std::span<const uint8_t> bytes, const std::string& what);
 
 // The same for a file: "cannot open FILE" (vkt::read_file) when it cannot be
@@ -50,7 +50,7 @@ constexpr uint32_t max_image_side = 16384;
 // decoded RGBA pixels, then a staging copy and the GPU image (memory of the
 // machine's on lavapipe), each with every mip level (a chain adds a third:
 // x 4/3). So width x height x 4 x (1 + 4/3 + 4/3), 11/3 of the pixels:
-// 8192 x 8192 costs 939 MiB and fits the default 2 GiB of --max-memory;
+// 8192 x 8192 costs 939 MiB and fits the default 1 GiB of --max-memory;
 // 16384 x 16384 costs 3755 MiB, enough to freeze a laptop with 8 GB: it must
 // be refused before it is decoded.
 uint64_t image_memory_cost(uint32_t width, uint32_t height);
