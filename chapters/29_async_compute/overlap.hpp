@@ -60,9 +60,9 @@ public:
         uint64_t t[marks];
         VKT_CHECK(vkGetQueryPoolResults(device_, pool_, slot * marks, marks, sizeof t, t,
                                         sizeof(uint64_t), VK_QUERY_RESULT_64_BIT));
-        graphics_.push_back({t[scene_begin], t[scene_end]});
-        graphics_.push_back({t[tonemap_begin], t[tonemap_end]});
-        bloom_.push_back({t[bloom_begin], t[bloom_end]});
+        graphics_.emplace_back(t[scene_begin], t[scene_end]);
+        graphics_.emplace_back(t[tonemap_begin], t[tonemap_end]);
+        bloom_.emplace_back(t[bloom_begin], t[bloom_end]);
         written_[slot] = false;
     }
 
