@@ -566,13 +566,11 @@ LAB_NOTES = (
 MAX_PAGE_LINES = 450  # of Markdown, on every page
 
 
-def check_chapter_page(book: Path, page: Page) -> list[str]:
-    """The ending every chapter page shares, and no lab notes in its prose or in the
-    program output its code blocks quote (the sources they include are not read here)."""
-    where = f"book/{page.md_name}"
+def scan_lab_notes(where: str, lines: list[str]) -> tuple[list[str], list[tuple[str, int]]]:
+    """A page's lab notes (in its prose or in the program output its code blocks quote; the
+    sources they include are not read here), and its level-2 headings with their lines."""
     problems = []
-    lines = (book / page.md_name).read_text(encoding="utf-8").splitlines()
-    sections: list[tuple[str, int]] = []   # level-2 headings and their lines
+    sections: list[tuple[str, int]] = []
     fence = None
     for number, line in enumerate(lines, start=1):
         match = FENCE_RE.match(line)
@@ -592,6 +590,15 @@ def check_chapter_page(book: Path, page: Page) -> list[str]:
                 inside = " (in a code block)" if fence is not None or line.startswith(("    ", "\t")) else ""
                 problems.append(f"{where}:{number}: {what} ('{found.group(0)}'){inside} belongs in the "
                                 "performance part, not in a chapter page")
+    return problems, sections
+
+
+def check_chapter_page(book: Path, page: Page) -> list[str]:
+    """The ending every chapter page shares, and no lab notes in its prose or in the
+    program output its code blocks quote (the sources they include are not read here)."""
+    where = f"book/{page.md_name}"
+    lines = (book / page.md_name).read_text(encoding="utf-8").splitlines()
+    problems, sections = scan_lab_notes(where, lines)
     last = tuple(name for name, _ in sections[-len(CHAPTER_ENDING):])
     if last != CHAPTER_ENDING:
         problems.append(f"{where}: a chapter page must end with the sections "
@@ -623,22 +630,7 @@ def check_sub_page(book: Path, page: Page, core: Page | None) -> list[str]:
     problems = []
     if f"]({page.md_name}" not in (book / core.md_name).read_text(encoding="utf-8"):
         problems.append(f"{where}: its chapter's core page, book/{core.md_name}, does not link to it")
-    fence = None
-    for number, line in enumerate((book / page.md_name).read_text(encoding="utf-8").splitlines(), start=1):
-        match = FENCE_RE.match(line)
-        if fence is None and match:
-            fence = match.group(2)
-            continue
-        if fence is not None and match and match.group(2).startswith(fence) and not match.group(3):
-            fence = None
-            continue
-        if "{{#include" in line:
-            continue
-        for pattern, what in LAB_NOTES:
-            found = pattern.search(line)
-            if found:
-                problems.append(f"{where}:{number}: {what} ('{found.group(0)}') belongs in the performance part, "
-                                "not in a chapter page")
+    problems += scan_lab_notes(where, (book / page.md_name).read_text(encoding="utf-8").splitlines())[0]
     return problems
 
 
