@@ -18,7 +18,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
 #include <span>
 #include <string>
 #include <vector>
@@ -79,8 +78,9 @@ public:
     // free: the runner waited for the slot's fence before record().
     void record(VkCommandBuffer cmd, uint32_t slot, const glm::mat4& clip_from_world,
                 std::span<const glm::mat4> world_from_object, std::span<const uint32_t> mesh) {
-        std::vector<Line> lines;
-        lines.reserve(size_t(objects_) * lines_per_object * 2);
+        // Written straight into the slot's mapped buffer: no copy per frame.
+        Line* const first = static_cast<Line*>(buffers_[slot].mapped);
+        Line* line = first;
         for (size_t o = 0; o < world_from_object.size() && o < objects_; ++o) {
             // [boxes]
             const Bounds& b = bounds_[mesh[o]];
@@ -93,22 +93,21 @@ public:
                 low = glm::min(low, corners[c]);
                 high = glm::max(high, corners[c]);
             }
-            add_box(lines, corners, {1.0f, 0.55f, 0.1f});
+            line = add_box(line, corners, {1.0f, 0.55f, 0.1f});
             std::array<glm::vec3, 8> aligned;
             for (uint32_t c = 0; c < 8; ++c)
                 aligned[c] = {c & 1 ? high.x : low.x, c & 2 ? high.y : low.y,
                               c & 4 ? high.z : low.z};
-            add_box(lines, aligned, {0.15f, 0.3f, 1.0f});
+            line = add_box(line, aligned, {0.15f, 0.3f, 1.0f});
             // [/boxes]
         }
-        std::memcpy(buffers_[slot].mapped, lines.data(), lines.size() * sizeof(Line));
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
         const VkBuffer buffer = buffers_[slot].buffer;
         const VkDeviceSize offset = 0;
         vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
         vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4),
                            &clip_from_world);
-        vkCmdDraw(cmd, uint32_t(lines.size()), 1, 0, 0);
+        vkCmdDraw(cmd, uint32_t(line - first), 1, 0, 0);
     }
 
 private:
@@ -118,14 +117,14 @@ private:
 
     // The twelve edges of a box whose corner c has bit 0 for x, 1 for y, 2
     // for z: every pair of corners that differ in one bit.
-    static void add_box(std::vector<Line>& lines, const std::array<glm::vec3, 8>& corner,
-                        glm::vec3 colour) {
+    static Line* add_box(Line* line, const std::array<glm::vec3, 8>& corner, glm::vec3 colour) {
         for (uint32_t c = 0; c < 8; ++c)
             for (uint32_t bit : {1u, 2u, 4u})
                 if (!(c & bit)) {
-                    lines.push_back({corner[c], colour});
-                    lines.push_back({corner[c | bit], colour});
+                    *line++ = {corner[c], colour};
+                    *line++ = {corner[c | bit], colour};
                 }
+        return line;
     }
 
     uint32_t objects_;
