@@ -55,8 +55,10 @@ public:
           async_(context.options.text("--queues") == "async"),
           lamps_(uint32_t(context.options.integer("--lamps"))),
           bloom_strength_(float(context.options.number("--bloom"))),
-          blooms_{vkt::Bloom(gpu_, context.chapter), vkt::Bloom(gpu_, context.chapter),
-                  vkt::Bloom(gpu_, context.chapter)},
+          radius_(uint32_t(context.options.integer("--bloom-radius"))),
+          blooms_{vkt::Bloom(gpu_, context.chapter, radius_),
+                  vkt::Bloom(gpu_, context.chapter, radius_),
+                  vkt::Bloom(gpu_, context.chapter, radius_)},
           scene_done_(ch29::create_timeline(gpu_.device)),
           bloom_done_(ch29::create_timeline(gpu_.device)),
           frame_done_(ch29::create_timeline(gpu_.device)) {
@@ -375,6 +377,7 @@ private:
     bool async_;
     uint32_t lamps_;
     float bloom_strength_;
+    uint32_t radius_;  // the bloom's tent: its compute work grows as (2 radius + 1)^2
     VkExtent2D extent_{};
     std::array<vkt::Bloom, slots> blooms_;
     std::array<vkt::Image, slots> hdr_;
@@ -428,6 +431,13 @@ int main(int argc, char** argv) {
          .default_value = "0.5",
          .min = 0,
          .max = 1},
+        {.name = "--bloom-radius",
+         .type = vkt::OptionType::integer,
+         .value_name = "R",
+         .help = "the bloom's tent, in texels of each level: the compute work of a frame",
+         .default_value = "1",
+         .min = 1,
+         .max = 64},
     };
     // [/spec]
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {

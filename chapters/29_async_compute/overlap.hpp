@@ -8,6 +8,9 @@
 // Timestamps of two queues are compared here, which Vulkan promises only
 // where the device keeps one clock for its queues (the page says what that
 // asks of a reader's device); the frame times of the two paths check it.
+// The same marks give the GPU's pace: the time between one tone map's end
+// and the next, on the graphics queue alone (the runner's gpu_frame_ms times
+// only its own command buffer, in async the tone map alone).
 
 #include "vkt/core/check.hpp"
 #include "vkt/core/owned.hpp"
@@ -63,6 +66,7 @@ public:
         graphics_.emplace_back(t[scene_begin], t[scene_end]);
         graphics_.emplace_back(t[tonemap_begin], t[tonemap_end]);
         bloom_.emplace_back(t[bloom_begin], t[bloom_end]);
+        shown_.push_back(t[tonemap_end]);
         written_[slot] = false;
     }
 
@@ -94,6 +98,14 @@ public:
                      "graphics work (%.0f%% of all bloom time)\n",
                      queues, took.size(), median(took), median(hidden),
                      took_sum > 0 ? 100.0 * hidden_sum / took_sum : 0.0);
+        std::sort(shown_.begin(), shown_.end());
+        std::vector<double> apart;
+        for (size_t i = 1; i < shown_.size(); ++i) apart.push_back(ms(shown_[i] - shown_[i - 1]));
+        if (!apart.empty())
+            std::fprintf(stderr,
+                         "gpu pace (--queues %s): a frame every %.4f ms (median time between "
+                         "two tone maps' ends)\n",
+                         queues, median(apart));
     }
 
 private:
@@ -109,6 +121,7 @@ private:
     vkt::QueryPool pool_;
     std::vector<bool> written_;  // per slot: six marks recorded, not yet collected
     std::vector<Interval> graphics_, bloom_;
+    std::vector<uint64_t> shown_;  // each tone map's end
 };
 
 }  // namespace ch29

@@ -38,6 +38,18 @@ vkt_chapter_test(chapter.29_async_compute.no_bloom 29_async_compute ${VKT_29_PIX
   ARGS ${headless} --bloom 0 EXPECT ${VKT_29_ASYNC})
 vkt_chapter_test(chapter.29_async_compute.no_bloom_single 29_async_compute
   SAME_AS chapter.29_async_compute.no_bloom ${VKT_29_PIXEL} ARGS ${headless} --bloom 0 --queues single)
+# A wider bloom (--bloom-radius 6, 13 x 13 taps a texel on the way up): more
+# compute work on the compute queue, and the same picture both ways, to the
+# bit. And the radius must be used: in the top-left corner, far from any
+# lamp at frame 10, radius 1 gives (123, 84, 113), radius 6 the wider glow of
+# the lamps around it, (135, 106, 128) on lavapipe (a reading, not worked out
+# by hand; within 4 either way, which refuses radius 1's green by 22).
+set(VKT_29_WIDE_CORNER PIXEL 0,0,135,106,128,4)
+vkt_chapter_test(chapter.29_async_compute.wide 29_async_compute ${VKT_29_WIDE_CORNER}
+  ARGS ${headless} --bloom-radius 6 EXPECT ${VKT_29_ASYNC})
+vkt_chapter_test(chapter.29_async_compute.wide_single 29_async_compute
+  SAME_AS chapter.29_async_compute.wide ${VKT_29_WIDE_CORNER}
+  ARGS ${headless} --bloom-radius 6 --queues single)
 # One frame: the scene drawn ahead is never shown, and is waited out at exit.
 vkt_chapter_test(chapter.29_async_compute.one_frame 29_async_compute
   ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE} EXPECT ${VKT_29_ASYNC})
@@ -50,7 +62,8 @@ foreach(queues single async)
            "\"gpu_frame_ms\": \\{\"min\": [0-9.]+")
 endforeach()
 vkt_chapter_test(chapter.29_async_compute.help 29_async_compute EXIT 0 ARGS --help
-  EXPECT "usage: 29_async_compute" "--queues single\\|async" "--lamps N" "--bloom X")
+  EXPECT "usage: 29_async_compute" "--queues single\\|async" "--lamps N" "--bloom X"
+         "--bloom-radius R")
 
 # Bad input: the command line (exit 2).
 vkt_chapter_test(bad_input.29_async_compute.queues 29_async_compute EXIT 2 ARGS --queues both
@@ -63,3 +76,7 @@ vkt_chapter_test(bad_input.29_async_compute.lamps_too_many 29_async_compute EXIT
   ARGS --lamps 4097 EXPECT "--lamps wants a whole number from 1 to 4096, not '4097'")
 vkt_chapter_test(bad_input.29_async_compute.bloom 29_async_compute EXIT 2 ARGS --bloom 2
   EXPECT "--bloom wants a number from 0 to 1, not '2'")
+vkt_chapter_test(bad_input.29_async_compute.radius_zero 29_async_compute EXIT 2
+  ARGS --bloom-radius 0 EXPECT "--bloom-radius wants a whole number from 1 to 64, not '0'")
+vkt_chapter_test(bad_input.29_async_compute.radius_too_wide 29_async_compute EXIT 2
+  ARGS --bloom-radius 65 EXPECT "--bloom-radius wants a whole number from 1 to 64, not '65'")

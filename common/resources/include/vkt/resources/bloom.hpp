@@ -5,7 +5,9 @@
 // and the levels are added back up from the smallest; the tone-mapping pass
 // mixes level 0, divided by the number of levels, into the picture. Chapter
 // 29 records it on a queue of its own (a compute-only family), which is why
-// record() is told which stages outside the chain read it on the same queue.
+// record() is told which stages outside the chain read it on the same queue,
+// and widens the tent of the way up (`radius`, 1 in chapter 23) to give that
+// queue more work.
 // Its shaders are shaders/common/bloom/ (SHARED_SHADERS bloom/bloom_down.comp
 // bloom/bloom_up.comp).
 
@@ -28,7 +30,8 @@ class Bloom {
 public:
     static constexpr uint32_t max_levels = 6;
 
-    Bloom(const vkt::Gpu& gpu, const std::string& chapter) : gpu_(gpu) {
+    Bloom(const vkt::Gpu& gpu, const std::string& chapter, uint32_t radius = 1)
+        : gpu_(gpu), radius_(int32_t(radius)) {
         // [bloom-sampler]
         // Linear filtering, and clamped at the edges: a repeating sampler
         // would blur the left edge's light into the right edge.
@@ -51,7 +54,8 @@ public:
         };
         set_layout_ = vkt::create_descriptor_set_layout(gpu_.device, bindings);
         const VkDescriptorSetLayout layouts[] = {set_layout_};
-        layout_ = vkt::create_pipeline_layout(gpu_.device, layouts, {});
+        const VkPushConstantRange tent{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof radius_};
+        layout_ = vkt::create_pipeline_layout(gpu_.device, layouts, {&tent, 1});
         const vkt::ShaderModule down = vkt::load_shader(gpu_.device, chapter, "bloom_down.comp");
         const vkt::ShaderModule up = vkt::load_shader(gpu_.device, chapter, "bloom_up.comp");
         down_ = vkt::create_compute_pipeline(gpu_.device, down, layout_);
@@ -133,6 +137,7 @@ public:
                            readers | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0,
                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof radius_, &radius_);
         for (uint32_t step = 0; step + 1 < 2 * levels_; ++step) {
             const bool down = step < levels_;
             const uint32_t target = down ? step : 2 * levels_ - 2 - step;
@@ -160,6 +165,7 @@ public:
 
 private:
     vkt::Gpu gpu_;
+    int32_t radius_;  // the tent's, read by bloom_up.comp
     vkt::Sampler sampler_;
     vkt::DescriptorSetLayout set_layout_;
     vkt::PipelineLayout layout_;
