@@ -24,6 +24,7 @@ The charts (CHARTS below):
   17_tiled_deferred_bench_lavapipe.svg   results/2026-11-27-quiet-17_tiled_deferred-lavapipe.md (bench-lights.sh --tiled)
   17_tiled_deferred_bench_h100.svg       results/17_tiled_deferred-h100.md
   20_ndim_compute_bench.svg              results/2026-11-27-quiet-{18,19,20}_*-lavapipe.txt
+  29_async_sweep_h200.svg                results/h200-2026-11-29-29_async_sweep-df79176.txt
 """
 
 from __future__ import annotations
@@ -272,6 +273,56 @@ def draw_ndim(chart: Chart, ax) -> tuple[str, str]:
     return f"{short_device(device)}, {size}", dates[-1]
 
 
+def draw_async(chart: Chart, ax) -> tuple[str, str]:
+    """Chapter 29: the GPU's frame time ("gpu pace") against the bloom's own time (measured
+    on the single queue), --queues single and async, at 48 lamps and at one; each point the
+    median of the rounds' medians, a bar from the fastest round to the slowest."""
+    path = chart.paths()[0]
+    samples: dict[tuple[int, str], dict[int, dict[str, list[float]]]] = {}
+    case, device, size = None, "", ""
+    for line in path.read_text().splitlines():
+        match = re.match(r"# round \d+: 29_async_compute --queues (\w+) --lamps (\d+) --bloom-radius (\d+)", line)
+        if match:
+            queues, lamps, radius = match.group(1), int(match.group(2)), int(match.group(3))
+            case = samples.setdefault((lamps, queues), {}).setdefault(radius, {"pace": [], "bloom": []})
+        elif line.startswith("{") and case is not None:
+            run = json.loads(line)
+            device, size = run["device"], f"{run['width']}\u00d7{run['height']}"
+        elif case is not None and (match := re.match(r"gpu pace .* a frame every ([0-9.]+) ms", line)):
+            case["pace"].append(float(match.group(1)))
+        elif case is not None and (match := re.match(r"overlap .*: bloom ([0-9.]+) ms median", line)):
+            case["bloom"].append(float(match.group(1)))
+    styles = {(48, "single"): ("48 lamps, --queues single", RED, "-", "o"),
+              (48, "async"): ("48 lamps, --queues async", BLUE, "-", "s"),
+              (1, "single"): ("1 lamp, --queues single", ORANGE, ":", "o"),
+              (1, "async"): ("1 lamp, --queues async", CYAN, ":", "s")}
+    rounds = set()
+    for key, (label, colour, style, marker) in styles.items():
+        points = samples.get(key, {})
+        single = samples.get((key[0], "single"), {})
+        radii = sorted(r for r in points if r in single)
+        xs = [statistics.median(single[r]["bloom"]) for r in radii]  # the bloom alone, on one queue
+        ms = [statistics.median(points[r]["pace"]) for r in radii]
+        ax.plot(xs, ms, style, marker=marker, color=colour, label=label, linewidth=2, markersize=5)
+        for x, m, r in zip(xs, ms, radii):
+            paces = points[r]["pace"]
+            rounds.add(len(paces))
+            if len(paces) > 1 and max(paces) > min(paces):
+                ax.errorbar([x], [m], yerr=[[m - min(paces)], [max(paces) - m]], fmt="none", ecolor=colour,
+                            elinewidth=1.3, capsize=4, capthick=1.3, zorder=3)
+    chart.options["notes"] = [
+        f"Each point: the median of {max(rounds)} rounds' medians (150 frames each); the spread between "
+        "rounds is under 0.2%, smaller than the markers. The bloom's radius runs from 1 (left) to 64 "
+        "at 48 lamps and to 32 at one lamp; every point of the sweep is drawn."]
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xticks([0.05, 0.1, 0.2, 0.5, 1, 2, 5, 10])
+    ax.set_xticklabels(["0.05", "0.1", "0.2", "0.5", "1", "2", "5", "10"])
+    ax.set_xlabel("the bloom's own GPU time, on one queue (ms, median)")
+    ax.set_ylabel("GPU frame time (ms, median)")
+    return f"{device}, {size}", measured_on(path)
+
+
 CHARTS = [
     Chart("14_physics_bench.svg", ["physics.jsonl"], draw_physics,
           {"title": "Chapter 14: one physics step against the number of boxes",
@@ -287,6 +338,8 @@ CHARTS = [
                                         "2026-11-27-quiet-19_ndim_gpu-lavapipe.txt",
                                         "2026-11-27-quiet-20_ndim_compute-lavapipe.txt"], draw_ndim,
           {"title": "Chapters 18 to 20: frame time against the number of dimensions"}),
+    Chart("29_async_sweep_h200.svg", ["h200-2026-11-29-29_async_sweep-df79176.txt"], draw_async,
+          {"title": "Chapter 29: GPU frame time against the bloom's work, one queue or two"}),
 ]
 
 
