@@ -20,5 +20,5 @@ void main() {
     // A scale differs along the axes (the walls): the normal scales by its inverse.
     vec3 n = normal / o.scale.xyz;
     world_normal = vec3(c * n.x + s * n.z, n.y, -s * n.x + c * n.z);
-    colour = push.list == CULLED ? vec3(1.0, 0.05, 0.02) : o.colour.rgb;
+    colour = o.colour.rgb;
 }
