@@ -4,9 +4,10 @@
 # turn, headless, validation off. Each run prints the runner's JSON line
 # (gpu_frame_ms: the whole frame by GPU timestamps; gpu_scopes_ms: the early
 # cull and draw, the pyramid, the late cull and draw) and the chapter's last
-# line (what the last frame drew and culled).
+# line (what the last frame drew and culled). PATHS (default "indirect")
+# names the --path values to run in turn: "indirect task" adds the task path.
 #
-#   benchmarks/28_gpu_culling.sh [BIN_DIR] [WxH] [FRAMES] [INSTANCES...]
+#   [PATHS="indirect task"] benchmarks/28_gpu_culling.sh [BIN_DIR] [WxH] [FRAMES] [INSTANCES...]
 set -euo pipefail
 bin=${1:-build/release/bin}
 size=${2:-1920x1080}
@@ -14,16 +15,19 @@ frames=${3:-300}
 shift $(( $# < 3 ? $# : 3 ))
 instances=${*:-100000}
 rounds=${ROUNDS:-3}
+paths=${PATHS:-indirect}
 err=$(mktemp)
 trap 'rm -f "$err"' EXIT
 echo "# $(nproc) processors; load average: $(cut -d' ' -f1-3 /proc/loadavg)"
 for n in $instances; do
   for round in $(seq "$rounds"); do
-    for cull in none frustum occlusion; do
-      echo "# round $round: 28_gpu_culling --instances $n --cull $cull --frames $frames --size $size"
-      "$bin/28_gpu_culling" --headless --no-validation --size "$size" --frames "$frames" \
-        --instances "$n" --cull "$cull" --benchmark 2>"$err"
-      grep -h -E "triangles|last frame" "$err" || true
+    for path in $paths; do
+      for cull in none frustum occlusion; do
+        echo "# round $round: 28_gpu_culling --instances $n --path $path --cull $cull --frames $frames --size $size"
+        "$bin/28_gpu_culling" --headless --no-validation --size "$size" --frames "$frames" \
+          --instances "$n" --path "$path" --cull "$cull" --benchmark 2>"$err"
+        grep -h -E "triangles|last frame" "$err" || true
+      done
     done
   done
 done

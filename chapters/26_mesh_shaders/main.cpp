@@ -11,7 +11,6 @@
 // the book measures; --view meshlets colours each meshlet.
 
 #include "mesh_limits.hpp"
-#include "mesh_pipeline.hpp"
 #include "meshlets.hpp"
 
 #include "vkt/core/check.hpp"
@@ -21,6 +20,7 @@
 #include "vkt/resources/compute.hpp"
 #include "vkt/resources/depth.hpp"
 #include "vkt/resources/descriptors.hpp"
+#include "vkt/resources/mesh_pipeline.hpp"
 #include "vkt/resources/pipeline.hpp"
 #include "vkt/resources/rendering.hpp"
 #include "vkt/resources/shader.hpp"
@@ -251,8 +251,8 @@ public:
         } else {
             vkt::ShaderModule task = vkt::load_shader(device_, context.chapter, "meshlets.task");
             vkt::ShaderModule mesh = vkt::load_shader(device_, context.chapter, "meshlets.mesh");
-            pipeline_ = ch26::create_mesh_pipeline(device_, layout_, task, mesh, mesh_workgroup_,
-                                                   fragment, context.color_format, depth_format_);
+            pipeline_ = vkt::create_mesh_pipeline(device_, layout_, task, mesh, mesh_workgroup_,
+                                                  fragment, context.color_format, depth_format_);
         }
 
         // [load-draw]

@@ -5,14 +5,18 @@
 // pipelines (the shapes, the occluded shapes in red, the pyramid's view).
 
 #include "vkt/core/owned.hpp"
+#include "vkt/resources/descriptors.hpp"
 #include "vkt/resources/pipeline.hpp"
+#include "vkt/resources/rendering.hpp"
 #include "vkt/resources/shader.hpp"
 #include "vkt/scene/meshes.hpp"
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cstddef>
 #include <string_view>
+#include <vector>
 
 namespace ch28 {
 
@@ -25,6 +29,8 @@ struct Push {
 };
 static_assert(sizeof(Push) == 104);
 
+// The stages that read the push constants and set 0; the task path adds
+// the task and mesh stages.
 constexpr VkShaderStageFlags kStages =
     VK_SHADER_STAGE_COMPUTE_BIT | VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
@@ -99,6 +105,44 @@ inline DrawPipelines make_draw_pipelines(VkDevice device, std::string_view chapt
                                                                .layout = layout,
                                                                .color_formats = {color_format}});
     return pipelines;
+}
+
+// One set for every pass: instances, meshes, lists, counts, visibility
+// (bindings 0-4), and the pyramid (binding 5, written when it is made).
+struct CullingSet {
+    vkt::DescriptorSetLayout layout;
+    vkt::DescriptorPool pool;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+};
+inline CullingSet make_culling_set(VkDevice device, VkShaderStageFlags stages,
+                                   const std::array<VkBuffer, 5>& buffers) {
+    std::vector<VkDescriptorSetLayoutBinding> bindings;
+    for (uint32_t b = 0; b < 5; ++b)
+        bindings.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr});
+    bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr});
+    CullingSet culling;
+    culling.layout = vkt::create_descriptor_set_layout(device, bindings);
+    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
+                                          {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+    culling.pool = vkt::create_descriptor_pool(device, 1, sizes);
+    culling.set = vkt::allocate_descriptor_set(device, culling.pool, culling.layout);
+    for (uint32_t b = 0; b < 5; ++b)
+        vkt::write_buffer_descriptor(device, culling.set, b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                     buffers[b], 0, VK_WHOLE_SIZE);
+    return culling;
+}
+
+// --view pyramid: one level over the whole picture, a full-screen triangle.
+inline void show_pyramid(VkCommandBuffer cmd, VkImageView target, VkExtent2D extent,
+                         VkPipeline pipeline, VkPipelineLayout layout, VkShaderStageFlags stages,
+                         VkDescriptorSet set, const Push& push) {
+    vkt::begin_colour_rendering(cmd, target, extent, VK_ATTACHMENT_LOAD_OP_DONT_CARE);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &set, 0, nullptr);
+    vkCmdPushConstants(cmd, layout, stages, 0, sizeof(Push), &push);
+    vkt::set_viewport_and_scissor(cmd, extent);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdEndRendering(cmd);
 }
 
 }  // namespace ch28

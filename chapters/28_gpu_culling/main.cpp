@@ -14,12 +14,17 @@
 //   (pyramid.hpp), test everything in the frustum against it (the late
 //   pass), and draw what is seen now and was not drawn early.
 //
+// - --path task draws with chapter 26's task and mesh shaders instead: a
+//   task workgroup makes the same test for 32 instances and launches mesh
+//   workgroups for the meshlets of those it keeps (task_path.hpp).
+//
 // The counts are read back after the last frame and checked against the
 // CPU's own frustum test (scene.hpp).
 
 #include "draw_pass.hpp"
 #include "pyramid.hpp"
 #include "scene.hpp"
+#include "task_path.hpp"
 
 #include "vkt/core/check.hpp"
 #include "vkt/frame/runner.hpp"
@@ -39,7 +44,7 @@
 
 namespace {
 
-using ch28::kStages, ch28::Push;
+using ch28::Push;
 
 enum Cull : uint32_t { cull_none, cull_frustum, cull_occlusion };
 enum List : uint32_t { early_list, late_list, culled_list };
@@ -70,10 +75,17 @@ public:
         show_culled_ = view == "culled";
         show_level_ = uint32_t(context.options.integer("--level"));
         count_ = uint32_t(context.options.integer("--instances"));
+        const bool task = context.options.text("--path") == "task";
+        stages_ = ch28::kStages |
+                  (task ? VK_SHADER_STAGE_TASK_BIT_EXT | VK_SHADER_STAGE_MESH_BIT_EXT : 0);
+        culler_ =
+            task ? VK_PIPELINE_STAGE_2_TASK_SHADER_BIT_EXT : VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
 
-        // The meshes in one vertex and index buffer; the instances, the floor last.
+        // The meshes in one vertex and index buffer, and cut into meshlets
+        // (task_path.hpp); the instances, the floor last.
         vkt::shapes::MeshBuilder builder;
-        const std::vector<ch28::Mesh> meshes = ch28::make_meshes(builder);
+        std::vector<ch28::Mesh> meshes = ch28::make_meshes(builder);
+        const vkt::Meshlets meshlets = ch28::make_meshlets(builder, meshes);
         instances_ = ch28::make_instances(count_, meshes);
         floor_ = meshes[ch28::floor_mesh].range;
         uint64_t triangles = 0;
@@ -81,7 +93,8 @@ public:
             triangles += meshes[uint32_t(instances_[i].box_half.w)].range.index_count / 3;
         std::vector<uint32_t> mesh_table;
         for (const ch28::Mesh& mesh : meshes)
-            mesh_table.insert(mesh_table.end(), {mesh.range.first_index, mesh.range.index_count});
+            mesh_table.insert(mesh_table.end(), {mesh.range.first_index, mesh.range.index_count,
+                                                 mesh.first_meshlet, mesh.meshlet_count});
         vertex_buffer_ = vkt::create_device_buffer(
             gpu_, builder.vertices.data(), builder.vertices.size() * sizeof(vkt::shapes::Vertex),
             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
@@ -111,12 +124,7 @@ public:
                                                     unseen.size() * sizeof(uint32_t), storage);
         // [/buffers]
 
-        // The depth buffer is sampled too: the pyramid's level 0 reads it.
         depth_format_ = vkt::choose_depth_format(gpu_.physical);
-        depth_ = vkt::create_attachment_image(
-            gpu_.physical, gpu_.device, depth_format_, extent_,
-            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-            VK_IMAGE_ASPECT_DEPTH_BIT);
         const bool offered = ch28::sampler_min_offered(
             gpu_.physical, context.features.has(VKT_FEATURE_12(samplerFilterMinmax)),
             depth_format_);
@@ -127,38 +135,46 @@ public:
                 "--reduce sampler: this device offers no min reduction in its "
                 "sampler for " +
                 std::string(vkt::depth_format_name(depth_format_)) + " and R32_SFLOAT");
-        pyramid_ = std::make_unique<ch28::DepthPyramid>(gpu_, context.chapter, depth_.view, extent_,
-                                                        sampler_min_);
+        chapter_ = context.chapter;
+        set_ = ch28::make_culling_set(
+            gpu_.device, stages_,
+            {instance_buffer_.buffer, mesh_buffer_.buffer, draw_buffer_.buffer,
+             count_buffer_.buffer, visible_buffer_.buffer});
+        resize(extent_);  // the depth buffer and the pyramid, which set_ points at
 
-        make_descriptors();
-        const VkDescriptorSetLayout set_layout = set_layout_;
-        const VkPushConstantRange push{kStages, 0, sizeof(Push)};
+        const VkDescriptorSetLayout set_layout = set_.layout;
+        const VkPushConstantRange push{stages_, 0, sizeof(Push)};
         layout_ = vkt::create_pipeline_layout(gpu_.device, {&set_layout, 1}, {&push, 1});
         vkt::ShaderModule cull_shader = vkt::load_shader(gpu_.device, context.chapter, "cull.comp");
         cull_pipeline_ = vkt::create_compute_pipeline(gpu_.device, cull_shader, layout_);
-        chapter_ = context.chapter;
         pipelines_ = ch28::make_draw_pipelines(gpu_.device, chapter_, layout_, context.color_format,
                                                depth_format_);
+        if (task)
+            task_ = std::make_unique<ch28::TaskPath>(gpu_, chapter_, builder, meshlets, set_.layout,
+                                                     stages_, context.color_format, depth_format_);
 
         std::fprintf(stderr,
-                     "28_gpu_culling: %u instances of %u meshes, %llu triangles; --cull %s; the "
-                     "depth pyramid (%u levels from %ux%u) takes the min %s\n",
-                     count_, uint32_t(ch28::mesh_count - 1), (unsigned long long)triangles,
-                     cull.c_str(), pyramid_->levels(), pyramid_->size().width,
-                     pyramid_->size().height,
+                     "28_gpu_culling: %u instances of %u meshes (%zu meshlets), %llu triangles; "
+                     "--cull %s, %s; the depth pyramid (%u levels from %ux%u) takes the min %s\n",
+                     count_, uint32_t(ch28::mesh_count - 1), meshlets.meshlets.size(),
+                     (unsigned long long)triangles, cull.c_str(),
+                     task ? "task and mesh shaders" : "indirect draws", pyramid_->levels(),
+                     pyramid_->size().width, pyramid_->size().height,
                      sampler_min_ ? "in the sampler (VK_SAMPLER_REDUCTION_MODE_MIN)"
                                   : "in the shader (four texel fetches)");
     }
 
+    // The depth buffer is sampled too: the pyramid's level 0 reads it.
     void resize(VkExtent2D extent) override {
         extent_ = extent;
         depth_ = vkt::create_attachment_image(
             gpu_.physical, gpu_.device, depth_format_, extent_,
             VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
             VK_IMAGE_ASPECT_DEPTH_BIT);
-        pyramid_ = std::make_unique<ch28::DepthPyramid>(gpu_, chapter_, depth_.view, extent_,
-                                                        sampler_min_);
-        vkt::write_image_descriptor(gpu_.device, set_, 5, pyramid_->view(), pyramid_->sampler(),
+        pyramid_ =
+            std::make_unique<ch28::DepthPyramid>(gpu_, chapter_, depth_.view, extent_, sampler_min_,
+                                                 culler_ | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+        vkt::write_image_descriptor(gpu_.device, set_.set, 5, pyramid_->view(), pyramid_->sampler(),
                                     VK_IMAGE_LAYOUT_GENERAL);
     }
 
@@ -178,22 +194,22 @@ public:
         // The last frame's draws have read the lists and the counts (one
         // queue: this barrier orders against everything submitted before);
         // then the counts start again from zero.
+        // (culler_: the stage that culls, the compute or the task shader.)
         vkt::memory_barrier(
             frame.cmd,
-            VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+            VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | culler_,
             VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_READ_BIT |
                 VK_ACCESS_2_SHADER_WRITE_BIT,
-            VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+            VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | culler_,
             VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_READ_BIT |
                 VK_ACCESS_2_SHADER_WRITE_BIT);
         vkCmdFillBuffer(frame.cmd, count_buffer_.buffer, 0, VK_WHOLE_SIZE, 0);
         vkt::buffer_barrier(frame.cmd, count_buffer_.buffer, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                            VK_ACCESS_2_TRANSFER_WRITE_BIT, culler_,
                             VK_ACCESS_2_SHADER_READ_BIT | VK_ACCESS_2_SHADER_WRITE_BIT);
         // [/reset]
 
-        {
+        if (!task_) {  // the task path culls as it draws
             auto scope = frame.gpu_scope("cull 1");
             cull(frame.cmd, push);
         }
@@ -227,14 +243,15 @@ public:
                                    VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                                VK_IMAGE_ASPECT_DEPTH_BIT);
             // The late cull rewrites the counts and lists the early draws
-            // read as indirect commands: it waits for those reads.
-            vkt::memory_barrier(frame.cmd, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
-                                VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT,
-                                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                VK_ACCESS_2_SHADER_READ_BIT | VK_ACCESS_2_SHADER_WRITE_BIT);
+            // read as indirect commands (or the early task shader wrote):
+            // it waits for those reads and writes.
+            vkt::memory_barrier(
+                frame.cmd, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | culler_,
+                VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_WRITE_BIT, culler_,
+                VK_ACCESS_2_SHADER_READ_BIT | VK_ACCESS_2_SHADER_WRITE_BIT);
             push.phase = 1;
             push.list = show_culled_ ? culled_list : late_list;
-            {
+            if (!task_) {
                 auto scope = frame.gpu_scope("cull 2");
                 cull(frame.cmd, push);
             }
@@ -247,7 +264,9 @@ public:
             }
             // [/two-phase]
         }
-        if (show_pyramid_) show_pyramid(frame, push);
+        if (show_pyramid_)
+            ch28::show_pyramid(frame.cmd, frame.target_view, frame.extent, pipelines_.pyramid,
+                               layout_, stages_, set_.set, push);
     }
 
     // After the last frame: the GPU's counts beside the CPU's.
@@ -286,9 +305,9 @@ private:
     // indirect commands, the visibility by the next cull.
     void cull(VkCommandBuffer cmd, const Push& push) const {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_pipeline_);
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set_, 0,
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set_.set, 0,
                                 nullptr);
-        vkCmdPushConstants(cmd, layout_, kStages, 0, sizeof(Push), &push);
+        vkCmdPushConstants(cmd, layout_, stages_, 0, sizeof(Push), &push);
         vkCmdDispatch(cmd, uint32_t(vkt::dispatch_count(count_, kCullGroup)), 1, 1);
         vkt::memory_barrier(
             cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_WRITE_BIT,
@@ -300,7 +319,8 @@ private:
 
     // [draw]
     // The floor (early only), then each list: at most count_ commands, as
-    // many as the count buffer says, 20 bytes apart.
+    // many as the count buffer says, 20 bytes apart. Or the task path's one
+    // command for the pass.
     void draw(const vkt::Frame& frame, Push push, VkAttachmentLoadOp load,
               std::initializer_list<List> lists) const {
         ch28::begin_pass(frame.cmd, frame.target_view, depth_.view, frame.extent, load);
@@ -308,59 +328,28 @@ private:
         const VkDeviceSize offset = 0;
         vkCmdBindVertexBuffers(frame.cmd, 0, 1, &vertices, &offset);
         vkCmdBindIndexBuffer(frame.cmd, index_buffer_.buffer, 0, VK_INDEX_TYPE_UINT16);
-        vkCmdBindDescriptorSets(frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 0,
-                                nullptr);
+        vkCmdBindDescriptorSets(frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1,
+                                &set_.set, 0, nullptr);
         vkt::set_viewport_and_scissor(frame.cmd, frame.extent);
         for (List list : lists) {
             push.list = list;
             vkCmdBindPipeline(frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                               list == culled_list ? pipelines_.culled : pipelines_.shapes);
-            vkCmdPushConstants(frame.cmd, layout_, kStages, 0, sizeof(Push), &push);
+            vkCmdPushConstants(frame.cmd, layout_, stages_, 0, sizeof(Push), &push);
             if (list == early_list)
                 vkCmdDrawIndexed(frame.cmd, floor_.index_count, 1, floor_.first_index, 0, count_);
-            vkCmdDrawIndexedIndirectCount(
-                frame.cmd, draw_buffer_.buffer,
-                VkDeviceSize(list) * count_ * sizeof(VkDrawIndexedIndirectCommand),
-                count_buffer_.buffer, list * sizeof(uint32_t), count_,
-                sizeof(VkDrawIndexedIndirectCommand));
+            if (task_)
+                task_->draw(frame.cmd, push);
+            else
+                vkCmdDrawIndexedIndirectCount(
+                    frame.cmd, draw_buffer_.buffer,
+                    VkDeviceSize(list) * count_ * sizeof(VkDrawIndexedIndirectCommand),
+                    count_buffer_.buffer, list * sizeof(uint32_t), count_,
+                    sizeof(VkDrawIndexedIndirectCommand));
         }
         vkCmdEndRendering(frame.cmd);
     }
     // [/draw]
-
-    // --view pyramid: one level over the whole picture.
-    void show_pyramid(const vkt::Frame& frame, const Push& push) const {
-        vkt::begin_colour_rendering(frame.cmd, frame.target_view, frame.extent,
-                                    VK_ATTACHMENT_LOAD_OP_DONT_CARE);
-        vkCmdBindPipeline(frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.pyramid);
-        vkCmdBindDescriptorSets(frame.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 0,
-                                nullptr);
-        vkCmdPushConstants(frame.cmd, layout_, kStages, 0, sizeof(Push), &push);
-        vkt::set_viewport_and_scissor(frame.cmd, frame.extent);
-        vkCmdDraw(frame.cmd, 3, 1, 0, 0);
-        vkCmdEndRendering(frame.cmd);
-    }
-
-    // One set for every pass: instances, meshes, lists, counts, visibility, pyramid.
-    void make_descriptors() {
-        std::vector<VkDescriptorSetLayoutBinding> bindings;
-        for (uint32_t b = 0; b < 5; ++b)
-            bindings.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kStages, nullptr});
-        bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, kStages, nullptr});
-        set_layout_ = vkt::create_descriptor_set_layout(gpu_.device, bindings);
-        const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
-                                              {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
-        pool_ = vkt::create_descriptor_pool(gpu_.device, 1, sizes);
-        set_ = vkt::allocate_descriptor_set(gpu_.device, pool_, set_layout_);
-        const VkBuffer buffers[] = {instance_buffer_.buffer, mesh_buffer_.buffer,
-                                    draw_buffer_.buffer, count_buffer_.buffer,
-                                    visible_buffer_.buffer};
-        for (uint32_t b = 0; b < 5; ++b)
-            vkt::write_buffer_descriptor(gpu_.device, set_, b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                         buffers[b], 0, VK_WHOLE_SIZE);
-        vkt::write_image_descriptor(gpu_.device, set_, 5, pyramid_->view(), pyramid_->sampler(),
-                                    VK_IMAGE_LAYOUT_GENERAL);
-    }
 
     vkt::Gpu gpu_;
     VkExtent2D extent_;
@@ -368,6 +357,8 @@ private:
     Cull mode_ = cull_occlusion;
     bool show_pyramid_ = false, show_culled_ = false, sampler_min_ = false;
     uint32_t show_level_ = 0, count_ = 0;
+    VkShaderStageFlags stages_ = ch28::kStages;  // and the task path's
+    VkPipelineStageFlags2 culler_ = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     std::vector<ch28::Instance> instances_;
     vkt::shapes::MeshRange floor_;
     glm::mat4 clip_from_world_{1.0f};  // the last frame's, for verify()
@@ -376,12 +367,11 @@ private:
     VkFormat depth_format_ = VK_FORMAT_UNDEFINED;
     vkt::Image depth_;
     std::unique_ptr<ch28::DepthPyramid> pyramid_;
-    vkt::DescriptorSetLayout set_layout_;
-    vkt::DescriptorPool pool_;
-    VkDescriptorSet set_ = VK_NULL_HANDLE;
+    ch28::CullingSet set_;
     vkt::PipelineLayout layout_;
     vkt::Pipeline cull_pipeline_;
     ch28::DrawPipelines pipelines_;
+    std::unique_ptr<ch28::TaskPath> task_;  // --path task only
 };
 
 }  // namespace
@@ -423,17 +413,29 @@ int main(int argc, char** argv) {
          .default_value = "2",
          .min = 0,
          .max = 15},
+        {.name = "--path",
+         .type = vkt::OptionType::choice,
+         .help = "draw lists by vkCmdDrawIndexedIndirectCount, or task and mesh shaders",
+         .default_value = "indirect",
+         .choices = {"indirect", "task"}},
         {.name = "--reduce",
          .type = vkt::OptionType::choice,
          .help = "how the pyramid takes the min: the sampler's where offered, or the shader's",
          .default_value = "auto",
          .choices = {"auto", "sampler", "shader"}},
     };
-    spec.check_options = [](const vkt::Options& options) {
+    spec.check_options = [&spec](const vkt::Options& options) {
         if (options.text("--view") != "shaded" && options.text("--cull") != "occlusion")
             throw vkt::UsageError("--view " + options.text("--view") +
                                   " needs --cull occlusion: only it builds a pyramid and "
                                   "occludes instances");
+        if (options.text("--view") == "culled" && options.text("--path") == "task")
+            throw vkt::UsageError(
+                "--view culled needs --path indirect: it draws the cull "
+                "pass's list of occluded instances");
+        // Run before any device is chosen: --path task makes the mesh shader
+        // extension a requirement, and a device without it is refused by name.
+        if (options.text("--path") == "task") ch28::require_mesh_shaders(spec.requirements);
     };
     // [/spec]
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {

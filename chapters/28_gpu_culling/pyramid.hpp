@@ -39,9 +39,12 @@ inline bool sampler_min_offered(VkPhysicalDevice physical, bool feature, VkForma
 class DepthPyramid {
 public:
     // depth_view: the depth buffer (DEPTH aspect, SAMPLED usage), of `extent`.
+    // readers: the stages that test against it (the cull pass's compute
+    // shader, or the task path's task shader) and the fragment stage (the
+    // pyramid view).
     DepthPyramid(const vkt::Gpu& gpu, std::string_view chapter, VkImageView depth_view,
-                 VkExtent2D extent, bool sampler_min)
-        : device_(gpu.device), depth_extent_(extent) {
+                 VkExtent2D extent, bool sampler_min, VkPipelineStageFlags2 readers)
+        : device_(gpu.device), depth_extent_(extent), readers_(readers) {
         // [pyramid-image]
         // Level 0 is half the depth buffer, rounded up to a power of two in
         // each direction, so that every level is exactly half the last (as
@@ -161,23 +164,21 @@ public:
             vkCmdDispatch(cmd, uint32_t(vkt::dispatch_count(sizes_[l].width, 8)),
                           uint32_t(vkt::dispatch_count(sizes_[l].height, 8)), 1);
         }
-        vkt::image_barrier(
-            cmd, image_.image, {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels(), 0, 1},
-            VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
-            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+        vkt::image_barrier(cmd, image_.image, {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels(), 0, 1},
+                           VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, readers_,
+                           VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
     }
     // [/build]
 
     // Before the next frame's build overwrites it: the reads of this one done.
     void before_build(VkCommandBuffer cmd) const {
-        vkt::image_barrier(
-            cmd, image_.image, {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels(), 0, 1},
-            VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
-            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        vkt::image_barrier(cmd, image_.image, {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels(), 0, 1},
+                           VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, readers_,
+                           VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     }
 
     uint32_t levels() const { return uint32_t(sizes_.size()); }
@@ -189,6 +190,7 @@ private:
     VkDevice device_;
     std::vector<VkExtent2D> sizes_;  // per level
     VkExtent2D depth_extent_{};
+    VkPipelineStageFlags2 readers_;
     vkt::Image image_;
     std::vector<vkt::ImageView> level_views_;
     vkt::Sampler sampler_;

@@ -25,10 +25,12 @@ struct Instance {
 };
 static_assert(sizeof(Instance) == 80);
 
-// Where a mesh lies in the index buffer, and the box around its vertices.
+// Where a mesh lies in the index buffer, the box around its vertices, and
+// (the task path, task_path.hpp) its meshlets.
 struct Mesh {
     vkt::shapes::MeshRange range;
     glm::vec3 lo, hi;
+    uint32_t first_meshlet = 0, meshlet_count = 0;
 };
 
 enum MeshKind : uint32_t { cube, sphere, cylinder, torus, floor_mesh, mesh_count };

@@ -2,128 +2,33 @@
 #extension GL_GOOGLE_include_directive : require
 
 // Chapter 28's cull pass: one invocation per instance decides whether it can
-// be seen and, if so, appends its draw command to a list; the list's length
-// is the count vkCmdDrawIndexedIndirectCount reads.
+// be seen (instance_cull.glsl) and, if so, appends its draw command to a
+// list; the list's length is the count vkCmdDrawIndexedIndirectCount reads.
 
 #include "culling_data.glsl"
+#include "instance_cull.glsl"
 
 layout(local_size_x = 64) in;  // main.cpp's kCullGroup
 
-struct Mesh {
-    uint first_index, index_count;
-};
 // VkDrawIndexedIndirectCommand, five words.
 struct DrawCommand {
     uint index_count, instance_count, first_index;
     int vertex_offset;
     uint first_instance;
 };
-layout(std430, set = 0, binding = 1) readonly buffer Meshes { Mesh meshes[]; };
 layout(std430, set = 0, binding = 2) writeonly buffer Draws { DrawCommand draws[]; };
-// [counts]
-// counts[0..2]: the three lists' lengths (the draw counts); counts[3]: the
-// instances inside the frustum; counts[4]: those of them occluded.
-layout(std430, set = 0, binding = 3) buffer Counts { uint counts[8]; };
-// visible[i]: instance i passed the last late pass (was seen last frame).
-layout(std430, set = 0, binding = 4) buffer Visible { uint visible[]; };
-// [/counts]
-layout(set = 0, binding = 5) uniform sampler2D pyramid;
 
+// [append]
 void append(uint list, uint i, uint mesh) {
     uint slot = atomicAdd(counts[list], 1);
     draws[list * push.instance_count + slot] =
         DrawCommand(meshes[mesh].index_count, 1, meshes[mesh].first_index, 0, i);
 }
 
-// [frustum]
-// The box's eight corners in clip space. It is outside when all of them lie
-// beyond one plane of the clip volume (-w <= x, y <= w and, reversed depth,
-// 0 <= z <= w): then no part of it can reach the screen.
-bool in_frustum(vec4 corners[8]) {
-    for (int plane = 0; plane < 6; ++plane) {
-        int beyond = 0;
-        for (int k = 0; k < 8; ++k) {
-            vec4 p = corners[k];
-            float d = plane == 0 ? p.x + p.w : plane == 1 ? p.w - p.x
-                    : plane == 2 ? p.y + p.w : plane == 3 ? p.w - p.y
-                    : plane == 4 ? p.z : p.w - p.z;
-            beyond += d < 0.0 ? 1 : 0;
-        }
-        if (beyond == 8) return false;
-    }
-    return true;
-}
-// [/frustum]
-
-// [occlusion]
-// Hidden when the box's nearest point lies behind the farthest depth drawn
-// over every pixel its projection may touch. Depth is reversed (1 near, 0
-// far): the nearest corner has the largest depth, the farthest depth drawn
-// is the pyramid's min. The level chosen is the finest at which those
-// pixels fall into at most 2 x 2 texels, and all of them are read.
-bool occluded(vec4 corners[8]) {
-    vec2 lo = vec2(1e30), hi = vec2(-1e30);
-    float nearest = 0.0;
-    for (int k = 0; k < 8; ++k) {
-        if (corners[k].z > corners[k].w) return false;  // before the near plane
-        vec3 ndc = corners[k].xyz / corners[k].w;
-        lo = min(lo, ndc.xy);
-        hi = max(hi, ndc.xy);
-        nearest = max(nearest, ndc.z);
-    }
-    // The pixels whose centres the projection may cover, clamped to the screen.
-    ivec2 size = ivec2(push.viewport);
-    // Level L's texel t covers pixels [t, t + 1) * 2^(L + 1) (pyramid.hpp).
-    ivec2 p0 = clamp(ivec2(floor((lo * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1);
-    ivec2 p1 = clamp(ivec2(floor((hi * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1);
-    int level = 0;
-    ivec2 t0 = p0 >> 1, t1 = p1 >> 1;
-    while (level + 1 < int(push.levels) && any(greaterThan(t1 - t0, ivec2(1)))) {
-        ++level;
-        t0 >>= 1;
-        t1 >>= 1;
-    }
-    float farthest = min(min(texelFetch(pyramid, t0, level).r,
-                             texelFetch(pyramid, ivec2(t1.x, t0.y), level).r),
-                         min(texelFetch(pyramid, ivec2(t0.x, t1.y), level).r,
-                             texelFetch(pyramid, t1, level).r));
-    return nearest < farthest;
-}
-// [/occlusion]
-
-// [cull]
 void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= push.instance_count) return;
-    Instance o = instances[i];
-    uint mesh = uint(o.box_half.w);
-    vec4 corners[8];
-    for (int k = 0; k < 8; ++k) {
-        vec3 s = vec3((k & 1) != 0 ? 1.0 : -1.0, (k & 2) != 0 ? 1.0 : -1.0,
-                      (k & 4) != 0 ? 1.0 : -1.0);
-        corners[k] = push.clip_from_world * vec4(o.box_centre.xyz + s * o.box_half.xyz, 1.0);
-    }
-    bool inside = in_frustum(corners);
-    if (push.mode < 2) {  // one pass: everything, or what the frustum keeps
-        if (inside) atomicAdd(counts[3], 1);
-        if (push.mode == 0 || inside) append(EARLY, i, mesh);
-        return;
-    }
-    if (push.phase == 0) {
-        // Early: what was seen last frame and is still in the frustum, drawn
-        // first, so that its depth can build the pyramid.
-        if (inside && visible[i] != 0) append(EARLY, i, mesh);
-        return;
-    }
-    // Late: everything in the frustum, against the pyramid of the early
-    // draws; what is seen and was not drawn early is drawn now.
-    bool seen = inside && !occluded(corners);
-    if (inside) atomicAdd(counts[3], 1);
-    if (inside && !seen) {
-        atomicAdd(counts[4], 1);
-        if (push.list == CULLED) append(CULLED, i, mesh);
-    }
-    if (seen && visible[i] == 0) append(LATE, i, mesh);
-    visible[i] = seen ? 1 : 0;
+    uint list = cull_instance(i);
+    if (list != NOT_DRAWN) append(list, i, uint(instances[i].box_half.w));
 }
-// [/cull]
+// [/append]

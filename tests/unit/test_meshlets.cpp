@@ -1,9 +1,8 @@
-// Chapter 26's meshlet builder and culling (chapters/26_mesh_shaders/meshlets.hpp):
-// on the chapter's default model (the knot) and a UV sphere from chapter 12's
-// shapes, every triangle lands in exactly one meshlet, the limits hold, every
-// cone holds its triangles' normals and every sphere their vertices; a
-// meshlet culled as back-facing has only triangles that face away; and on a
-// flat grid the counts are known by hand.
+// Chapter 26's meshlet builder (vkt/scene/meshlets.hpp) and culling
+// (chapters/26_mesh_shaders/meshlets.hpp): on the chapter's default model (the knot) and a UV
+// sphere from chapter 12's shapes, every triangle lands in exactly one meshlet, the limits hold,
+// every cone holds its triangles' normals and every sphere their vertices; a meshlet culled as
+// back-facing has only triangles that face away; and on a flat grid the counts are known by hand.
 #include "../../chapters/26_mesh_shaders/meshlets.hpp"
 #include "spirv_reflect.hpp"
 
@@ -20,8 +19,8 @@
 #include <cmath>
 #include <set>
 
-using ch26::Meshlet;
-using ch26::Meshlets;
+using vkt::Meshlet;
+using vkt::Meshlets;
 
 namespace {
 
@@ -82,7 +81,7 @@ std::array<uint32_t, 3> global_triangle(const Meshlets& out, const Meshlet& m, u
 
 void check_meshlets(const Mesh& mesh, uint32_t max_vertices, uint32_t max_triangles) {
     const Meshlets out =
-        ch26::build_meshlets(mesh.positions, mesh.indices, max_vertices, max_triangles);
+        vkt::build_meshlets(mesh.positions, mesh.indices, max_vertices, max_triangles);
     // Every triangle exactly once (as the same three vertices in the same turn).
     std::multiset<std::array<uint32_t, 3>> wanted, got;
     const auto canonical = [](std::array<uint32_t, 3> t) {
@@ -111,8 +110,8 @@ void check_meshlets(const Mesh& mesh, uint32_t max_vertices, uint32_t max_triang
             got.insert(canonical(tri));
             for (uint32_t v : tri)
                 CHECK(glm::length(mesh.positions[v] - m.centre) <= m.radius * 1.0001f + 1e-6f);
-            const glm::vec3 n = ch26::face_normal(mesh.positions[tri[0]], mesh.positions[tri[1]],
-                                                  mesh.positions[tri[2]]);
+            const glm::vec3 n = vkt::face_normal(mesh.positions[tri[0]], mesh.positions[tri[1]],
+                                                 mesh.positions[tri[2]]);
             if (n != glm::vec3(0.0f)) CHECK(glm::dot(n, m.cone_axis) >= cone_cos - 1e-4f);
         }
     }
@@ -132,7 +131,7 @@ TEST_CASE("build_meshlets: every triangle once, within the limits, cones hold th
 }
 
 // The growth's work, counted: a triangle's every vertex offers at most
-// ch26::kOffers untaken triangles at each step, so however many triangles
+// vkt::kOffers untaken triangles at each step, so however many triangles
 // share a vertex the scores stay a bounded number per triangle. Rescanning
 // every use of every vertex scored about n / 2 per triangle here (a fan of
 // 20,000: 200,009,999 scores, 10,000 a triangle; 20,000 triangles at index 0:
@@ -141,13 +140,13 @@ TEST_CASE("build_meshlets: work bounded per triangle however many share a vertex
     const uint64_t n = 20000;
     const Mesh disc = fan(uint32_t(n));
     check_meshlets(disc, 64, 124);
-    const Meshlets from_fan = ch26::build_meshlets(disc.positions, disc.indices, 64, 124);
-    CHECK(from_fan.scored <= 2 * ch26::kOffers * n);  // 33 a triangle
+    const Meshlets from_fan = vkt::build_meshlets(disc.positions, disc.indices, 64, 124);
+    CHECK(from_fan.scored <= 2 * vkt::kOffers * n);  // 33 a triangle
     // Every triangle at index 0: one vertex, every triangle degenerate.
     const std::vector<glm::vec3> one_point(1, glm::vec3(0.0f));
     const std::vector<uint32_t> zeros(3 * n, 0);
-    const Meshlets from_zeros = ch26::build_meshlets(one_point, zeros, 64, 124);
-    CHECK(from_zeros.scored <= ch26::kOffers * n);
+    const Meshlets from_zeros = vkt::build_meshlets(one_point, zeros, 64, 124);
+    CHECK(from_zeros.scored <= vkt::kOffers * n);
     uint64_t triangles = 0;
     for (const Meshlet& m : from_zeros.meshlets) {
         CHECK(m.vertex_count == 1);
@@ -159,7 +158,7 @@ TEST_CASE("build_meshlets: work bounded per triangle however many share a vertex
 
 TEST_CASE("build_meshlets: the knot makes several hundred compact meshlets", "[meshlets]") {
     const Mesh mesh = knot();
-    const Meshlets out = ch26::build_meshlets(mesh.positions, mesh.indices, 64, 124);
+    const Meshlets out = vkt::build_meshlets(mesh.positions, mesh.indices, 64, 124);
     // 30,720 triangles: at best 124 a meshlet (248), at worst a strip of
     // 62 (496); the greedy growth fills them to about 80 on average.
     CHECK(out.meshlets.size() > 248);
@@ -172,7 +171,7 @@ TEST_CASE("build_meshlets: the knot makes several hundred compact meshlets", "[m
 
 TEST_CASE("faces_away never culls a triangle that faces the eye", "[meshlets]") {
     for (const Mesh& mesh : {knot(), sphere()}) {
-        const Meshlets out = ch26::build_meshlets(mesh.positions, mesh.indices, 64, 124);
+        const Meshlets out = vkt::build_meshlets(mesh.positions, mesh.indices, 64, 124);
         const glm::vec3 eyes[] = {{0, 0, 4}, {3, 2, -1}, {-0.2f, 0.1f, 1.3f}, {0.5f, -6, 0.5f}};
         uint32_t culled = 0;
         for (const glm::vec3& eye : eyes)
@@ -183,7 +182,7 @@ TEST_CASE("faces_away never culls a triangle that faces the eye", "[meshlets]") 
                     const auto tri = global_triangle(out, m, t);
                     const glm::vec3 a = mesh.positions[tri[0]];
                     const glm::vec3 n =
-                        ch26::face_normal(a, mesh.positions[tri[1]], mesh.positions[tri[2]]);
+                        vkt::face_normal(a, mesh.positions[tri[1]], mesh.positions[tri[2]]);
                     CHECK(glm::dot(n, a - eye) >= 0.0f);  // the eye is behind the face
                 }
             }
@@ -193,7 +192,7 @@ TEST_CASE("faces_away never culls a triangle that faces the eye", "[meshlets]") 
 
 TEST_CASE("cull_on_cpu: a flat grid seen from behind, in front and from far away", "[meshlets]") {
     const Mesh mesh = grid(40);  // 3,200 triangles facing +z, x and y from 0 to 40
-    const Meshlets out = ch26::build_meshlets(mesh.positions, mesh.indices, 64, 124);
+    const Meshlets out = vkt::build_meshlets(mesh.positions, mesh.indices, 64, 124);
     const auto count = uint32_t(out.meshlets.size());
     const glm::mat4 projection = vkt::vulkan_perspective(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f);
     const glm::vec3 middle(20.0f, 20.0f, 0.0f);
@@ -241,8 +240,8 @@ TEST_CASE("the mesh and task shaders declare the limits the C++ builds meshlets 
     CHECK(spirv::local_size(task) == std::vector<uint32_t>{ch26::kTaskGroup, 1, 1});
     // And the builder keeps to them: no meshlet of the knot goes past either.
     const Mesh mesh = knot();
-    const Meshlets out = ch26::build_meshlets(mesh.positions, mesh.indices, ch26::kMeshVertices,
-                                              ch26::kMeshTriangles);
+    const Meshlets out = vkt::build_meshlets(mesh.positions, mesh.indices, ch26::kMeshVertices,
+                                             ch26::kMeshTriangles);
     REQUIRE(!out.meshlets.empty());
     for (const Meshlet& m : out.meshlets) {
         CHECK(m.vertex_count <= ch26::kMeshVertices);
@@ -258,7 +257,7 @@ TEST_CASE("over many views, no meshlet culled by the frustum has a vertex inside
     // <= w, 0 <= z <= w) for every vertex, from 200 views around and inside
     // the knot, pseudo-random but the same on every run.
     const Mesh mesh = knot();
-    const Meshlets out = ch26::build_meshlets(mesh.positions, mesh.indices, 64, 124);
+    const Meshlets out = vkt::build_meshlets(mesh.positions, mesh.indices, 64, 124);
     uint32_t state = 12345u, culled = 0, kept = 0;
     const auto next = [&]() {  // a linear congruential generator, 0..1
         state = state * 1664525u + 1013904223u;

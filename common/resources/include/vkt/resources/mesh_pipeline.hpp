@@ -1,22 +1,25 @@
 #pragma once
-// Chapter 26's pipeline: a graphics pipeline whose geometry stages are a task
-// and a mesh shader, every struct written out (the pipeline helper of
-// chapters 04-08 knows only vertex shaders).
+// The mesh shader pipeline, taught in chapter 26: a graphics pipeline whose
+// geometry stages are a task and a mesh shader, every struct written out
+// (vkt::create_graphics_pipeline, chapters 04-08, knows only vertex
+// shaders). Chapter 28's task path makes one too, with reversed depth.
 
 #include "vkt/core/check.hpp"
 #include "vkt/core/owned.hpp"
 
-namespace ch26 {
+namespace vkt {
 
 // [mesh-pipeline]
 // A graphics pipeline whose geometry stages are a task and a mesh shader:
 // no vertex input state and no input assembly state (the mesh shader
 // makes the primitives); the rest is as for any pipeline. The mesh shader's
-// workgroup size is its specialization constant 0.
-inline vkt::Pipeline create_mesh_pipeline(VkDevice device, VkPipelineLayout layout,
-                                          VkShaderModule task, VkShaderModule mesh,
-                                          uint32_t mesh_workgroup, VkShaderModule fragment,
-                                          VkFormat colour_format, VkFormat depth_format) {
+// workgroup size is its specialization constant 0; the depth test passes
+// what `depth_compare` says (LESS, or GREATER with reversed depth).
+inline Pipeline create_mesh_pipeline(VkDevice device, VkPipelineLayout layout, VkShaderModule task,
+                                     VkShaderModule mesh, uint32_t mesh_workgroup,
+                                     VkShaderModule fragment, VkFormat colour_format,
+                                     VkFormat depth_format,
+                                     VkCompareOp depth_compare = VK_COMPARE_OP_LESS) {
     const VkSpecializationMapEntry workgroup_entry{
         .constantID = 0, .offset = 0, .size = sizeof(uint32_t)};
     const VkSpecializationInfo workgroup{.mapEntryCount = 1,
@@ -60,7 +63,7 @@ inline vkt::Pipeline create_mesh_pipeline(VkDevice device, VkPipelineLayout layo
         .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
         .depthTestEnable = VK_TRUE,
         .depthWriteEnable = VK_TRUE,
-        .depthCompareOp = VK_COMPARE_OP_LESS,
+        .depthCompareOp = depth_compare,
     };
     const VkPipelineColorBlendAttachmentState blend_attachment{
         .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
@@ -100,8 +103,8 @@ inline vkt::Pipeline create_mesh_pipeline(VkDevice device, VkPipelineLayout layo
     };
     VkPipeline pipeline;
     VKT_CHECK(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-    return vkt::Pipeline(device, pipeline);
+    return Pipeline(device, pipeline);
 }
 // [/mesh-pipeline]
 
-}  // namespace ch26
+}  // namespace vkt
