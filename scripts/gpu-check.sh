@@ -106,13 +106,15 @@ if [ -x "$bin/23_materials" ]; then
   done
 fi
 # The debug views that draw a chapter's own images (tests/chapters/22_shadows.cmake,
-# 23_materials.cmake): each against its own lavapipe golden. 24's --view boxes
+# 23_materials.cmake, 28_gpu_culling.cmake): each against its own lavapipe golden. 24's --view boxes
 # needs VK_KHR_ray_query, checked above with the chapter.
 for run in "22_shadows|22_shadows_map|320x240|--view map" \
            "23_materials|23_materials_view_sky|640x480|--view sky" \
            "23_materials|23_materials_view_irradiance|640x480|--view irradiance" \
            "23_materials|23_materials_view_prefiltered|640x480|--view prefiltered" \
-           "23_materials|23_materials_view_brdf|640x480|--view brdf --tone-map clamp"; do
+           "23_materials|23_materials_view_brdf|640x480|--view brdf --tone-map clamp" \
+           "28_gpu_culling|28_gpu_culling_pyramid|320x240|--instances 4096 --view pyramid --level 3" \
+           "28_gpu_culling|28_gpu_culling_culled|320x240|--instances 4096 --view culled"; do
   IFS='|' read -r chapter name size extra <<<"$run"
   [ -x "$bin/$chapter" ] || continue
   check "$name" "$chapter" "tests/golden/$name.png" "" \
