@@ -74,7 +74,7 @@ def main() -> None:
         "font.size": 11,
         "axes.titlesize": 12,
     })
-    figure, axes = plt.subplots(1, 2, figsize=(9.6, 5.6), layout="constrained")
+    figure, axes = plt.subplots(1, 2, figsize=(9.6, 5.0), layout="constrained")
     cmap = matplotlib.colormaps["viridis"]
     last = float(constant(ENVIRONMENT_HPP, "sky_levels")) - 1  # the sampler clamps a higher lod to it
     reach = 0.0  # both panels to one scale
@@ -100,15 +100,18 @@ def main() -> None:
                        linewidths=1.3, label=f"below the horizon, skipped ({len(skipped)})")
         widest = max(p[2] for p in kept)
         lods = sorted(p[3] for p in kept)
-        ax.set_title(f"roughness {roughness:.1f} (level {level}): {len(kept)} of {SAMPLES} kept,\n"
-                     f"all within {widest:.0f}° of n; sky levels {lods[0]:.1f} to {lods[-1]:.0f}", loc="left")
+        ax.set_title(f"roughness {roughness:.1f} (the cube's level {level}): {len(kept)} of {SAMPLES} kept,\n"
+                     f"all within {widest:.0f}° of n; they read sky levels {lods[0]:.1f} to {lods[-1]:.0f}",
+                     loc="left", fontsize=11)
         reach = max([reach, 1.08] + [math.hypot(p[0], p[1]) + 0.08 for p in skipped])
         ax.set_aspect("equal")
         ax.set_xticks([])
         ax.set_yticks([])
         for side in ax.spines.values():
             side.set_visible(False)
-        ax.legend(loc="upper center", fontsize=9.5, frameon=False, bbox_to_anchor=(0.5, 0.0))
+        legend = ax.legend(loc="upper center", fontsize=9.5, frameon=False, bbox_to_anchor=(0.5, 0.02))
+        handles = getattr(legend, "legend_handles", None) or legend.legendHandles  # 3.7+, before
+        handles[0].set_color(cmap(0.55))  # a mid colour for "a kept sample"
     for ax in axes:
         ax.set_xlim(-reach, reach)
         ax.set_ylim(-reach, reach)
