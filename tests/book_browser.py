@@ -781,7 +781,8 @@ def main(argv: list[str]) -> int:
               f"({seconds:.0f} s)")
         return 0
     print(f"book_browser.py: {len(pages)} pages at {' and '.join(map(str, WIDTHS))} px: every picture loaded, "
-          f"nothing scrolls sideways, no console error, {len(links.checked)} links good; the search lists "
+          f"nothing scrolls sideways or is cut off, every wide code block scrolls or wraps, no console error, "
+          f"{len(links.checked)} links good; the search lists "
           f"the teaching chapter and section first for {len(SEARCH_QUERIES)} queries; every chart has axis "
           f"labels and a legend; every chapter after the first links its changes page; no table breaks an identifier; figure text: {figure_notes} ({seconds:.0f} s)")
     return 0
