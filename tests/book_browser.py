@@ -2,14 +2,17 @@
 """Opens every page of the built book in headless Chromium and checks what a reader sees.
 
     /usr/bin/python3 tests/book_browser.py BOOK_DIR [--chromium PATH] [--pages REGEX]
-                                          [--skip-without-chromium]
+                                          [--skip-without-chromium] [--layout-only]
 
 BOOK_DIR is the output of book/build_book.py. Every HTML page in it is loaded
 at 1280 and at 400 pixels wide (the second as a phone: a mobile viewport), and
 the run fails on:
 
   - a picture that did not load (an <img> that is not complete, or 0 pixels wide);
-  - horizontal overflow: the page wider than the window, so it scrolls sideways;
+  - horizontal overflow: the page wider than the window, so it scrolls sideways,
+    or an element past the window's edge in no scrolling box (cut off where
+    the page hides its overflow), or a code block wider than its box that
+    neither scrolls nor wraps;
   - a console error, an uncaught exception, or a resource that failed to load;
   - a broken link: a file:// link to a file that does not exist, or to an
     anchor that the target page does not have.
@@ -223,24 +226,35 @@ PAGE_CHECK = r"""
   const width = root.clientWidth;
   const broken = [...document.images].filter(i => !i.complete || i.naturalWidth === 0)
                                      .map(i => i.getAttribute('src'));
+  // Whether or not the page scrolls: an element whose box reaches past the window
+  // with no scrolling box around it either widens the page or, where the page
+  // hides its overflow, is cut off (a phone shows neither well).
   const wide = [];
-  if (root.scrollWidth > width + 1) {
-    for (const el of document.body.querySelectorAll('*')) {
+  // Down the tree, not into a box that scrolls or clips (a code block's many
+  // spans): what lies inside one cannot reach past the window unless it does.
+  const walk = (parent) => {
+    for (const el of parent.children) {
+      if (wide.length >= 3) return;
       const box = el.getBoundingClientRect();
       if (box.right > width + 1 && box.width > 0) {
-        let clipped = false;
-        for (let p = el.parentElement; p && p !== document.body; p = p.parentElement) {
-          const o = getComputedStyle(p).overflowX;
-          if (o === 'auto' || o === 'scroll' || o === 'hidden') { clipped = true; break; }
-        }
-        if (!clipped) wide.push(el.tagName.toLowerCase() + (el.className ? '.' + el.className : '') +
-                                ' "' + (el.textContent || '').trim().slice(0, 40) + '" right edge ' +
-                                Math.round(box.right));
+        wide.push(el.tagName.toLowerCase() + (el.className && typeof el.className === 'string' ? '.' + el.className : '') +
+                  ' "' + (el.textContent || '').trim().slice(0, 40) + '" right edge ' + Math.round(box.right));
       }
-      if (wide.length >= 3) break;
+      const o = getComputedStyle(el).overflowX;
+      if (o !== 'auto' && o !== 'scroll' && o !== 'hidden' && o !== 'clip') walk(el);
     }
+  };
+  walk(document.body);
+  // A code or console block wider than its box must scroll inside it, or wrap.
+  const unscrolled = [];
+  for (const pre of document.querySelectorAll('pre')) {
+    if (pre.scrollWidth <= pre.clientWidth + 1) continue;
+    const style = getComputedStyle(pre);
+    const scrolls = style.overflowX === 'auto' || style.overflowX === 'scroll';
+    const wraps = style.whiteSpace === 'pre-wrap' || style.whiteSpace === 'break-spaces';
+    if (!scrolls && !wraps) unscrolled.push((pre.textContent || '').trim().slice(0, 40));
   }
-  return {scrollWidth: root.scrollWidth, width, broken, wide,
+  return {scrollWidth: root.scrollWidth, width, broken, wide, unscrolled,
           links: [...document.querySelectorAll('a[href]')].map(a => a.href)};
 })()
 """
@@ -606,6 +620,10 @@ def main(argv: list[str]) -> int:
                         help="the browser (default: the first of " + ", ".join(CHROMIUM_NAMES) + ")")
     parser.add_argument("--skip-without-chromium", action="store_true",
                         help=f"without a browser, exit {SKIPPED} (skipped) instead of 1")
+    parser.add_argument("--layout-only", action="store_true",
+                        help="only the pages' layout at each width (pictures, sideways scrolling, elements cut "
+                             "off, code blocks that neither scroll nor wrap, console errors): no links, "
+                             "figures, search or charts (the layout check's own test, on a fixture)")
     parser.add_argument("--pages", default="", help="only pages whose path matches this regular expression")
     parser.add_argument("--timeout", type=float, default=30.0, help="seconds a page may take to load")
     try:
@@ -692,7 +710,15 @@ def main(argv: list[str]) -> int:
                         what = "; ".join(result["wide"]) or "no single element found"
                         problems.append(f"{page} at {width} px: scrolls sideways ({result['scrollWidth']} px "
                                         f"wide in a {result['width']} px window): {what}")
+                    elif result["wide"]:
+                        problems.append(f"{page} at {width} px: cut off at the window's edge ({result['width']} "
+                                        f"px), in no scrolling box: {'; '.join(result['wide'])}")
+                    for block in result["unscrolled"]:
+                        problems.append(f"{page} at {width} px: the code block '{block}' is wider than its box "
+                                        "and neither scrolls nor wraps")
                     problems += problems_from_events(tab.events, page, width)
+                    if args.layout_only:
+                        continue
                     shown = tab.evaluate(FIGURE_CHECK)
                     for figure in shown["figures"]:
                         figures.append((page, width, figure))
@@ -709,37 +735,39 @@ def main(argv: list[str]) -> int:
                             if problem:
                                 problems.append(problem)
 
-            # Each SVG on its own, for its smallest text.
-            tab.call("Emulation.setDeviceMetricsOverride", width=1280, height=900, deviceScaleFactor=1,
-                     mobile=False)
-            svg_text = {}
-            for src in sorted({figure["src"] for _, _, figure in figures}):
-                target = book / urllib.parse.unquote(src)
-                tab.call("Page.navigate", url=target.as_uri())
-                tab.wait_for("Page.loadEventFired", time.monotonic() + args.timeout)
-                svg_text[src] = tab.evaluate(SVG_TEXT_CHECK)
-            tab.events.clear()
-            figure_problems, figure_notes = check_figures(figures, svg_text)
-            problems += figure_problems
+            if not args.layout_only:  # the figures, their text and the search
+                # Each SVG on its own, for its smallest text.
+                tab.call("Emulation.setDeviceMetricsOverride", width=1280, height=900, deviceScaleFactor=1,
+                         mobile=False)
+                svg_text = {}
+                for src in sorted({figure["src"] for _, _, figure in figures}):
+                    target = book / urllib.parse.unquote(src)
+                    tab.call("Page.navigate", url=target.as_uri())
+                    tab.wait_for("Page.loadEventFired", time.monotonic() + args.timeout)
+                    svg_text[src] = tab.evaluate(SVG_TEXT_CHECK)
+                tab.events.clear()
+                figure_problems, figure_notes = check_figures(figures, svg_text)
+                problems += figure_problems
 
-            # The search: each query's teaching chapter and section first.
-            tab.call("Emulation.setDeviceMetricsOverride", width=1280, height=900, deviceScaleFactor=1,
-                     mobile=False)
-            tab.events.clear()
-            tab.call("Page.navigate", url=(book / "index.html").as_uri())
-            tab.wait_for("Page.loadEventFired", time.monotonic() + args.timeout)
-            for query, page, section in SEARCH_QUERIES:
-                problems += check_search(tab.evaluate(SEARCH_CHECK % json.dumps(query)), query, page, section,
-                                         book, links)
-            problems += problems_from_events(tab.events, "index.html (search)", 1280)
+                # The search: each query's teaching chapter and section first.
+                tab.call("Emulation.setDeviceMetricsOverride", width=1280, height=900, deviceScaleFactor=1,
+                         mobile=False)
+                tab.events.clear()
+                tab.call("Page.navigate", url=(book / "index.html").as_uri())
+                tab.wait_for("Page.loadEventFired", time.monotonic() + args.timeout)
+                for query, page, section in SEARCH_QUERIES:
+                    problems += check_search(tab.evaluate(SEARCH_CHECK % json.dumps(query)), query, page, section,
+                                             book, links)
+                problems += problems_from_events(tab.events, "index.html (search)", 1280)
         except (Failure, OSError, socket.timeout) as error:
             problems.append(f"the browser run stopped: {error}")
         finally:
             if process is not None:
                 stop_chromium(process)
 
-    problems += check_charts(book)
-    problems += check_changes(book)
+    if not args.layout_only:
+        problems += check_charts(book)
+        problems += check_changes(book)
     for problem in dict.fromkeys(problems):
         print(f"book_browser.py: {problem}", file=sys.stderr)
     seconds = time.monotonic() - started
@@ -747,8 +775,14 @@ def main(argv: list[str]) -> int:
         print(f"book_browser.py: {len(set(problems))} problem(s) in {len(pages)} pages at "
               f"{' and '.join(map(str, WIDTHS))} px ({seconds:.0f} s)", file=sys.stderr)
         return 1
+    if args.layout_only:
+        print(f"book_browser.py: {len(pages)} pages at {' and '.join(map(str, WIDTHS))} px: every picture "
+              f"loaded, nothing scrolls sideways or is cut off, every wide code block scrolls or wraps "
+              f"({seconds:.0f} s)")
+        return 0
     print(f"book_browser.py: {len(pages)} pages at {' and '.join(map(str, WIDTHS))} px: every picture loaded, "
-          f"nothing scrolls sideways, no console error, {len(links.checked)} links good; the search lists "
+          f"nothing scrolls sideways or is cut off, every wide code block scrolls or wraps, no console error, "
+          f"{len(links.checked)} links good; the search lists "
           f"the teaching chapter and section first for {len(SEARCH_QUERIES)} queries; every chart has axis "
           f"labels and a legend; every chapter after the first links its changes page; no table breaks an identifier; figure text: {figure_notes} ({seconds:.0f} s)")
     return 0
