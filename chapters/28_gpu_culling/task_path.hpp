@@ -50,6 +50,7 @@ inline void require_mesh_shaders(vkt::DeviceRequirements& requirements) {
 inline vkt::Meshlets make_meshlets(const vkt::shapes::MeshBuilder& builder,
                                    std::vector<Mesh>& meshes) {
     std::vector<glm::vec3> positions;
+    positions.reserve(builder.vertices.size());
     for (const vkt::shapes::Vertex& v : builder.vertices) positions.push_back(v.position);
     vkt::Meshlets all;
     for (uint32_t kind = 0; kind < floor_mesh; ++kind) {
