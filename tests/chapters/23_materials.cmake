@@ -31,6 +31,12 @@ vkt_chapter_window_test(23_materials PIXEL 0,0,119,136,168,2)
 set(VKT_23_PIXEL PIXEL 0,0,59,69,92 319,239,59,69,92)
 vkt_chapter_test(chapter.23_materials.uniform 23_materials GOLDEN_FILE 23_materials_uniform.png
   LABELS bless ${VKT_23_PIXEL} ARGS ${headless} --sky uniform EXPECT "the sphere grid, sky uniform")
+# The same grid cut at 1 instead of ACES (--tone-map clamp), for page 23b's
+# side by side: the sky (0.05, 0.06, 0.09) sRGB-encoded as it is, (63.2,
+# 69.3, 84.6), stored (63, 69, 85) within 1; its own golden image.
+vkt_chapter_test(chapter.23_materials.clamp 23_materials GOLDEN_FILE 23_materials_clamp.png
+  LABELS bless PIXEL 0,0,63,69,85,1 319,239,63,69,85,1 ARGS ${headless} --sky uniform --tone-map clamp
+  EXPECT "exposure \\+0.00 EV \\(x1.000\\), tone map clamp")
 vkt_chapter_test(chapter.23_materials.exposure 23_materials PIXEL 0,0,124,134,162
   ARGS ${headless} --sky uniform --exposure 2 --tone-map clamp
   EXPECT "exposure \\+2.00 EV \\(x4.000\\), tone map clamp")

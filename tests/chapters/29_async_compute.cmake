@@ -40,10 +40,12 @@ vkt_chapter_test(chapter.29_async_compute.no_bloom_single 29_async_compute
   SAME_AS chapter.29_async_compute.no_bloom ${VKT_29_PIXEL} ARGS ${headless} --bloom 0 --queues single)
 # A wider bloom (--bloom-radius 6, 13 x 13 taps a texel on the way up): more
 # compute work on the compute queue, and the same picture both ways, to the
-# bit. And the radius must be used: in the top-left corner, far from any
-# lamp at frame 10, radius 1 gives (123, 84, 113), radius 6 the wider glow of
-# the lamps around it, (135, 106, 128) on lavapipe (a reading, not worked out
-# by hand; within 4 either way, which refuses radius 1's green by 22).
+# bit. And the radius must be used: the top-left corner is sky without
+# bloom, (39, 48, 77), but at frame 10 a pink lamp's disc reaches the left
+# edge 15 pixels below it (pixel (0,15) and down), and the corner takes that
+# lamp's glow: radius 1 gives (123, 84, 113), radius 6's wider glow
+# (135, 106, 128) on lavapipe (a reading, not worked out by hand; within 4
+# either way, which refuses radius 1's green by 22).
 set(VKT_29_WIDE_CORNER PIXEL 0,0,135,106,128,4)
 vkt_chapter_test(chapter.29_async_compute.wide 29_async_compute ${VKT_29_WIDE_CORNER}
   ARGS ${headless} --bloom-radius 6 EXPECT ${VKT_29_ASYNC})
