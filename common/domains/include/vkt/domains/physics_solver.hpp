@@ -6,8 +6,11 @@
 // (warm starting), solves every point with a soft constraint (a stiff,
 // heavily damped spring that also pushes overlapping boxes apart), moves the
 // bodies, and solves every point once more without the spring (relaxing, so
-// the push adds no speed). After the last sub-step, points that were closing
-// fast when the step began are made to part at the set restitution.
+// the push adds no speed). Islands that these springs cannot hold (a tall
+// support chain, a far heavier load on a light body) take more, shorter
+// sub-steps with stiffer springs (physics_need.cpp). After the last
+// sub-step, points that were closing fast when the step began are made to
+// part at the set restitution.
 //
 // Plain C++ and glm: no Vulkan here.
 
