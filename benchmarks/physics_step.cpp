@@ -13,14 +13,15 @@
 //       the same world stepped with each broad phase, brute force and
 //       sort-and-sweep, and each broad phase alone (CPU times).
 //   build/release/bin/physics_bench --stacks [--substeps N] [--iterations N] [--hertz H]
+//           [--stiff-substeps N] [--stiff-iterations N] [--stiff-height N] [--stiff-ratio R]
 //       Stacks that statics say must stand or fall, stepped awake with the
 //       solver's settings as given (the chapter's by default): the 20-box
 //       staircase at 63%, 80%, 93% and 110% of its tipping lean, ten boxes
 //       100 times heavier on a light one, one box 1,000 times heavier on a
 //       light one; then the default run's colliding median with the same
 //       settings, so that what a setting holds and what it costs come from
-//       one run. --substeps, --iterations and --hertz apply to the default
-//       run too.
+//       one run. The solver options apply to the default run too;
+//       --stiff-substeps 0 turns the per-island stiff sub-steps off.
 //
 // Times: each step's wall-clock time and the thread's CPU time (which a
 // machine busy with other work inflates less); medians of each.
@@ -79,7 +80,7 @@ int scene(uint32_t count, uint32_t seed, const SolverSettings& solver) {
     const int steps_per_second = 120;
     const int first = 3 * steps_per_second / 2, last = 9 * steps_per_second / 2;
     Run colliding;
-    std::size_t manifolds = 0, points = 0, awake = 0;
+    std::size_t manifolds = 0, points = 0, awake = 0, stiff = 0;
     int step = 0;
     for (; step < last; ++step) {
         if (step < first) {
@@ -90,16 +91,17 @@ int scene(uint32_t count, uint32_t seed, const SolverSettings& solver) {
         manifolds += world.manifolds().size();
         points += world.contact_points();
         awake += world.awake_count();
+        stiff += world.stiff_count();
     }
     const double n = double(last - first), total = colliding.sum.total();
     std::printf(
         "{\"boxes\": %u, \"phase\": \"colliding\", \"from_s\": 1.5, \"to_s\": 4.5, "
         "\"median_ms\": %.3f, \"median_cpu_ms\": %.3f, \"broad\": %.3f, \"narrow\": %.3f, "
         "\"solver\": %.3f, \"other\": %.3f, \"mean_awake\": %.0f, \"mean_manifolds\": %.0f, "
-        "\"mean_points\": %.0f}\n",
+        "\"mean_points\": %.0f, \"mean_stiff\": %.0f}\n",
         count, median(colliding.wall), median(colliding.cpu), colliding.sum.broad / total,
         colliding.sum.narrow / total, colliding.sum.solver / total, colliding.sum.other / total,
-        double(awake) / n, double(manifolds) / n, double(points) / n);
+        double(awake) / n, double(manifolds) / n, double(points) / n, double(stiff) / n);
     std::fflush(stdout);
     // On until every box sleeps (a minute at most), then 240 steps asleep.
     for (; world.awake_count() > 0 && step < 60 * steps_per_second; ++step) world.step();
@@ -204,8 +206,12 @@ void staircase(const SolverSettings& solver, float of_tipping) {
     // the top settles is taken at 10 s, and its sway is how far it strays
     // from there in the 30 s after.
     double fell_at = -1.0, settled = 0.0, sway = 0.0;
+    const double begin = cpu_ms();  // the stacks' own cost: CPU per step, while it stands
+    double standing_ms = 0.0;
+    int standing_steps = 0;
     for (int i = 1; i <= 120 * 40; ++i) {
         world.step();
+        if (fell_at < 0.0) standing_ms = cpu_ms() - begin, standing_steps = i;
         const glm::vec3 p = world.bodies()[top].position;
         if (fell_at < 0.0 && p.y < 8.0f) fell_at = double(i) / 120.0;
         if (i == 120 * 10) settled = p.x;
@@ -213,9 +219,10 @@ void staircase(const SolverSettings& solver, float of_tipping) {
     }
     std::printf(
         "{\"probe\": \"staircase\", \"of_tipping\": %.2f, \"lean_m\": %.4f, "
-        "\"fell_at_s\": %.2f, \"top_x_at_10s_m\": %.4f, \"sway_10_40s_mm\": %.1f}\n",
+        "\"fell_at_s\": %.2f, \"top_x_at_10s_m\": %.4f, \"sway_10_40s_mm\": %.1f, "
+        "\"standing_step_us\": %.1f}\n",
         of_tipping, lean, fell_at, fell_at < 0.0 ? settled : -1.0,
-        fell_at < 0.0 ? sway * 1000.0 : -1.0);
+        fell_at < 0.0 ? sway * 1000.0 : -1.0, 1000.0 * standing_ms / standing_steps);
     std::fflush(stdout);
 }
 
@@ -251,8 +258,11 @@ void heavy_on_light(const SolverSettings& solver, float ratio, int count) {
 int stacks(const SolverSettings& solver) {
     std::printf(
         "{\"probe\": \"settings\", \"substeps\": %d, \"iterations\": %d, "
-        "\"relax_iterations\": %d, \"contact_hertz\": %.1f}\n",
-        solver.substeps, solver.iterations, solver.relax_iterations, double(solver.contact_hertz));
+        "\"relax_iterations\": %d, \"contact_hertz\": %.1f, \"stiff_substeps\": %d, "
+        "\"stiff_iterations\": %d, \"stiff_height\": %d, \"stiff_mass_ratio\": %.0f}\n",
+        solver.substeps, solver.iterations, solver.relax_iterations, double(solver.contact_hertz),
+        solver.stiff_substeps, solver.stiff_iterations, solver.stiff_height,
+        double(solver.stiff_mass_ratio));
     for (float of_tipping : {0.63f, 0.80f, 0.93f, 1.10f}) staircase(solver, of_tipping);
     heavy_on_light(solver, 100.0f, 10);
     heavy_on_light(solver, 1000.0f, 1);
@@ -307,6 +317,17 @@ int main(int argc, char** argv) {
             if (!parse_int("--substeps", argv[i + 1], 1, 64, solver.substeps)) return 2;
         } else if (has_value && std::strcmp(argv[i], "--iterations") == 0) {
             if (!parse_int("--iterations", argv[i + 1], 1, 64, solver.iterations)) return 2;
+        } else if (has_value && std::strcmp(argv[i], "--stiff-substeps") == 0) {
+            if (!parse_int("--stiff-substeps", argv[i + 1], 0, 64, solver.stiff_substeps)) return 2;
+        } else if (has_value && std::strcmp(argv[i], "--stiff-iterations") == 0) {
+            if (!parse_int("--stiff-iterations", argv[i + 1], 1, 64, solver.stiff_iterations))
+                return 2;
+        } else if (has_value && std::strcmp(argv[i], "--stiff-height") == 0) {
+            if (!parse_int("--stiff-height", argv[i + 1], 1, 65536, solver.stiff_height)) return 2;
+        } else if (has_value && std::strcmp(argv[i], "--stiff-ratio") == 0) {
+            int ratio = 0;
+            if (!parse_int("--stiff-ratio", argv[i + 1], 1, 1000000, ratio)) return 2;
+            solver.stiff_mass_ratio = float(ratio);
         } else if (has_value && std::strcmp(argv[i], "--hertz") == 0) {
             int hertz = 0;
             if (!parse_int("--hertz", argv[i + 1], 1, 100000, hertz)) return 2;
@@ -323,7 +344,9 @@ int main(int argc, char** argv) {
         } else {
             std::fprintf(stderr,
                          "usage: physics_bench [--stacks] [--count N] [--seed S] [--substeps N] "
-                         "[--iterations N] [--hertz H] | --scaling [COUNT...]\n");
+                         "[--iterations N] [--hertz H] [--stiff-substeps N] "
+                         "[--stiff-iterations N] [--stiff-height N] [--stiff-ratio R] | --scaling "
+                         "[COUNT...]\n");
             return 2;
         }
     }

@@ -110,9 +110,9 @@ void apply(State& a, State& b, const Row& row, glm::vec3 d, float impulse) {
 // for it), and always the same one would tip the box a little towards it,
 // every pass. A 20-box tower, awake, swayed 1-2 mm at the top that way; with
 // the start going round, 0.03 mm in 30 s.
-void Solver::solve_contacts(const SolverSettings& s, float h, bool soft) {
-    const uint32_t start = passes_++;
-    for (const Contact& c : contacts_) {
+void Solver::solve_contacts(const SolverSettings& s, const Group& g, float h, bool soft) {
+    const uint32_t start = g.passes++;
+    for (const Contact& c : g.contacts) {
         State a = states_[c.a], b = states_[c.b];  // copies, stored back below
         const Softness& spring = c.static_other ? soft_static_ : soft_;
         // The first point this pass, then round: at most 4 points, so no
@@ -206,6 +206,51 @@ void Solver::restitution(const SolverSettings& s) {
 }
 // [/restitution]
 
+// [substeps]
+void Solver::run(std::span<Body> bodies, const Group& g, const SolverSettings& s, float dt,
+                 glm::vec3 gravity) {
+    const float h = dt / float(g.substeps);
+    // The spring: no stiffer than a quarter of the sub-step rate (stiffer
+    // ones are not stable). Against static bodies twice as stiff, as in
+    // Box2D, but under the same cap: at the default 120 Hz and 4 sub-steps
+    // the spring is at the cap already, and the two are the same.
+    const float hertz = std::min(g.hertz, 0.25f / h);
+    soft_constraint(hertz, s.damping_ratio, h, soft_.bias_rate, soft_.mass_scale,
+                    soft_.impulse_scale);
+    soft_constraint(std::min(2.0f * hertz, 0.25f / h), s.damping_ratio, h, soft_static_.bias_rate,
+                    soft_static_.mass_scale, soft_static_.impulse_scale);
+    const float damping = 1.0f / (1.0f + h * s.angular_damping);
+    for (int sub = 0; sub < g.substeps; ++sub) {
+        // Gravity and damping, for every moving body (woken ones included).
+        for (uint32_t i : g.movers) {
+            states_[i].v += gravity * h;
+            states_[i].w *= damping;
+        }
+        // Warm start: the impulses so far (last step's, then last sub-step's)
+        // first, so that a stack's weight need not be found again each time.
+        for (const Contact& c : g.contacts)
+            for (uint32_t k = 0; k < c.count; ++k) {
+                const Point& p = points_[c.first + k];
+                State& a = states_[c.a];
+                State& b = states_[c.b];
+                apply(a, b, p.normal, c.normal, p.normal.impulse);
+                for (int t = 0; t < 2; ++t)
+                    apply(a, b, p.tangent[t], c.tangent[t], p.tangent[t].impulse);
+            }
+        for (int i = 0; i < g.iterations; ++i) solve_contacts(s, g, h, true);
+        // Move and turn with the solved velocities.
+        for (uint32_t i : g.movers) {
+            State& state = states_[i];
+            integrate_position(bodies[i], state.v, state.w, h);
+            state.moved += state.v * h;
+            state.turned += state.w * h;
+        }
+        for (int i = 0; i < s.relax_iterations; ++i)
+            solve_contacts(s, g, h, false);  // relax: the push's speed goes
+    }
+}
+// [/substeps]
+
 // [step]
 void Solver::step(std::span<Body> bodies, std::span<Manifold> manifolds, const SolverSettings& s,
                   float dt, glm::vec3 gravity) {
@@ -227,47 +272,24 @@ void Solver::step(std::span<Body> bodies, std::span<Manifold> manifolds, const S
     for (Manifold& m : manifolds)
         if (bodies[m.a].is_active() || bodies[m.b].is_active()) prepare(m, s);
 
+    // The islands these springs hold take the chapter's sub-steps; those
+    // that need stiffer ones (find_needs) take more, shorter ones with the
+    // spring stiffer in step. Islands share no moving body, so each group
+    // runs on its own, and both advance the whole step dt.
+    find_needs(s);
     const int substeps = std::max(s.substeps, 1);
-    const float h = dt / float(substeps);
-    // The spring: no stiffer than a quarter of the sub-step rate (stiffer
-    // ones are not stable). Against static bodies twice as stiff, as in
-    // Box2D, but under the same cap: at the default 120 Hz and 4 sub-steps
-    // the spring is at the cap already, and the two are the same.
-    const float hertz = std::min(s.contact_hertz, 0.25f / h);
-    soft_constraint(hertz, s.damping_ratio, h, soft_.bias_rate, soft_.mass_scale,
-                    soft_.impulse_scale);
-    soft_constraint(std::min(2.0f * hertz, 0.25f / h), s.damping_ratio, h, soft_static_.bias_rate,
-                    soft_static_.mass_scale, soft_static_.impulse_scale);
-    const float damping = 1.0f / (1.0f + h * s.angular_damping);
-    for (int sub = 0; sub < substeps; ++sub) {
-        // Gravity and damping, for every moving body (woken ones included).
-        for (std::size_t i = 0; i < n; ++i)
-            if (states_[i].inverse_mass > 0.0f) {
-                states_[i].v += gravity * h;
-                states_[i].w *= damping;
-            }
-        // Warm start: the impulses so far (last step's, then last sub-step's)
-        // first, so that a stack's weight need not be found again each time.
-        for (const Contact& c : contacts_)
-            for (uint32_t k = 0; k < c.count; ++k) {
-                const Point& p = points_[c.first + k];
-                State& a = states_[c.a];
-                State& b = states_[c.b];
-                apply(a, b, p.normal, c.normal, p.normal.impulse);
-                for (int t = 0; t < 2; ++t)
-                    apply(a, b, p.tangent[t], c.tangent[t], p.tangent[t].impulse);
-            }
-        for (int i = 0; i < s.iterations; ++i) solve_contacts(s, h, true);
-        // Move and turn with the solved velocities.
-        for (std::size_t i = 0; i < n; ++i) {
-            State& state = states_[i];
-            if (state.inverse_mass == 0.0f) continue;
-            integrate_position(bodies[i], state.v, state.w, h);
-            state.moved += state.v * h;
-            state.turned += state.w * h;
-        }
-        for (int i = 0; i < s.relax_iterations; ++i)
-            solve_contacts(s, h, false);  // relax: the push's speed goes
+    const std::span<const uint32_t> movers(movers_);
+    const std::span<const Contact> contacts(contacts_);
+    run(bodies,
+        {substeps, s.iterations, s.contact_hertz, movers.first(normal_movers_),
+         contacts.first(normal_contacts_), passes_[0]},
+        s, dt, gravity);
+    if (normal_movers_ < movers_.size()) {
+        const int stiff = std::max(s.stiff_substeps, substeps);
+        run(bodies,
+            {stiff, s.stiff_iterations, s.contact_hertz * float(stiff) / float(substeps),
+             movers.subspan(normal_movers_), contacts.subspan(normal_contacts_), passes_[1]},
+            s, dt, gravity);
     }
     restitution(s);
     // Keep the impulses for next step's warm start.

@@ -77,6 +77,8 @@ public:
     std::span<const Manifold> manifolds() const { return manifolds_; }
     std::size_t contact_points() const;
     std::size_t awake_count() const;
+    // Bodies whose islands took the stiff sub-steps in the last step.
+    std::size_t stiff_count() const { return solver_.stiff_bodies(); }
     const StepTimes& times() const { return times_; }
     // Kinetic plus potential energy (height measured from y = 0), joules.
     double energy() const;

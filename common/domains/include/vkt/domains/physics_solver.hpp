@@ -6,14 +6,18 @@
 // (warm starting), solves every point with a soft constraint (a stiff,
 // heavily damped spring that also pushes overlapping boxes apart), moves the
 // bodies, and solves every point once more without the spring (relaxing, so
-// the push adds no speed). After the last sub-step, points that were closing
-// fast when the step began are made to part at the set restitution.
+// the push adds no speed). Islands that these springs cannot hold (a tall
+// support chain, a far heavier load on a light body) take more, shorter
+// sub-steps with stiffer springs (physics_need.cpp). After the last
+// sub-step, points that were closing fast when the step began are made to
+// part at the set restitution.
 //
 // Plain C++ and glm: no Vulkan here.
 
 #include "vkt/domains/physics_body.hpp"
 #include "vkt/domains/physics_collision.hpp"
 
+#include <cstdint>
 #include <span>
 #include <utility>
 #include <vector>
@@ -33,6 +37,16 @@ struct SolverSettings {
     float friction = 0.5f;               // Coulomb: |friction impulse| <= mu * normal impulse
     float angular_damping = 0.2f;        // 1/s: spin loses this share of itself per second
     bool warm_start = true;
+    // [need-settings]
+    // Islands that these springs cannot hold get more, shorter sub-steps and
+    // springs as many times stiffer (still a quarter of their rate): a
+    // support chain from the ground this many moving bodies tall, or two
+    // moving bodies in contact this unequal in mass. 0 sub-steps: none do.
+    int stiff_substeps = 16;         // x stiff_iterations soft passes, at 120 Hz x 16 / 4 = 480 Hz
+    int stiff_iterations = 4;        // (+ relax_iterations)
+    int stiff_height = 12;           // bodies, counted from the one on the ground
+    float stiff_mass_ratio = 50.0f;  // heavier / lighter
+    // [/need-settings]
 };
 // [/solver-settings]
 
@@ -44,6 +58,8 @@ public:
     // manifolds for next step's warm start.
     void step(std::span<Body> bodies, std::span<Manifold> manifolds, const SolverSettings& settings,
               float dt, glm::vec3 gravity);
+    // How many bodies the last step gave the stiff sub-steps.
+    std::size_t stiff_bodies() const { return movers_.size() - normal_movers_; }
 
 private:
     // A body as the solver's loops see it: its velocities, its inverse mass
@@ -81,8 +97,24 @@ private:
     struct Softness {
         float bias_rate, mass_scale, impulse_scale;
     };
+    // One set of sub-steps over some islands: their moving bodies and their
+    // contacts, cut into `substeps` with `iterations` soft passes each and
+    // the spring at `hertz` (capped at a quarter of the sub-step rate).
+    struct Group {
+        int substeps, iterations;
+        float hertz;
+        std::span<const uint32_t> movers;
+        std::span<const Contact> contacts;
+        uint32_t& passes;  // passes made so far: where the next starts
+    };
     void prepare(Manifold& manifold, const SolverSettings& settings);
-    void solve_contacts(const SolverSettings& settings, float h, bool soft);
+    // Which islands need the stiff sub-steps (physics_need.cpp): fills
+    // movers_ (the normal islands' moving bodies, then the stiff ones') and
+    // orders contacts_ the same way.
+    void find_needs(const SolverSettings& settings);
+    void run(std::span<Body> bodies, const Group& group, const SolverSettings& settings, float dt,
+             glm::vec3 gravity);
+    void solve_contacts(const SolverSettings& settings, const Group& group, float h, bool soft);
     void restitution(const SolverSettings& settings);
 
     std::vector<State> states_;
@@ -90,11 +122,20 @@ private:
     std::vector<glm::mat3> inverse_inertias_;  // world space, fixed for the step
     std::vector<Contact> contacts_;
     // Passes made over the contacts so far: where each pass starts among a
-    // contact's points (solve_contacts says why).
-    uint32_t passes_ = 0;
+    // contact's points (solve_contacts says why). One count per group of
+    // islands, so that the stiff islands' passes do not move where the
+    // others' start (nor change how they move).
+    uint32_t passes_[2] = {0, 0};
     std::vector<Point> points_;
     std::vector<std::pair<uint32_t, uint32_t>> bouncing_;  // (contact, point) that bounce this step
     Softness soft_{}, soft_static_{};
+    // find_needs' work: per body its island (union-find, the lowest index
+    // the root), its support height (0: not on the ground), whether its
+    // island is stiff; the contacts between moving bodies as lists per body.
+    std::vector<uint32_t> parent_, height_, first_neighbour_, neighbours_, queue_;
+    std::vector<uint8_t> stiff_;
+    std::vector<uint32_t> movers_;  // moving bodies: the normal islands', then the stiff ones'
+    std::size_t normal_movers_ = 0, normal_contacts_ = 0;
 };
 
 // Two directions along the contact plane, perpendicular to the unit normal n
