@@ -14,7 +14,7 @@ small to draw), and the whole floor lies in front. Both axes share one
 scale.
 """
 
-from cascade_fit import FLOOR_SLOPE, texel
+from cascade_fit import FLOOR_SLOPE, check_page, texel
 from svg import BLUE, GREEN, INK, MUTED, RED, Svg
 
 W, H = 1000, 680
@@ -58,6 +58,7 @@ def panel(s: Svg, x0: float, y0: float, bias: float, title: str) -> None:
 
 
 def main() -> None:
+    check_page()
     s = Svg(W, H, "Chapter 22: shadow acne on the floor, and the slope bias that removes it, to scale",
             f"A cut through the near cascade's shadow map, five texels wide, each {TEXEL:.4f} units; the "
             "light shines down the page and the floor, which the light meets at a slope of 0.75, "

@@ -87,3 +87,29 @@ def texel(i):
 # The floor's depth from the light per unit across the map: the light, (-0.6, -1, -0.45) / 1.25,
 # meets the floor's normal at cos 0.8 and sin 0.6, a slope of 0.6 / 0.8.
 FLOOR_SLOPE = 0.75
+
+
+def one_cascade_box_side():
+    """The side of the light box with --cascades 1: one sphere round the whole view."""
+    corners = slice_corners(NEAR, FAR)
+    centre = mul(1 / 8, tuple(map(sum, zip(*corners))))
+    return 2 * max(math.dist(p, centre) for p in corners) * MAP_SIZE / (MAP_SIZE - 1)
+
+
+def check_page() -> None:
+    """book/22_shadows.md quotes these numbers in its prose; a page that no longer agrees
+    with the arithmetic stops the diagram, and so the book's build, with one line."""
+    page = Path(__file__).resolve().parents[1] / "22_shadows.md"
+    text = " ".join(page.read_text(encoding="utf-8").split())
+    quoted = {
+        f"a texel is {texel(0):.4f} units wide": "the near cascade's texel",
+        f"the box is {box_side(0):.2f} units across": "the near cascade's box",
+        f"floor falls about {FLOOR_SLOPE * texel(0):.4f} units": "the floor's fall across a texel",
+        f"{4 * FLOOR_SLOPE * texel(0):.3f} units in the near cascade": "the slope bias 4",
+        f"A texel is now about {one_cascade_box_side() / MAP_SIZE:.2f} units wide (a box "
+        f"{one_cascade_box_side():.0f} units across)": "--cascades 1's texel and box",
+    }
+    for phrase, what in quoted.items():
+        if phrase not in text:
+            sys.exit(f"book/22_shadows.md: {what}: the page should say '{phrase}' "
+                     "(book/diagrams/cascade_fit.py computes it as cascades.hpp does)")
