@@ -1,24 +1,25 @@
 """Chapter 22: why a lit floor shadows itself without a depth bias, to scale.
 
 A cut through the near cascade's shadow map, along the way the floor falls away from the light. The
-map's texels there are 16 / 1024 = 0.0156 units wide (the near cascade's box,
-chapters/22_shadows/cascades.hpp, as 22_cascades.py draws it), and the light
+map's texels there are 15.73 / 1024 = 0.0154 units wide (the near cascade's box,
+chapters/22_shadows/cascades.hpp, computed by cascade_fit.py as 22_cascades.py draws it), and the light
 meets the floor at a slope of 0.75 (its direction (-0.6, -1, -0.45) / 1.25
 makes cos 0.8 and sin 0.6 with the floor's normal), so across one texel the
-floor's depth from the light grows by 0.75 x 0.0156 = 0.0117 units. Left: no
+floor's depth from the light grows by 0.75 x 0.0154 = 0.0115 units. Left: no
 bias; each texel stores the floor's depth at its centre, and the half of the
 texel beyond the centre lies deeper than what is stored: in shadow. Right:
-the slope bias 4 pushes every stored depth 4 x 0.0117 = 0.047 units away
+the slope bias 4 pushes every stored depth 4 x 0.0115 = 0.046 units away
 from the light (the constant term, a few 1e-5 units with D32_SFLOAT, is too
 small to draw), and the whole floor lies in front. Both axes share one
 scale.
 """
 
+from cascade_fit import FLOOR_SLOPE, check_page, texel
 from svg import BLUE, GREEN, INK, MUTED, RED, Svg
 
 W, H = 1000, 680
-TEXEL = 16 / 1024            # units across one texel of the near cascade
-SLOPE = 0.75                 # the floor's depth per unit across the map
+TEXEL = texel(0)             # units across one texel of the near cascade
+SLOPE = FLOOR_SLOPE          # the floor's depth per unit across the map
 BIAS = 4 * SLOPE * TEXEL     # depthBiasSlopeFactor 4 times the depth slope per texel
 TEXELS = 5
 SCALE = 60 / TEXEL           # pixels per unit, the same on both axes
@@ -53,20 +54,21 @@ def panel(s: Svg, x0: float, y0: float, bias: float, title: str) -> None:
     s.line(x0 + width, y0, x0 + width, y0 + (TEXELS * TEXEL * SLOPE + BIAS) * SCALE + 10,
            stroke="#d1d9e0", width=1)
     s.text(x0 + TEXEL * SCALE / 2, y0 + (TEXELS * TEXEL * SLOPE + BIAS) * SCALE + 30,
-           "one texel: 0.0156 units", size=12.5, anchor="middle", fill=MUTED)
+           f"one texel: {TEXEL:.4f} units", size=12.5, anchor="middle", fill=MUTED)
 
 
 def main() -> None:
+    check_page()
     s = Svg(W, H, "Chapter 22: shadow acne on the floor, and the slope bias that removes it, to scale",
-            "A cut through the near cascade's shadow map, five texels wide, each 0.0156 units; the "
+            f"A cut through the near cascade's shadow map, five texels wide, each {TEXEL:.4f} units; the "
             "light shines down the page and the floor, which the light meets at a slope of 0.75, "
-            "goes 0.0117 units deeper across each texel. Left, no bias: each texel stores the "
+            f"goes {SLOPE * TEXEL:.4f} units deeper across each texel. Left, no bias: each texel stores the "
             "floor's depth at its centre (blue), and the half of each texel beyond the centre is "
             "deeper than that, so it is shadowed (red) and the rest is lit (green): bands half a "
-            "texel wide. Right, slope bias 4: every stored depth is pushed 0.047 units further "
+            f"texel wide. Right, slope bias 4: every stored depth is pushed {BIAS:.3f} units further "
             "from the light, below the whole floor under its texel, and the floor is lit.")
     panel(s, 60, 100, 0.0, "No bias: half of every texel shadows itself")
-    panel(s, 560, 100, BIAS, "Slope bias 4: stored 0.047 units deeper")
+    panel(s, 560, 100, BIAS, f"Slope bias 4: stored {BIAS:.3f} units deeper")
     s.lines(60, 330, ["Bands half a texel wide, and the", "3x3 filter blurs them to part-shadow."],
             size=12.5, fill=MUTED)
     y = 560

@@ -7,55 +7,19 @@ far 60, three cascades split by the practical scheme with lambda 0.6 (at 8.5
 and 20.3), and its light along (-0.6, -1, -0.45). It is drawn as the light
 sees it, to scale: in the light's x and y (glm::lookAt's axes), each slice of
 the view projected, its bounding sphere (a circle of the same radius) and the
-square of side 2r that is the cascade's shadow map.
+square of side 2r (and half a texel more each way, as the code makes it) that
+is the cascade's shadow map; book/diagrams/cascade_fit.py does the arithmetic.
 """
 
 import math
 
+from cascade_fit import LIGHT, EYE, MAP_SIZE, box_side, cross, dot, sphere, splits, texel, unit
 from svg import (BLUE, BLUE_FILL, GREEN, GREEN_FILL, GREY, INK, MUTED, ORANGE, ORANGE_FILL,
                  PURPLE, RED, Svg)
 
 W, H = 1000, 720
-SPLITS = [0.1, 8.53, 20.28, 60.0]
+SPLITS = splits()
 COLOURS = [(RED, "#fbe3e1"), (GREEN, GREEN_FILL), (BLUE, BLUE_FILL)]
-EYE = (0.0, 3.0, 8.0)
-LIGHT = (-0.6, -1.0, -0.45)
-FOV_Y, ASPECT = math.radians(50), 4 / 3
-
-
-def add(a, b):
-    return tuple(x + y for x, y in zip(a, b))
-
-
-def mul(k, a):
-    return tuple(k * x for x in a)
-
-
-def dot(a, b):
-    return sum(x * y for x, y in zip(a, b))
-
-
-def cross(a, b):
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-
-
-def unit(a):
-    return mul(1 / math.sqrt(dot(a, a)), a)
-
-
-def slice_corners(d0, d1):
-    """The eight corners of the camera's view between d0 and d1, as slice_corners() makes them."""
-    forward = unit((0.0, -0.25, -1.0))
-    up = unit(cross(cross(forward, (0, 1, 0)), forward))
-    right = unit(cross(forward, up))
-    corners = []
-    for d in (d0, d1):
-        h = d * math.tan(FOV_Y / 2)
-        w = h * ASPECT
-        for sy in (-1, 1):
-            for sx in (-1, 1):
-                corners.append(add(add(add(EYE, mul(d, forward)), mul(sx * w, right)), mul(sy * h, up)))
-    return corners
 
 
 def hull(points):
@@ -77,10 +41,11 @@ def hull(points):
 
 def main() -> None:
     s = Svg(W, H, "Chapter 22: the view split into three cascades, and the passes of one frame",
-            "Top, to scale, as the light sees it: the camera's view split at 8.5 and 20.3 units into "
+            f"Top, to scale, as the light sees it: the camera's view split at {SPLITS[1]:.1f} and {SPLITS[2]:.1f} units into "
             "three slices; around each, its bounding circle and the square of the same width that is "
-            "that cascade's shadow map, 1024 texels a side whatever its size. The near slice's square "
-            "is 16 units wide, the middle one's 34, the far one's 101: fine texels near the eye, "
+            f"that cascade's shadow map, {MAP_SIZE} texels a side whatever its size. The near slice's square "
+            f"is {box_side(0):.1f} units wide, the middle one's {box_side(1):.1f}, the far one's "
+            f"{box_side(2):.1f}: fine texels near the eye, "
             "coarse ones far away. Bottom: each frame draws the scene from the light into each "
             "cascade's layer of one depth image, a barrier from depth writes to fragment shader "
             "reads, then the lit pass, which picks a cascade by distance and compares.")
@@ -92,9 +57,7 @@ def main() -> None:
     ay = cross(ax, f)
     fits = []
     for i in range(3):
-        corners = slice_corners(SPLITS[i], SPLITS[i + 1])
-        centre = mul(1 / 8, tuple(map(sum, zip(*corners))))
-        radius = max(math.dist(p, centre) for p in corners)
+        corners, centre, radius = sphere(i)
         fits.append(([(dot(p, ax), dot(p, ay)) for p in corners], (dot(centre, ax), dot(centre, ay)),
                      radius))
     # Fit every square into the drawing area at the left.
@@ -134,11 +97,11 @@ def main() -> None:
     s.lines(kx, 162, ["Circle: the slice's bounding sphere.",
                       "Dashed square: the light's box around it,",
                       "side 2r: the cascade's shadow map,",
-                      "1024 texels a side."], size=14)
+                      f"{MAP_SIZE} texels a side."], size=14)
     y = 262
     for i, (_, _, radius) in enumerate(fits):
         stroke, _ = COLOURS[i]
-        s.text(kx, y, f"cascade {i}: {2 * radius:.0f} units wide, texel {2 * radius / 1024:.3f}",
+        s.text(kx, y, f"cascade {i}: {box_side(i):.1f} units wide, texel {texel(i):.4f}",
                size=14, bold=True, fill=stroke)
         y += 24
     s.lines(kx, y + 20, ["The square keeps its size as the camera",

@@ -73,6 +73,14 @@
     }
   }
 
+  // A display formula wider than the column scrolls in its own box (style.css);
+  // a phone hides scroll bars, so a box that scrolls is marked, as a wide table is.
+  function markWideMaths() {
+    var boxes = document.querySelectorAll(".math.display");
+    for (var i = 0; i < boxes.length; i++)
+      boxes[i].classList.toggle("overflows", boxes[i].scrollWidth > boxes[i].clientWidth + 1);
+  }
+
   // The maths: each <span class="math"> and <div class="math display"> holds TeX,
   // typeset by KaTeX (katex/katex.min.js, Debian's libjs-katex, loaded before this
   // script). A formula KaTeX cannot parse stays as TeX and is a console error, which
@@ -108,6 +116,9 @@
     });
     markWideTables();
     window.addEventListener("resize", markWideTables);
+    markWideMaths();
+    window.addEventListener("resize", markWideMaths);
+    window.addEventListener("load", markWideMaths);  // once the fonts have their widths
     window.addEventListener("load", markWideTables);
   }
 
