@@ -323,6 +323,39 @@ def draw_async(chart: Chart, ax) -> tuple[str, str]:
     return f"{device}, {size}", measured_on(path)
 
 
+def draw_threads(chart: Chart, ax) -> tuple[str, str]:
+    """Chapter 27: the CPU time to record the frame's draws against the number of threads
+    (the median of each round's median), a bar from the fastest round to the slowest, and
+    the ideal: one thread's time divided by N."""
+    path = chart.paths()[0]
+    times: dict[int, list[float]] = {}
+    for line in path.read_text().splitlines():
+        match = re.match(r"27_threads: recording the draws on (\d+) threads? took ([0-9.]+) ms median", line)
+        if match:
+            times.setdefault(int(match.group(1)), []).append(float(match.group(2)))
+    counts = sorted(times)
+    ms = [statistics.median(times[n]) for n in counts]
+    ax.plot(counts, ms, "-", marker="o", color=BLUE, label="recording, measured", linewidth=2, markersize=5)
+    for n, m in zip(counts, ms):
+        if max(times[n]) > min(times[n]):
+            ax.errorbar([n], [m], yerr=[[m - min(times[n])], [max(times[n]) - m]], fmt="none", ecolor=BLUE,
+                        elinewidth=1.3, capsize=4, capthick=1.3, zorder=3)
+    ax.plot(counts, [ms[0] / n for n in counts], ":", color=GREY, label="one thread's time / N", linewidth=1.5)
+    rounds = max(len(v) for v in times.values())
+    chart.options["notes"] = [
+        f"Each point: the median of {rounds} rounds' medians (200 frames each, 4,097 draws, 1280\u00d7720, "
+        "validation off); the bar runs from the fastest round to the slowest."]
+    ax.set_xscale("log", base=2)
+    ax.set_yscale("log")
+    ax.set_xticks(counts)
+    ax.set_xticklabels([str(n) for n in counts])
+    ax.set_yticks([0.05, 0.1, 0.2, 0.5, 1])
+    ax.set_yticklabels(["0.05", "0.1", "0.2", "0.5", "1"])
+    ax.set_xlabel("recording threads (--threads N)")
+    ax.set_ylabel("CPU time to record the draws (ms, median)")
+    return "NVIDIA H200 machine, 16 CPU cores", measured_on(path)
+
+
 CHARTS = [
     Chart("14_physics_bench.svg", ["physics.jsonl"], draw_physics,
           {"title": "Chapter 14: one physics step against the number of boxes",
@@ -338,6 +371,8 @@ CHARTS = [
                                         "2026-11-27-quiet-19_ndim_gpu-lavapipe.txt",
                                         "2026-11-27-quiet-20_ndim_compute-lavapipe.txt"], draw_ndim,
           {"title": "Chapters 18 to 20: frame time against the number of dimensions"}),
+    Chart("27_threads_h200.svg", ["h200-2026-11-29-gpu-check-27_threads-4ad1492.txt"], draw_threads,
+          {"title": "Chapter 27: recording 4,097 draws on N threads", "budgets": []}),
     Chart("29_async_sweep_h200.svg", ["h200-2026-11-29-29_async_sweep-df79176.txt"], draw_async,
           {"title": "Chapter 29: GPU frame time against the bloom's work, one queue or two"}),
 ]
