@@ -9,9 +9,10 @@ legend, as the book's other charts). Needs python3-matplotlib (and numpy,
 which it brings).
 """
 
-import io
 import sys
 from pathlib import Path
+
+from charts import print_svg, pyplot  # book/diagrams/charts.py
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 from source_constants import constant  # noqa: E402  (book/, above this folder)
@@ -53,25 +54,7 @@ def split_sum(n_dot_v: float, roughness: float) -> tuple[float, float]:
 
 
 def main() -> None:
-    try:
-        import matplotlib
-    except ImportError:
-        sys.exit("the BRDF table chart needs python3-matplotlib (scripts/install-deps.sh installs it)")
-    matplotlib.use("svg")
-    import matplotlib.pyplot as plt
-
-    matplotlib.rcParams.update({
-        "svg.fonttype": "none",          # text stays text
-        "svg.hashsalt": "vulkan-book",   # the same ids every build
-        "font.family": "DejaVu Sans",
-        "font.size": 11,
-        "axes.spines.top": False,
-        "axes.spines.right": False,
-        "axes.grid": True,
-        "grid.color": "#e3e6ea",
-        "axes.edgecolor": "#59636e",
-        "axes.titlesize": 12.5,
-    })
+    plt = pyplot("BRDF table")
     xs = [(i + 0.5) / 64 for i in range(64)]
     figure, ax = plt.subplots(figsize=(8.4, 5.0))
     for roughness, colour in ((0.2, "#0969da"), (0.6, "#8250df"), (1.0, "#cf222e")):
@@ -92,10 +75,7 @@ def main() -> None:
     ax.yaxis.label.set_gid("y-axis-label")
     legend.set_gid("legend")
     figure.tight_layout()
-    out = io.StringIO()
-    figure.savefig(out, format="svg", metadata={"Date": None, "Creator": "book/diagrams/23_brdf_table.py"})
-    plt.close(figure)
-    sys.stdout.write(out.getvalue())
+    print_svg(plt, figure, "book/diagrams/23_brdf_table.py")
 
 
 if __name__ == "__main__":

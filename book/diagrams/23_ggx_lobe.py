@@ -10,10 +10,11 @@ text stays text (the ids title, x-axis-label, y-axis-label and legend, as the
 book's other charts). Needs python3-matplotlib.
 """
 
-import io
 import math
 import sys
 from pathlib import Path
+
+from charts import print_svg, pyplot  # book/diagrams/charts.py
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 from source_constants import constant  # noqa: E402  (book/, above this folder)
@@ -45,25 +46,7 @@ def half_peak_degrees(alpha: float) -> float | None:
 
 
 def main() -> None:
-    try:
-        import matplotlib
-    except ImportError:
-        sys.exit("the GGX lobe chart needs python3-matplotlib (scripts/install-deps.sh installs it)")
-    matplotlib.use("svg")
-    import matplotlib.pyplot as plt
-
-    matplotlib.rcParams.update({
-        "svg.fonttype": "none",          # text stays text
-        "svg.hashsalt": "vulkan-book",   # the same ids every build
-        "font.family": "DejaVu Sans",
-        "font.size": 11,
-        "axes.spines.top": False,
-        "axes.spines.right": False,
-        "axes.grid": True,
-        "grid.color": "#e3e6ea",
-        "axes.edgecolor": "#59636e",
-        "axes.titlesize": 12.5,
-    })
+    plt = pyplot("GGX lobe")
     colours = ("#0969da", "#1a7f37", "#8250df", "#bc4c00", "#cf222e")
     angles = [i * 0.25 for i in range(361)]
     figure, ax = plt.subplots(figsize=(8.4, 5.0))
@@ -88,10 +71,7 @@ def main() -> None:
     ax.yaxis.label.set_gid("y-axis-label")
     legend.set_gid("legend")
     figure.tight_layout()
-    out = io.StringIO()
-    figure.savefig(out, format="svg", metadata={"Date": None, "Creator": "book/diagrams/23_ggx_lobe.py"})
-    plt.close(figure)
-    sys.stdout.write(out.getvalue())
+    print_svg(plt, figure, "book/diagrams/23_ggx_lobe.py")
 
 
 if __name__ == "__main__":

@@ -12,10 +12,11 @@ specular_samples) and the same sky size. Prints the SVG; text stays text.
 Needs python3-matplotlib.
 """
 
-import io
 import math
 import sys
 from pathlib import Path
+
+from charts import print_svg, pyplot  # book/diagrams/charts.py
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 from source_constants import constant  # noqa: E402  (book/, above this folder)
@@ -60,22 +61,10 @@ def samples(roughness: float):
 
 
 def main() -> None:
-    try:
-        import matplotlib
-    except ImportError:
-        sys.exit("the prefilter samples chart needs python3-matplotlib (scripts/install-deps.sh installs it)")
-    matplotlib.use("svg")
-    import matplotlib.pyplot as plt
-
-    matplotlib.rcParams.update({
-        "svg.fonttype": "none",          # text stays text
-        "svg.hashsalt": "vulkan-book",   # the same ids every build
-        "font.family": "DejaVu Sans",
-        "font.size": 11,
-        "axes.titlesize": 12,
-    })
+    plt = pyplot("prefilter samples", plain_axes=False, title_size=12)
+    from matplotlib.patches import Circle
     figure, axes = plt.subplots(1, 2, figsize=(9.6, 5.0), layout="constrained")
-    cmap = matplotlib.colormaps["viridis"]
+    cmap = plt.colormaps["viridis"]
     last = float(constant(ENVIRONMENT_HPP, "sky_levels")) - 1  # the sampler clamps a higher lod to it
     reach = 0.0  # both panels to one scale
     for ax, level in zip(axes, (1, 3)):
@@ -89,7 +78,7 @@ def main() -> None:
         kept = [place(p) + (min(p[3], last),) for p in points if p[2] > 0.0]
         skipped = [place(p) for p in points if p[2] <= 0.0]
         for ring in (15, 30, 60, 90):
-            ax.add_patch(matplotlib.patches.Circle((0, 0), ring / 90.0, fill=False,
+            ax.add_patch(Circle((0, 0), ring / 90.0, fill=False,
                                                    color="#59636e" if ring == 90 else "#d1d9e0",
                                                    linewidth=1.6 if ring == 90 else 1.0))
             ax.text(ring / 90.0 * 0.71 + 0.02, ring / 90.0 * 0.71 + 0.02, f"{ring}°", fontsize=9.5, color="#59636e")
@@ -120,10 +109,7 @@ def main() -> None:
     figure.suptitle("Chapter 23: where the prefilter's samples land, for one texel whose n points at the centre\n"
                     "(the distance from the centre is the angle from n; the dark circle is the horizon)",
                     x=0.01, ha="left", fontsize=12)
-    out = io.StringIO()
-    figure.savefig(out, format="svg", metadata={"Date": None, "Creator": "book/diagrams/23_prefilter_samples.py"})
-    plt.close(figure)
-    sys.stdout.write(out.getvalue())
+    print_svg(plt, figure, "book/diagrams/23_prefilter_samples.py")
 
 
 if __name__ == "__main__":

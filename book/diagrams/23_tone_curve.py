@@ -8,8 +8,8 @@ stays text (the ids title, x-axis-label, y-axis-label and legend, as the
 book's other charts). Needs python3-matplotlib (scripts/install-deps.sh).
 """
 
-import io
-import sys
+
+from charts import print_svg, pyplot  # book/diagrams/charts.py
 
 
 def aces(x: float) -> float:  # the same numbers as aces_narkowicz in pbr.glsl
@@ -18,25 +18,7 @@ def aces(x: float) -> float:  # the same numbers as aces_narkowicz in pbr.glsl
 
 
 def main() -> None:
-    try:
-        import matplotlib
-    except ImportError:
-        sys.exit("the tone curve chart needs python3-matplotlib (scripts/install-deps.sh installs it)")
-    matplotlib.use("svg")
-    import matplotlib.pyplot as plt
-
-    matplotlib.rcParams.update({
-        "svg.fonttype": "none",          # text stays text
-        "svg.hashsalt": "vulkan-book",   # the same ids every build
-        "font.family": "DejaVu Sans",
-        "font.size": 11,
-        "axes.spines.top": False,
-        "axes.spines.right": False,
-        "axes.grid": True,
-        "grid.color": "#e3e6ea",
-        "axes.edgecolor": "#59636e",
-        "axes.titlesize": 12.5,
-    })
+    plt = pyplot("tone curve")
     xs = [2 ** (i / 32) for i in range(-6 * 32, 6 * 32 + 1)]
     figure, ax = plt.subplots(figsize=(8.4, 5.0))
     ax.plot(xs, [aces(x) for x in xs], color="#cf222e", linewidth=2.4,
@@ -60,10 +42,7 @@ def main() -> None:
     ax.yaxis.label.set_gid("y-axis-label")
     legend.set_gid("legend")
     figure.tight_layout()
-    out = io.StringIO()
-    figure.savefig(out, format="svg", metadata={"Date": None, "Creator": "book/diagrams/23_tone_curve.py"})
-    plt.close(figure)
-    sys.stdout.write(out.getvalue())
+    print_svg(plt, figure, "book/diagrams/23_tone_curve.py")
 
 
 if __name__ == "__main__":
