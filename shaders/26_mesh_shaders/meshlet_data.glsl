@@ -13,20 +13,7 @@ layout(push_constant) uniform Push {
 } push;
 // [/push]
 
-struct Vertex {
-    vec4 position;
-    vec4 normal;
-};
-struct Meshlet {
-    vec3 centre;
-    float radius;
-    vec3 cone_axis;
-    float cone_cutoff;
-    uint vertex_offset;
-    uint vertex_count;
-    uint triangle_offset;
-    uint triangle_count;
-};
+#include "meshlets/meshlet.glsl"
 
 layout(std430, set = 0, binding = 0) readonly buffer Vertices { Vertex vertices[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Meshlets { Meshlet meshlets[]; };

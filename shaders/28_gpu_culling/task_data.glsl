@@ -3,20 +3,7 @@
 // and the payload a task workgroup hands its mesh workgroups.
 
 // [task-data]
-struct Meshlet {
-    vec3 centre;
-    float radius;
-    vec3 cone_axis;
-    float cone_cutoff;
-    uint vertex_offset;
-    uint vertex_count;
-    uint triangle_offset;
-    uint triangle_count;
-};
-struct Vertex {
-    vec4 position;
-    vec4 normal;
-};
+#include "meshlets/meshlet.glsl"
 layout(std430, set = 1, binding = 0) readonly buffer Meshlets { Meshlet meshlets[]; };
 layout(std430, set = 1, binding = 1) readonly buffer MeshletVertices { uint meshlet_vertices[]; };
 layout(std430, set = 1, binding = 2) readonly buffer MeshletTriangles { uint meshlet_triangles[]; };
