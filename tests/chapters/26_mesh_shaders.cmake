@@ -62,6 +62,18 @@ vkt_chapter_test(chapter.26_mesh_shaders.other_model_no_culling 26_mesh_shaders
   SAME_AS chapter.26_mesh_shaders.other_model
   ARGS ${headless} --model ${PROJECT_SOURCE_DIR}/assets/gltf/scene.gltf --cull off
   EXPECT "culled 0 of 32 meshlets")
+# --detail 1 (detail.hpp): each triangle split into four. Its 46,448 edges
+# each give one midpoint, shared by the triangles on both sides (a midpoint
+# per triangle corner would make 92,160). The three draws, one picture.
+vkt_chapter_test(chapter.26_mesh_shaders.detail_1 26_mesh_shaders ${VKT_26_PIXEL}
+  ARGS ${headless} --detail 1
+  EXPECT "knot.glb: 122880 triangles, 62177 vertices -> [0-9]+ meshlets" "submitted [0-9]+ of 122880 triangles")
+vkt_chapter_test(chapter.26_mesh_shaders.detail_1_no_culling 26_mesh_shaders
+  SAME_AS chapter.26_mesh_shaders.detail_1 ARGS ${headless} --detail 1 --cull off
+  EXPECT "culled 0 of [0-9]+ meshlets .*, submitted 122880 of 122880 triangles")
+vkt_chapter_test(chapter.26_mesh_shaders.detail_1_indirect 26_mesh_shaders
+  SAME_AS chapter.26_mesh_shaders.detail_1 ARGS ${headless} --detail 1 --draw indirect
+  EXPECT "submitted 122880 triangles \\(the whole model\\)")
 # The triangle and vertex counts above, checked against the files' own
 # accessor counts (tests/chapters/gltf_counts.py reads only the JSON, walks
 # the node tree, counts a mesh once per node using it), and the meshlet count
@@ -89,7 +101,7 @@ vkt_chapter_test(chapter.26_mesh_shaders.benchmark 26_mesh_shaders
   EXPECT "\"gpu_scopes_ms\": \\{\"draw\": \\{\"min\": [0-9.]+, \"median\": [0-9.]+, \"p95\": [0-9.]+")
 vkt_chapter_test(chapter.26_mesh_shaders.help 26_mesh_shaders EXIT 0 ARGS --help
   EXPECT "usage: 26_mesh_shaders" "--draw mesh\\|indirect" "--view lit\\|meshlets"
-         "--cull on\\|off" "--turn DEGREES" "--model FILE")
+         "--cull on\\|off" "--turn DEGREES" "--model FILE" "--detail N")
 
 # Bad input: the command line (exit 2).
 vkt_chapter_test(bad_input.26_mesh_shaders.draw 26_mesh_shaders EXIT 2 ARGS --draw vertex
@@ -100,6 +112,8 @@ vkt_chapter_test(bad_input.26_mesh_shaders.cull 26_mesh_shaders EXIT 2 ARGS --cu
   EXPECT "--cull wants one of on, off, not 'maybe'")
 vkt_chapter_test(bad_input.26_mesh_shaders.turn 26_mesh_shaders EXIT 2 ARGS --turn 181
   EXPECT "--turn wants a number from -180 to 180, not '181'")
+vkt_chapter_test(bad_input.26_mesh_shaders.detail 26_mesh_shaders EXIT 2 ARGS --detail 5
+  EXPECT "--detail wants a whole number from 0 to 4, not '5'")
 vkt_chapter_test(bad_input.26_mesh_shaders.meshlets_indirect 26_mesh_shaders EXIT 2
   ARGS --draw indirect --view meshlets EXPECT "--view meshlets needs --draw mesh")
 # Bad input: a model that is missing or not glTF (exit 1, one line).

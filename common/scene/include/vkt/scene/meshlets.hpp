@@ -82,7 +82,6 @@ inline void compute_bounds(Meshlet& m, const Meshlets& out, std::span<const glm:
     if (min_cos > 0.0f) m.cone_cutoff = std::sqrt(std::max(0.0f, 1.0f - min_cos * min_cos));
 }
 
-// [build]
 // Greedy growth: a meshlet starts at the first triangle not yet taken and
 // adds, one at a time, the untaken triangle touching its vertices that needs
 // the fewest new vertices (ties: the one nearest the meshlet's middle, which
@@ -127,6 +126,9 @@ inline Meshlets build_meshlets(std::span<const glm::vec3> positions,
         glm::vec3 middle(0.0f);
         uint32_t next_triangle = seed;
         while (next_triangle != none) {
+            // [remap]
+            // The triangle joins: each corner new to the meshlet gets the
+            // next local index (local[v]: global vertex v's, -1 if none yet).
             uint32_t packed = 0;
             for (uint32_t k = 0; k < 3; ++k) {
                 const uint32_t v = indices[3 * next_triangle + k];
@@ -138,9 +140,11 @@ inline Meshlets build_meshlets(std::span<const glm::vec3> positions,
                 packed |= uint32_t(local[v]) << (8 * k);
                 unlink(3 * next_triangle + k);
             }
+            // [/remap]
             out.triangles.push_back(packed);
             taken[next_triangle] = true;
-            if (++m.triangle_count == max_triangles) break;
+            // [close]
+            if (++m.triangle_count == max_triangles) break;  // full: close it
             // The best neighbour: fewest new vertices, then nearest the middle.
             next_triangle = none;
             uint32_t best_new = 4;
@@ -166,6 +170,9 @@ inline Meshlets build_meshlets(std::span<const glm::vec3> positions,
                     }
                 }
             }
+            // Still none (no untaken neighbour, or each would bring too many
+            // vertices): the loop ends and the meshlet is closed.
+            // [/close]
         }
         for (uint32_t i = 0; i < m.vertex_count; ++i) local[out.vertices[m.vertex_offset + i]] = -1;
         compute_bounds(m, out, positions);
@@ -173,6 +180,5 @@ inline Meshlets build_meshlets(std::span<const glm::vec3> positions,
     }
     return out;
 }
-// [/build]
 
 }  // namespace vkt
