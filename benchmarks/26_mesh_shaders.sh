@@ -9,20 +9,20 @@
 # command), each preceded by a line naming its arguments and followed by the
 # chapter's line of what it submitted.
 #   benchmarks/26_mesh_shaders.sh [BIN_DIR] [WxH] [FRAMES] [MODEL]
-# DETAIL=N passes --detail N (each triangle split into four, N times: the
-# dense case, DETAIL=3 is 1,966,080 triangles of the knot); TURNS="0 30"
-# the gazes; ROUNDS=3 the rounds.
+# TURNS="0 30" the gazes, ROUNDS=3 the rounds. The dense case, a knot of
+# 1,966,080 triangles (book/perf_26_mesh_shaders.md):
+#   scripts/make_knot_model.py --rings 2560 --sides 384 --out knot_dense.glb
+#   benchmarks/26_mesh_shaders.sh build/release/bin 1920x1080 300 knot_dense.glb
 set -euo pipefail
 bin=${1:-build/release/bin}
 size=${2:-1920x1080}
 frames=${3:-300}
 model=()
 [ $# -ge 4 ] && model=(--model "$4")
-model+=(--detail "${DETAIL:-0}")
 for round in $(seq "${ROUNDS:-3}"); do
   for turn in ${TURNS:-0 30}; do
     for draw in "--draw indirect" "--draw mesh --cull off" "--draw mesh --cull on"; do
-      echo "# round $round: 26_mesh_shaders $draw --turn $turn --frames $frames --detail ${DETAIL:-0}"
+      echo "# round $round: 26_mesh_shaders $draw --turn $turn --frames $frames"
       # shellcheck disable=SC2086  # $draw is two or four words
       "$bin/26_mesh_shaders" --headless --no-validation --size "$size" --benchmark \
         --frames "$frames" $draw --turn "$turn" "${model[@]}" 2>"${TMPDIR:-/tmp}/26_bench.err"

@@ -8,6 +8,11 @@ Standard library only (json, math, struct), deterministic:
 
     python3 scripts/make_knot_model.py            # writes assets/gltf/knot.glb
     python3 scripts/make_knot_model.py --check    # fails if the file differs
+
+The same knot, finer, for book/perf_26_mesh_shaders.md's dense case (2560
+rings of 384: 1,966,080 triangles, 32-bit indices past 65,535 vertices):
+
+    python3 scripts/make_knot_model.py --rings 2560 --sides 384 --out knot_dense.glb
 """
 
 import json
@@ -44,7 +49,7 @@ def unit(a):
     return tuple(x / length for x in a)
 
 
-def knot():
+def knot(RINGS=RINGS, SIDES=SIDES):
     positions, normals, indices = [], [], []
     step = 1e-4
     for i in range(RINGS + 1):
@@ -75,11 +80,12 @@ def knot():
     return positions, normals, indices
 
 
-def glb():
-    positions, normals, indices = knot()
+def glb(rings=RINGS, sides=SIDES):
+    positions, normals, indices = knot(rings, sides)
+    wide = len(positions) > 65536  # 32-bit indices only where 16 bits cannot
     vertex_bytes = b"".join(struct.pack("<3f", *p) for p in positions)
     normal_bytes = b"".join(struct.pack("<3f", *n) for n in normals)
-    index_bytes = struct.pack("<%dH" % len(indices), *indices)
+    index_bytes = struct.pack("<%d%s" % (len(indices), "I" if wide else "H"), *indices)
     binary = vertex_bytes + normal_bytes + index_bytes
     binary += b"\0" * (-len(binary) % 4)
     count = len(positions)
@@ -105,7 +111,7 @@ def glb():
             {"bufferView": 0, "componentType": 5126, "count": count, "type": "VEC3",
              "min": [round(x, 6) for x in lo], "max": [round(x, 6) for x in hi]},
             {"bufferView": 1, "componentType": 5126, "count": count, "type": "VEC3"},
-            {"bufferView": 2, "componentType": 5123, "count": len(indices), "type": "SCALAR"},
+            {"bufferView": 2, "componentType": 5125 if wide else 5123, "count": len(indices), "type": "SCALAR"},
         ],
     }
     text = json.dumps(document, separators=(",", ":")).encode()
@@ -115,11 +121,33 @@ def glb():
     return struct.pack("<III", 0x46546C67, 2, 12 + len(body)) + body
 
 
+def whole(name, text, lo, hi):
+    """A command-line count, or exit 1 saying what was wanted."""
+    if not text.isdigit() or not lo <= int(text) <= hi:
+        sys.exit("make_knot_model.py: %s wants a whole number from %d to %d, not '%s'" %
+                 (name, lo, hi, text))
+    return int(text)
+
+
 def main():
     root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
     path = os.path.join(root, "assets", "gltf", "knot.glb")
-    data = glb()
-    if "--check" in sys.argv[1:]:
+    rings, sides, args = RINGS, SIDES, sys.argv[1:]
+    while args and args[0] in ("--rings", "--sides", "--out"):
+        if len(args) < 2:
+            sys.exit("make_knot_model.py: %s wants a value" % args[0])
+        if args[0] == "--rings":
+            rings = whole("--rings", args[1], 3, 4096)
+        elif args[0] == "--sides":
+            sides = whole("--sides", args[1], 3, 1024)
+        else:
+            path = args[1]
+        args = args[2:]
+    if args not in ([], ["--check"]):
+        sys.exit("make_knot_model.py: unknown argument '%s' (--rings N, --sides N, --out FILE, "
+                 "--check)" % args[0])
+    data = glb(rings, sides)
+    if args == ["--check"]:
         with open(path, "rb") as f:
             if f.read() != data:
                 sys.exit(path + " differs from what scripts/make_knot_model.py makes")

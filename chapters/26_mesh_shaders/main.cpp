@@ -10,7 +10,6 @@
 // --draw indirect draws the same model chapter 15's way, for the comparison
 // the book measures; --view meshlets colours each meshlet.
 
-#include "detail.hpp"
 #include "mesh_limits.hpp"
 #include "meshlets.hpp"
 
@@ -88,7 +87,6 @@ public:
         view_ = context.options.text("--view") == "meshlets" ? 1 : 0;
         cull_ = context.options.text("--cull") == "on" ? 1 : 0;
         turn_ = float(context.options.number("--turn"));
-        const int64_t detail = context.options.integer("--detail");
 
         // The model, every draw's vertices moved into the world: one mesh.
         const std::string path = context.options.has("--model")
@@ -111,9 +109,6 @@ public:
             drawn_vertices += scene.primitives[draw.primitive].vertex_count;
             drawn_indices += scene.primitives[draw.primitive].index_count;
         }
-        // Each --detail level: four times the indices, at most one vertex more per index.
-        for (int64_t level = 0; level < detail; ++level)
-            drawn_vertices += drawn_indices, drawn_indices *= 4;
         budget.charge(drawn_vertices * (3 * sizeof(GpuVertex) + sizeof(glm::vec3)) +
                           drawn_indices * (3 * sizeof(uint32_t) + 40),
                       shown + ": its draws flattened into one mesh");
@@ -135,8 +130,6 @@ public:
                 indices.push_back(base + scene.indices[primitive.first_index + i] -
                                   primitive.first_vertex);
         }
-        for (int64_t level = 0; level < detail; ++level)
-            ch26::subdivide(vertices, positions, indices);  // detail.hpp
         bounds_lo_ = scene.bounds_min;
         bounds_hi_ = scene.bounds_max;
         base_colour_ =
@@ -425,13 +418,6 @@ int main(int argc, char** argv) {
          .type = vkt::OptionType::text,
          .value_name = "FILE",
          .help = "a glTF 2.0 file, .gltf or .glb (default: assets/gltf/knot.glb)"},
-        {.name = "--detail",
-         .type = vkt::OptionType::integer,
-         .value_name = "N",
-         .help = "split each triangle into four, N times (4^N times the triangles)",
-         .default_value = "0",
-         .min = 0,
-         .max = 4},
         vkt::max_memory_option(),
     };
     spec.check_options = [](const vkt::Options& options) {
