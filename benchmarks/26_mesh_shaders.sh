@@ -11,7 +11,7 @@
 #   benchmarks/26_mesh_shaders.sh [BIN_DIR] [WxH] [FRAMES] [MODEL]
 # TURNS="0 30" the gazes, ROUNDS=3 the rounds. The dense case, a knot of
 # 1,966,080 triangles (book/perf_26_mesh_shaders.md):
-#   scripts/make_knot_model.py --rings 2560 --sides 384 --out knot_dense.glb
+#   python3 scripts/make_knot_model.py --rings 2560 --sides 384 --out knot_dense.glb
 #   benchmarks/26_mesh_shaders.sh build/release/bin 1920x1080 300 knot_dense.glb
 set -euo pipefail
 bin=${1:-build/release/bin}
