@@ -12,7 +12,7 @@ makes the frame from dFdx and dFdy, then the lines that read the texel and
 turn it), which this script reads and runs on small vector types that behave
 like GLSL's. dFdx and dFdy stand for e1 and e2 and their (du, dv): the
 formula only needs two steps across the triangle, and e1, e2 turn
-counter-clockwise round N, as the page says they must. If the shader's lines
+counter-clockwise round N, so the formula's A is positive (the page says why that matters). If the shader's lines
 change, the figure changes with them; if they stop being GLSL this script can
 run, the book's build stops with one line naming the statement.
 
@@ -107,7 +107,8 @@ def normalize(a):
 
 GLSL = {
     "dot": dot, "cross": cross, "normalize": normalize, "max": max, "mat3": Mat3,
-    "inversesqrt": lambda x: 1 / math.sqrt(x),
+    "inversesqrt": lambda x: 1 / math.sqrt(x), "sign": lambda x: float((x > 0) - (x < 0)),
+    "abs": abs, "length": lambda a: math.sqrt(dot(a, a)),
     "dFdx": lambda v: v.steps[0], "dFdy": lambda v: v.steps[1],
     "texture": lambda sampler, uv: Vec(*(c / 255 for c in TEXEL), 1.0), "normal_map": None,
 }
@@ -194,7 +195,7 @@ def position_panel(s, x, y, w, e1, e2):
 
 def uv_panel(s, x, y, w, duv1, duv2):
     s.text(x, y, "2. The same triangle in UV space", size=13, bold=True)
-    side = min(w - 40, 170)
+    side = min(w - 90, 200)
     left, top = x + 26, y + 22
     s.rect(left, top, side, side, fill="#ffffff", stroke=GREY, width=1)
     for f in (0.25, 0.5, 0.75):
@@ -220,7 +221,8 @@ def uv_panel(s, x, y, w, duv1, duv2):
     return ty + 2 * 12 * 1.3
 
 
-def frame_panel(s, x, y, w, t, b, m, result):
+def frame_panel(s, x, y, w, t, b, m, result, text_at=None):
+    """The frame on the triangle; its numbers below it, or at text_at (x, y) beside it."""
     s.text(x, y, "3. The frame, and one texel in it", size=13, bold=True)
     k = w / 5.2
     ox, oy = x + 0.5 * k, y + 30 + 2.6 * k
@@ -247,7 +249,7 @@ def frame_panel(s, x, y, w, t, b, m, result):
                                     (nvec, "N", BLUE, -8, 0), (result, "n'", PURPLE, 6, -2)):
         px, py = tip(v)
         s.text(px + dx, py + dy, name, size=13, bold=True, fill=colour, anchor="end" if dx < 0 else "start")
-    ty = oy + 34
+    tx, ty = text_at or (x, oy + 34)
     rows = [(f"T = {fmt(t)}: where u grows", RED),
             (f"B = {fmt(b)}: where v falls (image up)", GREEN),
             (f"N = {fmt(nvec)}", BLUE),
@@ -256,8 +258,8 @@ def frame_panel(s, x, y, w, t, b, m, result):
             ("n' = normalize(x T + y B + z N)", PURPLE),
             (f"   = {fmt(result)}", PURPLE)]
     for i, (row, colour) in enumerate(rows):
-        s.text(x, ty + i * 12 * 1.3, row, size=12, fill=colour)
-    return ty + len(rows) * 12 * 1.3
+        s.text(tx, ty + i * 12 * 1.3, row, size=12, fill=colour)
+    return max(ty + len(rows) * 12 * 1.3, oy + 20)
 
 
 def main() -> None:
@@ -283,14 +285,13 @@ def main() -> None:
                              "dFdy standing for the steps along e1 and e2."], size=11.5, fill=MUTED)
         s.height = y + 16 + 3 * 11.5 * 1.3 + 4
     else:
-        w = 300
-        s = Svg(1000, 600, title, desc)
+        w = 340
+        s = Svg(760, 900, title, desc)
         s.text(20, 26, "The tangent frame, made from a triangle's edges and its UVs", size=15, bold=True)
-        ys = [position_panel(s, 20, 60, w, e1, e2), uv_panel(s, 355, 60, w, duv1, duv2),
-              frame_panel(s, 680, 60, w, t, b, m, result)]
-        y = max(ys) + 20
-        s.lines(20, y, foot, size=12, fill=MUTED)
-        s.height = y + 2 * 12 * 1.3
+        y = max(position_panel(s, 20, 60, w, e1, e2), uv_panel(s, 400, 60, w, duv1, duv2))
+        y = frame_panel(s, 20, y + 40, w, t, b, m, result, text_at=(400, y + 40 + 80))
+        s.lines(20, y + 24, foot, size=12, fill=MUTED)
+        s.height = y + 24 + 2 * 12 * 1.3
     s.write()
 
 
