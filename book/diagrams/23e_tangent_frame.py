@@ -7,14 +7,10 @@ out, T, B and N drawn on the surface, with one normal-map texel's (x, y, z)
 turned into a direction in that frame.
 
 The numbers are not typed here: T, B and the texel's normal are computed by the
-very lines of shaders/23_materials/surface.glsl ([normal-map]: the branch that
-makes the frame from dFdx and dFdy, then the lines that read the texel and
-turn it), which this script reads and runs on small vector types that behave
-like GLSL's. dFdx and dFdy stand for e1 and e2 and their (du, dv): the
-formula only needs two steps across the triangle, and e1, e2 turn
-counter-clockwise round N, so the formula's A is positive (the page says why that matters). If the shader's lines
-change, the figure changes with them; if they stop being GLSL this script can
-run, the book's build stops with one line naming the statement.
+very lines of shaders/23_materials/surface.glsl (tangent_frame.py reads and runs
+them), with dFdx and dFdy standing for e1 and e2 and their (du, dv). e1 and e2
+turn counter-clockwise round N, so the formula's A is positive (the page says
+why that matters).
 
 With VKT_DIAGRAM_LAYOUT=narrow (the builder asks for it, for phones) the three
 panels stand one above the other, 400 units wide.
@@ -22,137 +18,16 @@ panels stand one above the other, 400 units wide.
 
 from __future__ import annotations
 
-import math
 import os
-import re
-from pathlib import Path
 
 from svg import BLUE, GREEN, GREY, GREY_FILL, INK, MUTED, ORANGE, PURPLE, RED, Svg
-
-SHADER = Path(__file__).resolve().parents[2] / "shaders" / "23_materials" / "surface.glsl"
-WHERE = "shaders/23_materials/surface.glsl [normal-map]"
+from tangent_frame import Vec, shader_frame
 
 # The example: a triangle in the plane z = 0 (its normal +z), its UVs, and one texel.
 P = [(0.0, 0.0, 0.0), (4.0, 1.0, 0.0), (1.0, 3.0, 0.0)]
 UV = [(0.10, 0.85), (0.90, 0.65), (0.25, 0.15)]
 NORMAL = (0.0, 0.0, 1.0)
 TEXEL = (215, 150, 205)  # the normal map's RGB at the point, 0..255
-
-
-# ---- GLSL's vectors, enough of them to run the shader's lines -------------------------
-
-class Vec:
-    def __init__(self, *c):
-        self.c = tuple(float(x) for x in c)
-
-    def __add__(self, o):
-        return Vec(*(a + b for a, b in zip(self.c, _v(o, len(self.c)).c)))
-
-    __radd__ = __add__
-
-    def __sub__(self, o):
-        return Vec(*(a - b for a, b in zip(self.c, _v(o, len(self.c)).c)))
-
-    def __rsub__(self, o):
-        return _v(o, len(self.c)) - self
-
-    def __mul__(self, o):
-        return Vec(*(a * b for a, b in zip(self.c, _v(o, len(self.c)).c)))
-
-    __rmul__ = __mul__
-
-    def __neg__(self):
-        return Vec(*(-a for a in self.c))
-
-    def __getattr__(self, name):
-        if name and set(name) <= set("xyzw"):
-            picked = tuple(self.c["xyzw".index(ch)] for ch in name)
-            return picked[0] if len(picked) == 1 else Vec(*picked)
-        raise AttributeError(name)
-
-
-def _v(o, n):
-    return o if isinstance(o, Vec) else Vec(*([o] * n))
-
-
-class Mat3:
-    """mat3(a, b, c): the columns a, b, c."""
-
-    def __init__(self, a, b, c):
-        self.cols = (a, b, c)
-
-    def __mul__(self, m):
-        return self.cols[0] * m.x + self.cols[1] * m.y + self.cols[2] * m.z
-
-
-class Varying:
-    """A value interpolated across the triangle: dFdx and dFdy give its two steps."""
-
-    def __init__(self, step1, step2):
-        self.steps = (step1, step2)
-
-
-def dot(a, b):
-    return sum(x * y for x, y in zip(a.c, b.c))
-
-
-def cross(a, b):
-    (a0, a1, a2), (b0, b1, b2) = a.c, b.c
-    return Vec(a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0)
-
-
-def normalize(a):
-    return a * (1 / math.sqrt(dot(a, a)))
-
-
-GLSL = {
-    "dot": dot, "cross": cross, "normalize": normalize, "max": max, "mat3": Mat3,
-    "inversesqrt": lambda x: 1 / math.sqrt(x), "sign": lambda x: float((x > 0) - (x < 0)),
-    "abs": abs, "length": lambda a: math.sqrt(dot(a, a)),
-    "dFdx": lambda v: v.steps[0], "dFdy": lambda v: v.steps[1],
-    "texture": lambda sampler, uv: Vec(*(c / 255 for c in TEXEL), 1.0), "normal_map": None,
-}
-
-
-def statements(code: str) -> list[str]:
-    """The shader's statements, comments dropped, one declaration per name."""
-    code = re.sub(r"//[^\n]*", "", code)
-    out = []
-    for statement in (s.strip() for s in code.split(";")):
-        declared = re.match(r"(?:vec[234]|float|mat3)\s+(.*)", statement, re.S)
-        if not declared:
-            out.append(" ".join(statement.split()))
-            continue
-        depth, start, body = 0, 0, declared.group(1)
-        for i, ch in enumerate(body + ","):  # split at the commas outside brackets
-            depth += ch in "(" and 1 or ch in ")" and -1 or 0
-            if ch == "," and depth == 0:
-                out.append(" ".join(body[start:i].split()))
-                start = i + 1
-    return [s for s in out if s]
-
-
-def shader_frame():
-    """Runs the shader's own lines on the example: T, B, the texel's m and the normal."""
-    text = SHADER.read_text(encoding="utf-8")
-    region = re.search(r"// \[normal-map\]\n(.*?)// \[/normal-map\]", text, re.S)
-    made = region and re.search(r"\} else \{\n(.*?)\n    \}\n(.*?)return (.*?);", region.group(1), re.S)
-    if not made:
-        raise SystemExit(f"{WHERE}: no `}} else {{ ... }}` branch followed by a `return`; "
-                         "redraw book/diagrams/23e_tangent_frame.py")
-    e1, e2 = (Vec(*(b - a for a, b in zip(P[0], P[i]))) for i in (1, 2))
-    duv1, duv2 = (Vec(*(b - a for a, b in zip(UV[0], UV[i]))) for i in (1, 2))
-    scope = dict(GLSL, world=Varying(e1, e2), uv=Varying(duv1, duv2), n=Vec(*NORMAL))
-    for statement in statements(made.group(1)) + statements(made.group(2)):
-        if "draw." in statement:  # the push constants' factors: 1 in this example
-            continue
-        try:
-            exec(statement, {}, scope)
-        except Exception as error:  # noqa: BLE001  (any failure is one line for the build)
-            raise SystemExit(f"{WHERE}: book/diagrams/23e_tangent_frame.py cannot run `{statement}` "
-                             f"({error}); redraw the figure") from None
-    result = eval(made.group(3), {}, scope)
-    return e1, e2, duv1, duv2, scope["t"], scope["b"], scope["m"], result
 
 
 # ---- drawing --------------------------------------------------------------------------
@@ -263,7 +138,8 @@ def frame_panel(s, x, y, w, t, b, m, result, text_at=None):
 
 
 def main() -> None:
-    e1, e2, duv1, duv2, t, b, m, result = shader_frame()
+    e1, e2, duv1, duv2, t, b, m, result = shader_frame(P, UV, NORMAL, TEXEL,
+                                                       "book/diagrams/23e_tangent_frame.py")
     narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
     title = "Chapter 23e: the tangent frame made from a triangle's edges and its texture coordinates"
     desc = (f"A triangle with corners P0, P1, P2 in the plane z = 0; its edges e1 = {fmt(e1)} and "
