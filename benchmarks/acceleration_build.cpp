@@ -439,10 +439,9 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "as_bench: %s\n", e.what());
         return 1;
     }
-    if (messages && (messages->warnings || messages->errors)) {
-        std::fprintf(stderr, "as_bench: the validation layer reported %u warning(s), %u error(s)\n",
-                     messages->warnings.load(), messages->errors.load());
-        return 1;
-    }
-    return 0;
+    if (!validation) return 0;
+    // The chapters' closing line, which the tests look for.
+    const uint32_t warnings = messages->warnings, errors = messages->errors;
+    std::fprintf(stderr, "as_bench: validation: %u warnings, %u errors\n", warnings, errors);
+    return warnings + errors > 0 ? 1 : 0;
 }
