@@ -113,3 +113,30 @@ vkt_chapter_test(chapter.24_ray_queries.boxes 24_ray_queries GOLDEN_FILE 24_ray_
   ARGS ${headless} --view boxes EXPECT "boxes drawn: orange, each bottom level's bounds")
 vkt_chapter_test(bad_input.24_ray_queries.bad_view 24_ray_queries EXIT 2 ARGS --view tree
   EXPECT "--view wants one of scene, boxes, not 'tree'")
+
+# The acceleration-structure benchmark (as_bench, benchmarks/acceleration_build.cpp),
+# briefly, with validation on, so that it cannot rot: chapter 24's bottom
+# levels and a small dense sphere built, their compacted sizes queried and
+# copied, and the top level rebuilt and refitted at two instance counts.
+vkt_chapter_test(chapter.24_ray_queries.as_bench as_bench
+  ARGS --validation --rounds 2 --builds 3 --instances 19,300 --dense 64,364
+  EXPECT "as_bench: .*validation on, 2 rounds, 3 top-level builds per round"
+         "chapter 24's build_bottom_levels: 4 bottom levels .* KiB built, .* KiB compacted"
+         "blas torus 48x16 +1536 triangles: build [0-9.]+ ms"
+         "blas sphere 64x32 \\(16-bit\\) +3968 triangles"
+         "blas sphere 364x182 \\(32-bit\\) +131768 triangles: build [0-9.]+ ms .* compacting copy [0-9.]+ ms"
+         "tlas +19 instances: rebuild [0-9.]+ ms .* update [0-9.]+ ms"
+         "tlas +300 instances: rebuild")
+# It needs VK_KHR_acceleration_structure (not ray queries): without it, one
+# line naming it and exit status 1; a bad list, exit status 2.
+vkt_chapter_test(bad_input.24_ray_queries.as_bench_no_acceleration as_bench EXIT 1
+  ARGS --rounds 1 ENV VKT_HIDE_FEATURES=VK_KHR_acceleration_structure
+  EXPECT "as_bench: no Vulkan device can run this chapter; .* lacks the extension VK_KHR_acceleration_structure")
+vkt_chapter_test(bad_input.24_ray_queries.as_bench_bad_instances as_bench EXIT 2
+  ARGS --instances 19,,100
+  EXPECT "--instances wants whole numbers from 1 to 1000000 separated by commas, not '19,,100'")
+# The build-size query needs a ray feature enabled (the ray-tracing pipeline's
+# or ray queries'): a device with neither is named, exit status 1.
+vkt_chapter_test(bad_input.24_ray_queries.as_bench_no_tracer as_bench EXIT 1
+  ARGS --rounds 1 ENV VKT_HIDE_FEATURES=VK_KHR_ray_tracing_pipeline,VK_KHR_ray_query
+  EXPECT "as_bench: llvmpipe.* lacks both VK_KHR_ray_tracing_pipeline and VK_KHR_ray_query")
