@@ -112,6 +112,7 @@ public:
     // [/background]
 
 private:
+    // [precompute-step]
     // One step: `pipeline` reads `source` (none for the sky and the table)
     // and writes `target`, one invocation per texel of a size x size face,
     // `faces` faces.
@@ -130,8 +131,8 @@ private:
         const auto groups = uint32_t(vkt::dispatch_count(size, 8));
         vkCmdDispatch(cmd, groups, groups, faces);
     }
+    // [/precompute-step]
 
-    // [precompute]
     void precompute(glm::vec3 sun, bool furnace) {
         vkt::GpuTimer timer(gpu_.physical, gpu_.device, gpu_.queue_family, 1);
         const VkImage images[] = {sky_.image.image, irradiance_.image.image, specular_.image.image,
@@ -148,6 +149,7 @@ private:
                                    VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, 0,
                                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                    VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+            // [precompute]
             // Storage writes, then the next dispatch's sampled reads.
             const auto written = [&] {
                 vkt::memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -166,6 +168,7 @@ private:
                 }
                 written();
             }
+            // [/precompute]
             // The three images read the whole sky and not each other: no
             // barrier between them.
             {
@@ -201,7 +204,6 @@ private:
         timer.collect(0);
         report(timer);
     }
-    // [/precompute]
 
     // What the start-up cost, in GPU time (timestamps), where the queue has them.
     static void report(const vkt::GpuTimer& timer) {

@@ -111,9 +111,6 @@ public:
                                      frame_buffer_.buffer, 0, sizeof(FrameBlock));
         hdr_sampler_ = vkt::create_sampler(gpu_.device, 0.0f);  // read by texelFetch only
 
-        // [scene-pipeline]
-        // The scene pass draws into the HDR image: its colour format is
-        // hdr_format, not the _SRGB target's.
         const VkVertexInputBindingDescription binding{0, sizeof(vkt::GltfVertex),
                                                       VK_VERTEX_INPUT_RATE_VERTEX};
         const VkVertexInputAttributeDescription attributes[] = {
@@ -134,6 +131,9 @@ public:
         const vkt::ShaderModule fragment =
             vkt::load_shader(gpu_.device, context.chapter, ibl_ ? "scene_ibl.frag" : "scene.frag");
         depth_format_ = vkt::choose_depth_format(gpu_.physical);
+        // [scene-pipeline]
+        // The scene pass draws into the HDR image: its colour format is
+        // hdr_format, not the _SRGB target's.
         scene_pipeline_ = vkt::create_graphics_pipeline(
             gpu_.device, {.vertex = vertex,
                           .fragment = fragment,
@@ -249,6 +249,7 @@ public:
             auto scope = frame.gpu_scope("scene");
             vkt::begin_rendering(cmd, hdr_.view, frame.extent, {{sky.r, sky.g, sky.b, 1.0f}},
                                  depth_.view);
+            // [/scene-pass]
             vkt::set_viewport_and_scissor(cmd, frame.extent);
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, scene_layout_, 0, 1,
                                     &frame_set_, 0, nullptr);
@@ -280,7 +281,6 @@ public:
             }
             vkCmdEndRendering(cmd);
         }
-        // [/scene-pass]
 
         // [tonemap-pass]
         // Colour writes to shader reads: the tone-mapping pass (and the

@@ -63,7 +63,6 @@ inline std::optional<glm::vec3> hit(const glm::mat4& world_from_clip, VkExtent2D
     return grid::eye + d * (-b - std::sqrt(b * b - c));
 }
 
-// [verify]
 inline void check(const std::string& which, const std::vector<glm::vec3>& hdr, VkExtent2D extent,
                   bool furnace) {
     const glm::mat4 clip = grid::clip_from_world(float(extent.width) / float(extent.height));
@@ -123,7 +122,6 @@ inline void check(const std::string& which, const std::vector<glm::vec3>& hdr, V
                  "difference %.0f%% of the tolerance\n",
                  points, double(100.0f * worst));
 }
-// [/verify]
 
 // [verify-lut]
 // --verify lut: the GPU's BRDF table (size x size texels, `samples` per

@@ -120,6 +120,7 @@ Overlay::Overlay(const Context& context)
     io.LogFilename = nullptr;
     ImGui::StyleColorsDark();
 
+    // [overlay-font]
     // The font atlas: white glyphs whose alpha is their coverage, so UNORM
     // (it holds no colours) and one mip level (it is drawn at its own size).
     unsigned char* pixels = nullptr;
@@ -137,10 +138,12 @@ Overlay::Overlay(const Context& context)
     set_ = allocate_descriptor_set(gpu_.device, pool_, set_layout_);
     write_image_descriptor(gpu_.device, set_, 0, font_.image.view, font_.sampler,
                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    // [/overlay-font]
 
     const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(Push)};
     const VkDescriptorSetLayout set_layout = set_layout_;
     layout_ = create_pipeline_layout(gpu_.device, {&set_layout, 1}, {&push, 1});
+    // [overlay-pipeline]
     // ImGui's vertex: position and texture coordinate in window pixels, and
     // a colour of four bytes (sRGB-encoded: overlay.vert decodes it, since
     // our target is an _SRGB image that encodes what we write).
@@ -160,6 +163,7 @@ Overlay::Overlay(const Context& context)
                                                        .attributes = attributes,
                                                        .color_formats = {context.color_format},
                                                        .alpha_blend = true});
+    // [/overlay-pipeline]
     slots_.resize(context.frames_in_flight);
 }
 
@@ -198,6 +202,7 @@ void Overlay::build(const Input& input, VkExtent2D extent, double seconds,
     ImGui::Render();
 }
 
+// [overlay-upload]
 void Overlay::upload(SlotBuffers& buffers, VkDeviceSize vertex_bytes, VkDeviceSize index_bytes) {
     // Grown to the next power of two when too small: the slot's last frame
     // is finished (the runner waited for its fence), so the old ones may go.
@@ -220,11 +225,13 @@ void Overlay::upload(SlotBuffers& buffers, VkDeviceSize vertex_bytes, VkDeviceSi
         index += list->IdxBuffer.Size;
     }
 }
+// [/overlay-upload]
 
 void Overlay::record(VkCommandBuffer cmd, uint32_t slot, VkImageView target, VkExtent2D extent) {
     ImGui::SetCurrentContext(imgui_);
     const ImDrawData* data = ImGui::GetDrawData();
     if (!data || data->TotalVtxCount == 0) return;
+    // [overlay-begin]
     SlotBuffers& buffers = slots_[slot];
     upload(buffers, VkDeviceSize(data->TotalVtxCount) * sizeof(ImDrawVert),
            VkDeviceSize(data->TotalIdxCount) * sizeof(ImDrawIdx));
@@ -237,6 +244,8 @@ void Overlay::record(VkCommandBuffer cmd, uint32_t slot, VkImageView target, VkE
                     {-1.0f - data->DisplayPos.x * 2.0f / data->DisplaySize.x,
                      -1.0f - data->DisplayPos.y * 2.0f / data->DisplaySize.y}};
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
+    // [/overlay-begin]
+    // [overlay-commands]
     const VkBuffer vertices = buffers.vertices.buffer;
     const VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
@@ -264,6 +273,7 @@ void Overlay::record(VkCommandBuffer cmd, uint32_t slot, VkImageView target, VkE
         first_vertex += list->VtxBuffer.Size;
     }
     vkCmdEndRendering(cmd);
+    // [/overlay-commands]
 }
 
 }  // namespace detail

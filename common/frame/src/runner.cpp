@@ -260,6 +260,7 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
     // GPU time ends here: what follows is presentation, not the chapter's cost.
     harness_.gpu_timer().end(cmd, frame.slot);
 
+    // [overlay-after-frame]
     if (overlay_) {
         // Over the finished frame, in the layout for drawing: its last write
         // done and visible before the overlay's rendering loads its pixels.
@@ -269,6 +270,7 @@ void ChapterRun::record(FrameSlot& slot, uint32_t image_index, const Frame& fram
         overlay_->record(cmd, frame.slot, frame.target_view, frame.extent);
         last = drawn_by_colour_output;
     }
+    // [/overlay-after-frame]
 
     // Our target: the chapter's writes must be finished and visible before we
     // copy or read it (and before the next frame's barrier, which waits for

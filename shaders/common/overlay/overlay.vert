@@ -16,6 +16,7 @@ layout(location = 2) in vec4 colour;  // R8G8B8A8_UNORM: 0..1, sRGB-encoded
 layout(location = 0) out vec2 out_uv;
 layout(location = 1) out vec4 out_colour;
 
+// [overlay-srgb]
 vec3 srgb_to_linear(vec3 c) {
     return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c));
 }
@@ -25,3 +26,4 @@ void main() {
     out_colour = vec4(srgb_to_linear(colour.rgb), colour.a);
     gl_Position = vec4(position * push.scale + push.translate, 0.0, 1.0);
 }
+// [/overlay-srgb]
