@@ -26,8 +26,10 @@ struct Push {
     uint32_t instance_count, phase, mode, list;
     glm::uvec2 viewport, pyramid;
     uint32_t levels, show_level;
+    uint32_t meshlet_cull, pad;  // the task path: 1 tests each meshlet (task_path.hpp)
+    glm::vec3 eye;               // ... the normal cone against the camera's position
 };
-static_assert(sizeof(Push) == 104);
+static_assert(sizeof(Push) == 124);
 
 // The stages that read the push constants and set 0; the task path adds
 // the task and mesh stages.

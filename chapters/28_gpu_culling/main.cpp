@@ -116,7 +116,7 @@ public:
             3 * VkDeviceSize(count_) * sizeof(VkDrawIndexedIndirectCommand),
             storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
         count_buffer_ = vkt::create_host_buffer(
-            gpu_, 8 * sizeof(uint32_t),
+            gpu_, 16 * sizeof(uint32_t),
             storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
         std::memset(count_buffer_.mapped, 0, count_buffer_.size);
         const std::vector<uint32_t> unseen(count_, 0);
@@ -151,7 +151,8 @@ public:
                                                depth_format_);
         if (task)
             task_ = std::make_unique<ch28::TaskPath>(gpu_, chapter_, builder, meshlets, set_.layout,
-                                                     stages_, context.color_format, depth_format_);
+                                                     stages_, context.color_format, depth_format_,
+                                                     ch28::meshlet_cull(context.options));
 
         std::fprintf(stderr,
                      "28_gpu_culling: %u instances of %u meshes (%zu meshlets), %llu triangles; "
@@ -297,6 +298,7 @@ public:
                              (mode_ == cull_occlusion ? "at most " : "") +
                              std::to_string(expected));
         // [/check]
+        if (task_) task_->report(counts);
     }
 
 private:
@@ -418,6 +420,7 @@ int main(int argc, char** argv) {
          .help = "draw lists by vkCmdDrawIndexedIndirectCount, or task and mesh shaders",
          .default_value = "indirect",
          .choices = {"indirect", "task"}},
+        ch28::meshlet_cull_option(),
         {.name = "--reduce",
          .type = vkt::OptionType::choice,
          .help = "how the pyramid takes the min: the sampler's where offered, or the shader's",
@@ -435,6 +438,7 @@ int main(int argc, char** argv) {
                 "pass's list of occluded instances");
         // Run before any device is chosen: --path task makes the mesh shader
         // extension a requirement, and a device without it is refused by name.
+        ch28::meshlet_cull(options);  // refused without --path task
         if (options.text("--path") == "task") ch28::require_mesh_shaders(spec.requirements);
     };
     // [/spec]

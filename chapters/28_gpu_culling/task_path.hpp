@@ -3,7 +3,10 @@
 // mesh shaders. A task workgroup tests 32 instances, as the cull pass does
 // (instance_cull.glsl), and launches one mesh workgroup for each meshlet of
 // each instance it keeps: the cull and the draw in one command, with no
-// draw list in between. The meshlets and the mesh pipeline are chapter 26's,
+// draw list in between. With --meshlet-cull on (the default there) it
+// first tests each of those meshlets and launches only the survivors
+// (meshlet_cull.glsl), which the cull pass, one draw per instance, cannot
+// do. The meshlets and the mesh pipeline are chapter 26's,
 // from common/ (vkt/scene/meshlets.hpp, vkt/resources/mesh_pipeline.hpp).
 
 #include "draw_pass.hpp"
@@ -17,6 +20,11 @@
 #include "vkt/resources/upload.hpp"
 #include "vkt/scene/meshlets.hpp"
 
+#include "vkt/frame/args.hpp"
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -41,6 +49,23 @@ inline void require_mesh_shaders(vkt::DeviceRequirements& requirements) {
     requirements.extension_features = &mesh_features;
 }
 // [/device]
+
+// [option]
+// --meshlet-cull on|off: the task path's alone (on unless given).
+inline vkt::OptionSpec meshlet_cull_option() {
+    return {.name = "--meshlet-cull",
+            .type = vkt::OptionType::choice,
+            .help = "--path task: test each meshlet of a kept instance (on) or launch all (off)",
+            .choices = {"on", "off"}};
+}
+inline bool meshlet_cull(const vkt::Options& options) {
+    if (options.has("--meshlet-cull") && options.text("--path") != "task")
+        throw vkt::UsageError(
+            "--meshlet-cull needs --path task: the indirect path draws "
+            "whole instances, one command each, and has no meshlets");
+    return !options.has("--meshlet-cull") || options.text("--meshlet-cull") == "on";
+}
+// [/option]
 
 // [meshlets]
 // Each mesh but the floor (which the vertex pipeline draws in both paths)
@@ -81,8 +106,9 @@ class TaskPath {
 public:
     TaskPath(const vkt::Gpu& gpu, std::string_view chapter, const vkt::shapes::MeshBuilder& builder,
              const vkt::Meshlets& meshlets, VkDescriptorSetLayout culling_set,
-             VkShaderStageFlags stages, VkFormat colour_format, VkFormat depth_format)
-        : stages_(stages) {
+             VkShaderStageFlags stages, VkFormat colour_format, VkFormat depth_format,
+             bool cull_meshlets)
+        : stages_(stages), meshlet_cull_(cull_meshlets) {
         // The vertices again, as a storage buffer the mesh shader reads
         // (vec4s: std430 pads a vec3 array's elements to 16 bytes anyway).
         std::vector<glm::vec4> vertices;
@@ -100,11 +126,13 @@ public:
         buffers_[3] = vkt::create_device_buffer(gpu, vertices.data(),
                                                 vertices.size() * sizeof(glm::vec4), storage);
 
-        // Set 1, the meshlets; set 0 is the cull pass's, bound as it is.
+        // Set 1, the meshlets (the task shader reads their bounds); set 0 is
+        // the cull pass's, bound as it is.
         std::vector<VkDescriptorSetLayoutBinding> bindings;
         for (uint32_t b = 0; b < 4; ++b)
-            bindings.push_back(
-                {b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_MESH_BIT_EXT, nullptr});
+            bindings.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+                                VK_SHADER_STAGE_TASK_BIT_EXT | VK_SHADER_STAGE_MESH_BIT_EXT,
+                                nullptr});
         set_layout_ = vkt::create_descriptor_set_layout(gpu.device, bindings);
         const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4};
         pool_ = vkt::create_descriptor_pool(gpu.device, 1, {&size, 1});
@@ -130,8 +158,14 @@ public:
 
     // [task-draw]
     // Inside the pass's rendering, set 0 bound: one task workgroup per 32
-    // instances; the mesh workgroups they launch draw.
-    void draw(VkCommandBuffer cmd, const Push& push) const {
+    // instances; the mesh workgroups they launch draw. The normal cones need
+    // the eye: the point the matrix sends to clip (0, 0, z, 0), found by
+    // inverting it in double precision.
+    void draw(VkCommandBuffer cmd, Push push) const {
+        const glm::dvec4 eye =
+            glm::inverse(glm::dmat4(push.clip_from_world)) * glm::dvec4(0, 0, 1, 0);
+        push.eye = glm::vec3(glm::dvec3(eye) / eye.w);
+        push.meshlet_cull = meshlet_cull_ ? 1u : 0u;
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 1, 1, &set_, 0,
                                 nullptr);
@@ -140,8 +174,25 @@ public:
     }
     // [/task-draw]
 
+    // [report]
+    // After the last frame: the meshlets of the drawn instances, and those
+    // launched; the rest were culled, for one of three reasons.
+    void report(const uint32_t* counts) const {
+        std::fprintf(stderr,
+                     "28_gpu_culling: last frame: --meshlet-cull %s: %u meshlets of the drawn "
+                     "instances, %u launched; %u culled: %u outside the frustum, %u facing away, "
+                     "%u occluded\n",
+                     meshlet_cull_ ? "on" : "off", counts[5], counts[6], counts[5] - counts[6],
+                     counts[7], counts[8], counts[9]);
+        if (counts[6] + counts[7] + counts[8] + counts[9] != counts[5] ||
+            (!meshlet_cull_ && counts[6] != counts[5]))
+            throw vkt::Error("the task shader's meshlet counts do not add up");
+    }
+    // [/report]
+
 private:
     VkShaderStageFlags stages_;
+    bool meshlet_cull_;
     vkt::Buffer buffers_[4];  // meshlets, their vertex indices, their triangles, the vertices
     vkt::DescriptorSetLayout set_layout_;
     vkt::DescriptorPool pool_;

@@ -13,6 +13,9 @@ layout(push_constant) uniform Push {
     uvec2 pyramid;        // the pyramid's level 0, in texels
     uint levels;          // its mip levels
     uint show_level;      // --view pyramid: which level
+    uint meshlet_cull;    // the task path: 1 tests each meshlet (meshlet_cull.glsl)
+    uint pad;
+    vec3 eye;             // the camera's position in the world (the normal cones)
 } push;
 // [/push]
 

@@ -5,8 +5,9 @@
 
 // [counts]
 // counts[0..2]: the three lists' lengths (the draw counts); counts[3]: the
-// instances inside the frustum; counts[4]: those of them occluded.
-layout(std430, set = 0, binding = 3) buffer Counts { uint counts[8]; };
+// instances inside the frustum; counts[4]: those of them occluded;
+// counts[5..9]: the task path's meshlets (instances.task).
+layout(std430, set = 0, binding = 3) buffer Counts { uint counts[16]; };
 // visible[i]: instance i passed the last late pass (was seen last frame).
 layout(std430, set = 0, binding = 4) buffer Visible { uint visible[]; };
 // [/counts]

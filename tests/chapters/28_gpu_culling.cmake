@@ -78,10 +78,23 @@ vkt_chapter_test(chapter.28_gpu_culling.view_culled 28_gpu_culling
 # the two are compared within a tight tolerance: RMSE at most 0.05 and no
 # pixel more than 1 level off, beyond 0.02% of them (15).
 set(VKT_28_TASK_TOLERANCE 0.05,1,0.0002)
+# --meshlet-cull is on unless given: the task shader tests each meshlet of
+# a kept instance and launches only the survivors. In this view some must
+# face away: every sphere, cylinder and torus drawn shows the eye only its
+# near side, and the meshlets of its far side have normal cones that point
+# away (the cone test is conservative: it culls nothing that faces the eye,
+# so the picture below is still the indirect path's).
 vkt_chapter_test(chapter.28_gpu_culling.path_task 28_gpu_culling ${VKT_28_PIXEL}
   ARGS ${headless} ${VKT_28_ARGS} --path task
   EXPECT "--cull occlusion, task and mesh shaders"
-         "${VKT_28_COUNTS}, [0-9]+ drawn \\([0-9]+ early \\+ [0-9]+ late\\), [1-9][0-9]* occluded")
+         "${VKT_28_COUNTS}, [0-9]+ drawn \\([0-9]+ early \\+ [0-9]+ late\\), [1-9][0-9]* occluded"
+         "--meshlet-cull on: [0-9]+ meshlets of the drawn instances, [0-9]+ launched; [1-9][0-9]* culled: [0-9]+ outside the frustum, [1-9][0-9]* facing away, [0-9]+ occluded")
+# --meshlet-cull off launches every meshlet of every kept instance, and the
+# picture is the same to the bit: a culled meshlet drew nothing.
+vkt_chapter_test(chapter.28_gpu_culling.path_task_meshlet_cull_off 28_gpu_culling
+  SAME_AS chapter.28_gpu_culling.path_task ARGS ${headless} ${VKT_28_ARGS} --path task
+  --meshlet-cull off
+  EXPECT "--meshlet-cull off: ([0-9]+) meshlets of the drawn instances, \\1 launched; 0 culled: 0 outside the frustum, 0 facing away, 0 occluded")
 add_test(NAME chapter.28_gpu_culling.path_task_agrees
   COMMAND vkt_chapter_check --compare ${VKT_TEST_OUTPUT}/chapter.28_gpu_culling.png
           ${VKT_TEST_OUTPUT}/chapter.28_gpu_culling.path_task.png
@@ -124,7 +137,8 @@ vkt_chapter_test(chapter.28_gpu_culling.benchmark 28_gpu_culling
   EXPECT "\"gpu_scopes_ms\": \\{\"cull 1\": \\{\"min\": [0-9.]+, \"median\": [0-9.]+"
          "\"pyramid\": \\{" "\"cull 2\": \\{" "\"draw 2\": \\{")
 vkt_chapter_test(chapter.28_gpu_culling.help 28_gpu_culling EXIT 0 ARGS --help
-  EXPECT "usage: 28_gpu_culling" "--instances N" "--cull" "--view" "--level L" "--path" "--reduce")
+  EXPECT "usage: 28_gpu_culling" "--instances N" "--cull" "--view" "--level L" "--path" "--reduce"
+         "--meshlet-cull")
 
 # Bad input: the command line (exit 2).
 vkt_chapter_test(bad_input.28_gpu_culling.instances_zero 28_gpu_culling EXIT 2
@@ -142,6 +156,11 @@ vkt_chapter_test(bad_input.28_gpu_culling.path 28_gpu_culling EXIT 2 ARGS --path
 vkt_chapter_test(bad_input.28_gpu_culling.view_culled_with_task 28_gpu_culling EXIT 2
   ARGS --view culled --path task
   EXPECT "--view culled needs --path indirect: it draws the cull pass's list of occluded instances")
+vkt_chapter_test(bad_input.28_gpu_culling.meshlet_cull_without_task 28_gpu_culling EXIT 2
+  ARGS --meshlet-cull on
+  EXPECT "--meshlet-cull needs --path task: the indirect path draws whole instances, one command each, and has no meshlets")
+vkt_chapter_test(bad_input.28_gpu_culling.meshlet_cull 28_gpu_culling EXIT 2
+  ARGS --path task --meshlet-cull some EXPECT "--meshlet-cull wants one of on, off, not 'some'")
 vkt_chapter_test(bad_input.28_gpu_culling.level 28_gpu_culling EXIT 2 ARGS --level 16
   EXPECT "--level wants a whole number from 0 to 15, not '16'")
 vkt_chapter_test(bad_input.28_gpu_culling.view_culled_without_occlusion 28_gpu_culling EXIT 2
