@@ -1,10 +1,26 @@
 #pragma once
 // Chapter 23's flags that do not go together, refused before anything is
-// made, each with what to change.
+// made, each with what to change; and the bloom's --bloom-average.
 
 #include "vkt/frame/args.hpp"
 
 #include <string>
+
+// [bloom-average]
+// How the bloom's first halving averages its four taps (page 23d): box, the
+// plain mean; karis, each weighed by 1 / (1 + luma), which keeps a lone
+// bright pixel from blinking as a square when it moves (a firefly).
+inline vkt::OptionSpec bloom_average_option() {
+    return {.name = "--bloom-average",
+            .type = vkt::OptionType::choice,
+            .value_name = "KIND",
+            .help =
+                "the bloom's first halving: box (the mean of 4 taps) or karis (each weighed "
+                "by 1/(1+luma), against fireflies)",
+            .default_value = "box",
+            .choices = {"box", "karis"}};
+}
+// [/bloom-average]
 
 inline void check_flags(const vkt::Options& options) {
     const bool model = options.has("--model"), furnace = options.text("--scene") == "furnace";
@@ -26,6 +42,9 @@ inline void check_flags(const vkt::Options& options) {
     if (view != "scene" && uniform)
         throw vkt::UsageError("--view " + view +
                               " shows the environment's images: leave out --sky uniform");
+    if (options.text("--bloom-average") != "box" && options.number("--bloom") == 0)
+        throw vkt::UsageError("--bloom-average " + options.text("--bloom-average") +
+                              " changes the bloom: add --bloom F");
     if (view != "scene" && (verify == "cpu" || verify == "furnace"))
         throw vkt::UsageError("--verify " + verify + " checks the scene: leave out --view " + view);
 }

@@ -57,7 +57,7 @@ public:
           exposure_(float(context.options.number("--exposure"))),
           tone_map_(context.options.text("--tone-map") == "aces" ? 0 : 1),
           bloom_strength_(float(context.options.number("--bloom"))),
-          bloom_(gpu_, context.chapter) {
+          bloom_(gpu_, context.chapter, 1, context.options.text("--bloom-average") == "karis") {
         // [load]
         // A glTF file with every texture of the metallic-roughness model, or
         // the generated spheres, whose materials are the grid's numbers.
@@ -186,13 +186,14 @@ public:
         resize(context.extent);
         std::fprintf(stderr,
                      "23_materials: %s, sky %s, HDR target R16G16B16A16_SFLOAT, exposure %+.2f EV "
-                     "(x%.3f), tone map %s, bloom %.2f\n",
+                     "(x%.3f), tone map %s, bloom %.2f%s\n",
                      model_     ? "a glTF model"
                      : furnace_ ? "the white furnace"
                                 : "the sphere grid",
                      ibl_ ? "environment (image-based light)" : "uniform", double(exposure_),
                      std::exp2(double(exposure_)),
-                     tone_map_ == 0 ? "ACES (Narkowicz's fit)" : "clamp", double(bloom_strength_));
+                     tone_map_ == 0 ? "ACES (Narkowicz's fit)" : "clamp", double(bloom_strength_),
+                     context.options.text("--bloom-average") == "karis" ? ", Karis average" : "");
     }
 
     // [overlay]
@@ -418,6 +419,7 @@ int main(int argc, char** argv) {
          .default_value = "0",
          .min = 0,
          .max = 1},
+        bloom_average_option(),
         {.name = "--model",
          .type = vkt::OptionType::text,
          .value_name = "FILE",

@@ -85,6 +85,18 @@ vkt_chapter_test(chapter.23_materials.brdf_table 23_materials ARGS ${headless} -
 vkt_chapter_test(chapter.23_materials.bloom 23_materials GOLDEN_FILE 23_materials_bloom.png
   LABELS bless ARGS ${headless} --sky uniform --bloom 0.3 --verify cpu
   EXPECT "bloom 0.30" "verify cpu: 60 points match the CPU reference")
+# Karis's average in the first halving (--bloom-average karis): the two small
+# highlights on the smooth gold sphere at the bottom left, which the plain
+# mean spreads into bright squares of glow, keep only a faint one; its own
+# golden image. Against the plain mean's golden image it must fail: a flag
+# that changed nothing would pass there.
+vkt_chapter_test(chapter.23_materials.bloom_karis 23_materials GOLDEN_FILE 23_materials_bloom_karis.png
+  LABELS bless ARGS ${headless} --sky uniform --bloom 0.3 --bloom-average karis --verify cpu
+  EXPECT "bloom 0.30, Karis average" "verify cpu: 60 points match the CPU reference")
+vkt_chapter_test(chapter.23_materials.bloom_karis_differs 23_materials GOLDEN_FILE 23_materials_bloom.png
+  ARGS ${headless} --sky uniform --bloom 0.3 --bloom-average karis)
+set_tests_properties(chapter.23_materials.bloom_karis_differs PROPERTIES
+  PASS_REGULAR_EXPRESSION "FAIL: picture differs from .*23_materials_bloom\\.png")
 
 # A glTF file with every texture: assets/gltf/pbr_cubes.gltf, two cubes of
 # studs (normal map), polished metal studs on a rough dielectric checker
@@ -117,7 +129,7 @@ vkt_chapter_test(bad_input.23_materials.missing_model 23_materials EXIT 1
 
 vkt_chapter_test(chapter.23_materials.help 23_materials EXIT 0 ARGS --help
   EXPECT "usage: 23_materials" "--exposure EV" "--tone-map CURVE" "--scene SCENE" "--sky SKY" "--bloom F"
-         "--model FILE" "--verify CHECK")
+         "--bloom-average KIND" "--model FILE" "--verify CHECK")
 
 # Bad input: one clear line and exit status 2.
 vkt_chapter_test(bad_input.23_materials.exposure_range 23_materials EXIT 2 ARGS --exposure 11
@@ -126,6 +138,10 @@ vkt_chapter_test(bad_input.23_materials.exposure_word 23_materials EXIT 2 ARGS -
   EXPECT "--exposure wants a number")
 vkt_chapter_test(bad_input.23_materials.bloom_range 23_materials EXIT 2 ARGS --bloom 2
   EXPECT "--bloom wants a number from 0 to 1, not '2'")
+vkt_chapter_test(bad_input.23_materials.bloom_average 23_materials EXIT 2 ARGS --bloom-average soft
+  EXPECT "--bloom-average wants one of box, karis, not 'soft'")
+vkt_chapter_test(bad_input.23_materials.bloom_average_without_bloom 23_materials EXIT 2
+  ARGS --bloom-average karis EXPECT "--bloom-average karis changes the bloom: add --bloom F")
 vkt_chapter_test(bad_input.23_materials.tone_map 23_materials EXIT 2 ARGS --tone-map reinhard
   EXPECT "--tone-map wants one of aces, clamp, not 'reinhard'")
 vkt_chapter_test(bad_input.23_materials.scene 23_materials EXIT 2 ARGS --scene box

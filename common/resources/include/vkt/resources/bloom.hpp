@@ -7,7 +7,8 @@
 // 29 records it on a queue of its own (a compute-only family), which is why
 // record() is told which stages outside the chain read it on the same queue,
 // and widens the tent of the way up (`radius`, 1 in chapter 23) to give that
-// queue more work.
+// queue more work. `karis` (chapter 23's --bloom-average karis) weighs the
+// first halving's taps by 1 / (1 + luma), Karis's average, against fireflies.
 // Its shaders are shaders/common/bloom/ (SHARED_SHADERS bloom/bloom_down.comp
 // bloom/bloom_up.comp).
 
@@ -30,7 +31,7 @@ class Bloom {
 public:
     static constexpr uint32_t max_levels = 6;
 
-    Bloom(const vkt::Gpu& gpu, const std::string& chapter, uint32_t radius = 1)
+    Bloom(const vkt::Gpu& gpu, const std::string& chapter, uint32_t radius = 1, bool karis = false)
         : gpu_(gpu), radius_(int32_t(radius)) {
         // [bloom-sampler]
         // Linear filtering, and clamped at the edges: a repeating sampler
@@ -60,6 +61,16 @@ public:
         const vkt::ShaderModule up = vkt::load_shader(gpu_.device, chapter, "bloom_up.comp");
         down_ = vkt::create_compute_pipeline(gpu_.device, down, layout_);
         up_ = vkt::create_compute_pipeline(gpu_.device, up, layout_);
+        // [bloom-karis-pipeline]
+        // The first halving, from the HDR image, with bloom_down.comp's
+        // constant `karis` on; every later one keeps the plain mean.
+        if (karis) {
+            const VkBool32 on = VK_TRUE;
+            const VkSpecializationMapEntry entry{0, 0, sizeof on};
+            const VkSpecializationInfo specialization{1, &entry, sizeof on, &on};
+            first_down_ = vkt::create_compute_pipeline(gpu_.device, down, layout_, &specialization);
+        }
+        // [/bloom-karis-pipeline]
     }
 
     // The chain for an HDR image of `extent`, read through `hdr_view`
@@ -142,7 +153,9 @@ public:
             const bool down = step < levels_;
             const uint32_t target = down ? step : 2 * levels_ - 2 - step;
             const VkExtent2D size = vkt::mip_extent(extent_.width, extent_.height, target);
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, down ? down_ : up_);
+            const bool karis = step == 0 && first_down_;
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                              karis ? first_down_ : (down ? down_ : up_));
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1,
                                     &sets_[step], 0, nullptr);
             vkCmdDispatch(cmd, uint32_t(vkt::dispatch_count(size.width, 8)),
@@ -170,6 +183,7 @@ private:
     vkt::DescriptorSetLayout set_layout_;
     vkt::PipelineLayout layout_;
     vkt::Pipeline down_, up_;
+    vkt::Pipeline first_down_;  // only with karis: the first halving's
     VkExtent2D extent_{};
     uint32_t levels_ = 0;
     vkt::Image image_;
