@@ -100,6 +100,11 @@ find_package(Python3 COMPONENTS Interpreter QUIET)  # required (tests/CMakeLists
 add_test(NAME chapter.23_materials.cubes_model_unchanged
   COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/make_pbr_cubes.py --check)
 set_tests_properties(chapter.23_materials.cubes_model_unchanged PROPERTIES LABELS chapter)
+add_test(NAME bad_input.23_materials.cubes_single_word
+  COMMAND sh -c "\"$0\" \"$1\" --single both /dev/null 2>&1; echo \"exit $?\""
+          ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/make_pbr_cubes.py)
+set_tests_properties(bad_input.23_materials.cubes_single_word PROPERTIES LABELS chapter
+  PASS_REGULAR_EXPRESSION "make_pbr_cubes.py: --single wants one of tangent, made, not 'both'\nexit 1")
 # The frame the shader makes against the file's TANGENT: one cube alone, the
 # same turn, once with TANGENT and once without (make_pbr_cubes.py --single),
 # drawn by the same camera. The two frames are the same on every face, so
