@@ -4,8 +4,17 @@ every texture of glTF's metallic-roughness model (base colour, metallic-
 roughness, normal, occlusion, emissive; PNGs as data: URIs). The left cube's
 vertices carry TANGENT, the right cube's do not (the shader then makes its
 tangent frame from screen-space derivatives). Everything is computed here,
-so the file can be made again: scripts/make_pbr_cubes.py OUT.gltf"""
-import base64, json, math, struct, sys, zlib
+so the file can be made again:
+
+    python3 scripts/make_pbr_cubes.py OUT.gltf
+    python3 scripts/make_pbr_cubes.py --check    # fails if the stored file differs
+
+One cube alone at the middle, the same turn, with the file's TANGENT or with
+the frame the shader makes (chapter 23's test draws both: the pictures must
+agree):
+
+    python3 scripts/make_pbr_cubes.py --single tangent|made OUT.gltf"""
+import base64, json, math, os, struct, sys, zlib
 
 N = 64  # texels per side
 
@@ -40,8 +49,10 @@ def metal_rough(u, v):  # G roughness, B metallic: the studs are polished metal
 
 
 def normal(u, v):
+    # Tangent space: x along +u, y up the image (where v decreases), z out.
+    # A height field h(u, v) there has the normal (-dh/du, +dh/dv, 1).
     _, gx, gy = bump(u, v)
-    n = (gx * 0.6, gy * 0.6, 1.0)
+    n = (-gx * 0.6, gy * 0.6, 1.0)
     k = 1 / math.sqrt(sum(c * c for c in n))
     return tuple(int(round((c * k * 0.5 + 0.5) * 255)) for c in n)
 
@@ -74,7 +85,15 @@ def cube():
     return pos, nrm, uv, tan, idx
 
 
-def main(out):
+TURN = [0.2, 0.3, 0, 0.932]
+MESHES = {
+    "tangent": {"name": "with TANGENT", "primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1,
+                "TEXCOORD_0": 2, "TANGENT": 3}, "indices": 4, "material": 0}]},
+    "made": {"name": "tangents generated", "primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1,
+             "TEXCOORD_0": 2}, "indices": 4, "material": 0}]}}
+
+
+def gltf_text(single=None):
     pos, nrm, uv, tan, idx = cube()
     bin_ = b"".join(struct.pack("<3f", *p) for p in pos)
     off_n = len(bin_); bin_ += b"".join(struct.pack("<3f", *p) for p in nrm)
@@ -98,13 +117,9 @@ def main(out):
         "asset": {"version": "2.0", "generator": "scripts/make_pbr_cubes.py"},
         "scene": 0, "scenes": [{"nodes": [0, 1]}],
         "nodes": [
-            {"mesh": 0, "translation": [-0.8, 0, 0], "rotation": [0.2, 0.3, 0, 0.932]},
-            {"mesh": 1, "translation": [0.8, 0, 0], "rotation": [0.2, 0.3, 0, 0.932]}],
-        "meshes": [
-            {"name": "with TANGENT", "primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1,
-             "TEXCOORD_0": 2, "TANGENT": 3}, "indices": 4, "material": 0}]},
-            {"name": "tangents generated", "primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1,
-             "TEXCOORD_0": 2}, "indices": 4, "material": 0}]}],
+            {"mesh": 0, "translation": [-0.8, 0, 0], "rotation": TURN},
+            {"mesh": 1, "translation": [0.8, 0, 0], "rotation": TURN}],
+        "meshes": [MESHES["tangent"], MESHES["made"]],
         "materials": [{"name": "studs", "pbrMetallicRoughness": {
             "baseColorTexture": {"index": 0}, "metallicRoughnessTexture": {"index": 1}},
             "normalTexture": {"index": 2}, "occlusionTexture": {"index": 3},
@@ -117,9 +132,32 @@ def main(out):
         "buffers": [{"byteLength": len(bin_),
                      "uri": "data:application/octet-stream;base64," + base64.b64encode(bin_).decode()}],
     }
-    with open(out, "w") as f:
-        json.dump(gltf, f, indent=1)
+    if single:
+        gltf.update({"scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0, "rotation": TURN}],
+                     "meshes": [MESHES[single]]})
+    return json.dumps(gltf, indent=1)
+
+
+def main():
+    args = sys.argv[1:]
+    if args == ["--check"]:
+        path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "assets", "gltf",
+                            "pbr_cubes.gltf")
+        with open(path) as f:
+            if f.read() != gltf_text():
+                sys.exit(path + " differs from what scripts/make_pbr_cubes.py makes")
+        print(path + " is what scripts/make_pbr_cubes.py makes")
+        return
+    single = None
+    if len(args) == 3 and args[0] == "--single":
+        if args[1] not in MESHES:
+            sys.exit("make_pbr_cubes.py: --single wants one of tangent, made, not '%s'" % args[1])
+        single, args = args[1], args[2:]
+    if len(args) != 1 or args[0].startswith("-"):
+        sys.exit("usage: make_pbr_cubes.py OUT.gltf | --check | --single tangent|made OUT.gltf")
+    with open(args[0], "w") as f:
+        f.write(gltf_text(single))
 
 
 if __name__ == "__main__":
-    main(sys.argv[1])
+    main()

@@ -9,6 +9,9 @@ cross, normalize, inversesqrt, sign ...), with dFdx and dFdy standing for a
 triangle's two edges and their (du, dv): the formula needs only two steps across
 the triangle. So a figure drawn with these numbers cannot disagree with the
 shader; a line this cannot run stops the book's build with one line naming it.
+Before each figure the same lines also run on Vulkan's own steps (one pixel
+right, one down the window, on a face towards the eye): unless T then points
+where u grows and B where v falls, the build stops.
 """
 
 from __future__ import annotations
@@ -99,6 +102,8 @@ GLSL = {
 def statements(code: str) -> list[str]:
     """The shader's statements, comments dropped, one declaration per name."""
     code = re.sub(r"//[^\n]*", "", code)
+    # GLSL's `a < b ? x : y` (plain operands only) as Python's `(x if a < b else y)`.
+    code = re.sub(r"([\w.]+ [<>=!]=? [\w.]+) \? ([-\w.]+) : ([-\w.]+)", r"(\2 if \1 else \3)", code)
     out = []
     for statement in (s.strip() for s in code.split(";")):
         declared = re.match(r"(?:vec[234]|float|mat3)\s+(.*)", statement, re.S)
@@ -114,7 +119,26 @@ def statements(code: str) -> list[str]:
     return [s for s in out if s]
 
 
+def check_vulkan_steps(who):
+    """The shader's lines on a face seen as Vulkan sees it: the face in z = 0, N = +z
+    towards the eye, dFdx one pixel right (+x) and dFdy one pixel down the window (-y:
+    Vulkan's window y runs down), the texture upright on it (u grows right, v down). T
+    must point where u grows (+x) and B where v falls (+y); a frame made by OpenGL's
+    formula without det's sign comes out turned half round here."""
+    t, b = _run(((0, 0, 0), (1, 0, 0), (0, -1, 0)), ((0, 0), (1, 0), (0, 1)), (0, 0, 1),
+                (128, 128, 255), who)[4:6]
+    if not (t.x > 0.99 and b.y > 0.99):
+        raise SystemExit(f"{WHERE}: on Vulkan's pixel steps (right, down, a front face) the made "
+                         f"frame has T = {t.c}, B = {b.c}, not (1, 0, 0), (0, 1, 0): T must "
+                         f"point where u grows; fix the shader before drawing {who}")
+
+
 def shader_frame(p, uv, normal, texel, who):
+    check_vulkan_steps(who)
+    return _run(p, uv, normal, texel, who)
+
+
+def _run(p, uv, normal, texel, who):
     """Runs the shader's own lines on one triangle (corners p, texture coordinates uv,
     normal), dFdx and dFdy standing for its edges from corner 0 to corners 1 and 2, and
     texel, the normal map's RGB (0..255): e1, e2, their (du, dv), T, B, the texel's m and
