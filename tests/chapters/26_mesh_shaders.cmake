@@ -30,9 +30,20 @@ vkt_chapter_test(chapter.26_mesh_shaders.meshlets 26_mesh_shaders
 vkt_chapter_test(chapter.26_mesh_shaders.no_culling 26_mesh_shaders SAME_AS chapter.26_mesh_shaders ${VKT_26_PIXEL}
   ARGS ${headless} --cull off
   EXPECT "culled 0 of 389 meshlets \\(0 outside the frustum, 0 facing away\\), drew 389 meshlets, submitted 30720 of 30720 triangles")
-vkt_chapter_test(chapter.26_mesh_shaders.indirect 26_mesh_shaders SAME_AS chapter.26_mesh_shaders ${VKT_26_PIXEL}
+# The vertex pipeline's picture is compared within a tight tolerance, not to
+# the bit: llvmpipe's vertex and mesh stages may round a clip-space position
+# apart in the last bit (at --frames 2 one pixel differs by one level here),
+# and which pixels that touches depends on the processor llvmpipe compiles for.
+vkt_chapter_test(chapter.26_mesh_shaders.indirect 26_mesh_shaders ${VKT_26_PIXEL}
   ARGS ${headless} --draw indirect
   EXPECT "one vkCmdDrawIndexedIndirect \\(vertex shader\\)" "submitted 30720 triangles \\(the whole model\\)")
+add_test(NAME chapter.26_mesh_shaders.indirect_agrees
+  COMMAND vkt_chapter_check --compare ${VKT_TEST_OUTPUT}/chapter.26_mesh_shaders.png
+          ${VKT_TEST_OUTPUT}/chapter.26_mesh_shaders.indirect.png --tolerance 0.05,1,0.0002)
+set_tests_properties(chapter.26_mesh_shaders.indirect_agrees PROPERTIES LABELS chapter
+  PASS_REGULAR_EXPRESSION "is within the tolerance")
+vkt_same_picture(chapter.26_mesh_shaders.indirect_agrees chapter.26_mesh_shaders)
+vkt_same_picture(chapter.26_mesh_shaders.indirect_agrees chapter.26_mesh_shaders.indirect)
 # The gaze turned 30 degrees left: the right part of the knot leaves the
 # frustum. Turned 180 degrees: everything lies behind the camera.
 vkt_chapter_test(chapter.26_mesh_shaders.turn_30 26_mesh_shaders ${VKT_26_PIXEL}
