@@ -114,7 +114,8 @@ for run in "22_shadows|22_shadows_map|320x240|--view map" \
            "23_materials|23_materials_view_prefiltered|640x480|--view prefiltered" \
            "23_materials|23_materials_view_brdf|640x480|--view brdf --tone-map clamp" \
            "28_gpu_culling|28_gpu_culling_pyramid|320x240|--instances 4096 --view pyramid --level 1" \
-           "28_gpu_culling|28_gpu_culling_culled|320x240|--instances 4096 --view culled"; do
+           "28_gpu_culling|28_gpu_culling_culled|320x240|--instances 4096 --view culled" \
+           "28_gpu_culling|28_gpu_culling_task_culled|320x240|--instances 4096 --path task --view culled"; do
   IFS='|' read -r chapter name size extra <<<"$run"
   [ -x "$bin/$chapter" ] || continue
   check "$name" "$chapter" "tests/golden/$name.png" "" \

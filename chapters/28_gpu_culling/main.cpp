@@ -16,7 +16,9 @@
 //
 // - --path task draws with chapter 26's task and mesh shaders instead: a
 //   task workgroup makes the same test for 32 instances and launches mesh
-//   workgroups for the meshlets of those it keeps (task_path.hpp).
+//   workgroups for the meshlets of those it keeps (task_path.hpp). Its
+//   --view culled adds a pass from a second camera that launches every
+//   meshlet, coloured by why the tests for the first would cull it.
 //
 // The counts are read back after the last frame and checked against the
 // CPU's own frustum test (scene.hpp).
@@ -33,8 +35,6 @@
 #include "vkt/resources/rendering.hpp"
 #include "vkt/resources/upload.hpp"
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -50,20 +50,6 @@ enum Cull : uint32_t { cull_none, cull_frustum, cull_occlusion };
 enum List : uint32_t { early_list, late_list, culled_list };
 constexpr uint32_t kCullGroup = 64;  // cull.comp's local_size_x
 
-// The camera stands in the field, 5 m up, and turns slowly while it looks a
-// little down across it. Reversed depth (near 1, far 0): vulkan_perspective
-// with the planes swapped, which keeps float depth's precision where the
-// distances are large.
-glm::mat4 camera(uint32_t n, VkExtent2D extent, double time) {
-    const float side = ch28::kSpacing * std::ceil(std::sqrt(float(n)));
-    const float yaw = 0.5f + 0.02f * float(time);
-    const glm::vec3 eye(0.37f * ch28::kSpacing, 5.0f, 0.1f * side);
-    const glm::vec3 ahead(std::sin(yaw), -0.12f, -std::cos(yaw));
-    const glm::mat4 view = glm::lookAt(eye, eye + ahead, glm::vec3(0, 1, 0));
-    const float aspect = float(extent.width) / float(extent.height);
-    return vkt::vulkan_perspective(glm::radians(60.0f), aspect, 2.0f * side, 0.1f) * view;
-}
-
 class GpuCulling : public vkt::Renderer {
 public:
     explicit GpuCulling(const vkt::Context& context)
@@ -72,7 +58,7 @@ public:
                           view = context.options.text("--view");
         mode_ = cull == "none" ? cull_none : cull == "frustum" ? cull_frustum : cull_occlusion;
         show_pyramid_ = view == "pyramid";
-        show_culled_ = view == "culled";
+        show_culled_ = view == "culled" && context.options.text("--path") == "indirect";
         show_level_ = uint32_t(context.options.integer("--level"));
         count_ = uint32_t(context.options.integer("--instances"));
         const bool task = context.options.text("--path") == "task";
@@ -150,9 +136,9 @@ public:
         pipelines_ = ch28::make_draw_pipelines(gpu_.device, chapter_, layout_, context.color_format,
                                                depth_format_);
         if (task)
-            task_ = std::make_unique<ch28::TaskPath>(gpu_, chapter_, builder, meshlets, set_.layout,
-                                                     stages_, context.color_format, depth_format_,
-                                                     ch28::meshlet_cull(context.options));
+            task_ = std::make_unique<ch28::TaskPath>(
+                gpu_, chapter_, builder, meshlets, set_.layout, stages_, context.color_format,
+                depth_format_, ch28::meshlet_cull(context.options), view == "culled");
 
         std::fprintf(stderr,
                      "28_gpu_culling: %u instances of %u meshes (%zu meshlets), %llu triangles; "
@@ -180,7 +166,7 @@ public:
     }
 
     void record(const vkt::Frame& frame) override {
-        clip_from_world_ = camera(count_, frame.extent, frame.time);
+        clip_from_world_ = ch28::camera(count_, frame.extent, frame.time);
         Push push{.clip_from_world = clip_from_world_,
                   .instance_count = count_,
                   .phase = 0,
@@ -264,6 +250,12 @@ public:
                     draw(frame, push, VK_ATTACHMENT_LOAD_OP_LOAD, {late_list});
             }
             // [/two-phase]
+        }
+        if (task_ && task_->shows_fates()) {  // --view culled, the task path's (task_path.hpp)
+            task_->before_fates(frame.cmd, push);
+            push.phase = ch28::kFates;
+            push.clip_from_world = ch28::camera(count_, frame.extent, frame.time, true);
+            draw(frame, push, VK_ATTACHMENT_LOAD_OP_CLEAR, {early_list});
         }
         if (show_pyramid_)
             ch28::show_pyramid(frame.cmd, frame.target_view, frame.extent, pipelines_.pyramid,
@@ -405,7 +397,7 @@ int main(int argc, char** argv) {
          .choices = {"none", "frustum", "occlusion"}},
         {.name = "--view",
          .type = vkt::OptionType::choice,
-         .help = "the picture, a level of the depth pyramid, or the occluded instances in red",
+         .help = "the picture, a level of the depth pyramid, or what is culled (in colours)",
          .default_value = "shaded",
          .choices = {"shaded", "pyramid", "culled"}},
         {.name = "--level",
@@ -432,13 +424,9 @@ int main(int argc, char** argv) {
             throw vkt::UsageError("--view " + options.text("--view") +
                                   " needs --cull occlusion: only it builds a pyramid and "
                                   "occludes instances");
-        if (options.text("--view") == "culled" && options.text("--path") == "task")
-            throw vkt::UsageError(
-                "--view culled needs --path indirect: it draws the cull "
-                "pass's list of occluded instances");
         // Run before any device is chosen: --path task makes the mesh shader
         // extension a requirement, and a device without it is refused by name.
-        ch28::meshlet_cull(options);  // refused without --path task
+        ch28::meshlet_cull(options);  // refused without --path task (and off with culled)
         if (options.text("--path") == "task") ch28::require_mesh_shaders(spec.requirements);
     };
     // [/spec]

@@ -7,6 +7,7 @@
 #include "vkt/scene/meshes.hpp"
 
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -127,6 +128,28 @@ inline std::vector<Instance> make_instances(uint32_t n, const std::vector<Mesh>&
 // unit normal, it gives a corner's distance in metres. Boxes within 1 cm of
 // a plane (float rounding on the GPU may decide either way) are counted
 // apart, as `boundary`.
+// The camera stands in the field, 5 m up, and turns slowly while it looks a
+// little down across it. Reversed depth (near 1, far 0): vulkan_perspective
+// with the planes swapped, which keeps float depth's precision where the
+// distances are large. second: --path task --view culled's camera, 40 m
+// ahead of the first, 8 m to its right and 22 m up, looking back down at
+// the ground 12 m ahead of it.
+inline glm::mat4 camera(uint32_t n, VkExtent2D extent, double time, bool second = false) {
+    const float side = kSpacing * std::ceil(std::sqrt(float(n)));
+    const float yaw = 0.5f + 0.02f * float(time);
+    glm::vec3 eye(0.37f * kSpacing, 5.0f, 0.1f * side);
+    glm::vec3 ahead(std::sin(yaw), -0.12f, -std::cos(yaw));
+    if (second) {
+        const glm::vec3 flat(ahead.x, 0.0f, ahead.z), right(-ahead.z, 0.0f, ahead.x);
+        const glm::vec3 target = eye + 12.0f * flat;
+        eye += glm::vec3(0, 22.0f, 0) + 8.0f * right + 40.0f * flat;
+        ahead = glm::vec3(target.x, 0.0f, target.z) - eye;
+    }
+    const glm::mat4 view = glm::lookAt(eye, eye + ahead, glm::vec3(0, 1, 0));
+    const float aspect = float(extent.width) / float(extent.height);
+    return vkt::vulkan_perspective(glm::radians(60.0f), aspect, 2.0f * side, 0.1f) * view;
+}
+
 struct FrustumCount {
     uint32_t inside = 0, boundary = 0;
 };

@@ -35,6 +35,7 @@ namespace ch28 {
 // meshlet (chapter 26's), a launch packed as instance << 12 | meshlet.
 constexpr uint32_t kTaskGroup = 32, kMostMeshlets = 16, kMeshletBits = 12;
 constexpr uint32_t kMeshVertices = 64, kMeshTriangles = 124, kMeshWorkgroup = 32;
+constexpr uint32_t kFates = 2;  // Push::phase of --view culled's pass (task_data.glsl)
 
 // [device]
 // --path task asks for VK_EXT_mesh_shader and its two features; only then
@@ -63,6 +64,11 @@ inline bool meshlet_cull(const vkt::Options& options) {
         throw vkt::UsageError(
             "--meshlet-cull needs --path task: the indirect path draws "
             "whole instances, one command each, and has no meshlets");
+    if (options.text("--view") == "culled" && options.has("--meshlet-cull") &&
+        options.text("--meshlet-cull") == "off")
+        throw vkt::UsageError(
+            "--view culled with --path task shows what the meshlet tests cull: "
+            "it needs --meshlet-cull on");
     return !options.has("--meshlet-cull") || options.text("--meshlet-cull") == "on";
 }
 // [/option]
@@ -107,8 +113,8 @@ public:
     TaskPath(const vkt::Gpu& gpu, std::string_view chapter, const vkt::shapes::MeshBuilder& builder,
              const vkt::Meshlets& meshlets, VkDescriptorSetLayout culling_set,
              VkShaderStageFlags stages, VkFormat colour_format, VkFormat depth_format,
-             bool cull_meshlets)
-        : stages_(stages), meshlet_cull_(cull_meshlets) {
+             bool cull_meshlets, bool fates)
+        : stages_(stages), meshlet_cull_(cull_meshlets), fates_(fates) {
         // The vertices again, as a storage buffer the mesh shader reads
         // (vec4s: std430 pads a vec3 array's elements to 16 bytes anyway).
         std::vector<glm::vec4> vertices;
@@ -125,19 +131,22 @@ public:
             gpu, meshlets.triangles.data(), meshlets.triangles.size() * sizeof(uint32_t), storage);
         buffers_[3] = vkt::create_device_buffer(gpu, vertices.data(),
                                                 vertices.size() * sizeof(glm::vec4), storage);
+        const glm::vec4 tested[5] = {};  // --view culled's camera: a matrix and the eye
+        buffers_[4] = vkt::create_device_buffer(gpu, tested, sizeof(tested),
+                                                storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 
         // Set 1, the meshlets (the task shader reads their bounds); set 0 is
         // the cull pass's, bound as it is.
         std::vector<VkDescriptorSetLayoutBinding> bindings;
-        for (uint32_t b = 0; b < 4; ++b)
+        for (uint32_t b = 0; b < 5; ++b)
             bindings.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
                                 VK_SHADER_STAGE_TASK_BIT_EXT | VK_SHADER_STAGE_MESH_BIT_EXT,
                                 nullptr});
         set_layout_ = vkt::create_descriptor_set_layout(gpu.device, bindings);
-        const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4};
+        const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5};
         pool_ = vkt::create_descriptor_pool(gpu.device, 1, {&size, 1});
         set_ = vkt::allocate_descriptor_set(gpu.device, pool_, set_layout_);
-        for (uint32_t b = 0; b < 4; ++b)
+        for (uint32_t b = 0; b < 5; ++b)
             vkt::write_buffer_descriptor(gpu.device, set_, b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                          buffers_[b].buffer, 0, VK_WHOLE_SIZE);
         const VkDescriptorSetLayout sets[] = {culling_set, set_layout_};
@@ -161,10 +170,12 @@ public:
     // instances; the mesh workgroups they launch draw. The normal cones need
     // the eye: the point the matrix sends to clip (0, 0, z, 0), found by
     // inverting it in double precision.
+    static glm::vec3 eye_of(const glm::mat4& clip_from_world) {
+        const glm::dvec4 eye = glm::inverse(glm::dmat4(clip_from_world)) * glm::dvec4(0, 0, 1, 0);
+        return glm::vec3(glm::dvec3(eye) / eye.w);
+    }
     void draw(VkCommandBuffer cmd, Push push) const {
-        const glm::dvec4 eye =
-            glm::inverse(glm::dmat4(push.clip_from_world)) * glm::dvec4(0, 0, 1, 0);
-        push.eye = glm::vec3(glm::dvec3(eye) / eye.w);
+        push.eye = eye_of(push.clip_from_world);
         push.meshlet_cull = meshlet_cull_ ? 1u : 0u;
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 1, 1, &set_, 0,
@@ -173,6 +184,34 @@ public:
         draw_mesh_tasks_(cmd, uint32_t(vkt::dispatch_count(push.instance_count, kTaskGroup)), 1, 1);
     }
     // [/task-draw]
+
+    // [before-fates]
+    // --view culled: after the frame's two passes, one more from a second
+    // camera (main.cpp, scene.hpp) launches every meshlet and colours it by
+    // the tests made for the first, whose matrix and eye it reads from a
+    // buffer (the push constants hold the second camera's). The two passes' colour
+    // and depth writes come before this pass clears them.
+    bool shows_fates() const { return fates_; }
+    void before_fates(VkCommandBuffer cmd, const Push& push) const {
+        const glm::vec4 tested[5] = {push.clip_from_world[0], push.clip_from_world[1],
+                                     push.clip_from_world[2], push.clip_from_world[3],
+                                     glm::vec4(eye_of(push.clip_from_world), 1.0f)};
+        vkt::memory_barrier(cmd, VK_PIPELINE_STAGE_2_TASK_SHADER_BIT_EXT, 0,
+                            VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, 0);  // the passes' reads
+        vkCmdUpdateBuffer(cmd, buffers_[4].buffer, 0, sizeof(tested), tested);
+        vkt::memory_barrier(
+            cmd,
+            VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT |
+                VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+            VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
+                VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+            VK_PIPELINE_STAGE_2_TASK_SHADER_BIT_EXT |
+                VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT |
+                VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT,
+            VK_ACCESS_2_SHADER_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
+                VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+    }
+    // [/before-fates]
 
     // [report]
     // After the last frame: the meshlets of the drawn instances, and those
@@ -192,8 +231,9 @@ public:
 
 private:
     VkShaderStageFlags stages_;
-    bool meshlet_cull_;
-    vkt::Buffer buffers_[4];  // meshlets, their vertex indices, their triangles, the vertices
+    bool meshlet_cull_, fates_;
+    // meshlets, their vertex indices, their triangles, the vertices, the tested camera
+    vkt::Buffer buffers_[5];
     vkt::DescriptorSetLayout set_layout_;
     vkt::DescriptorPool pool_;
     VkDescriptorSet set_ = VK_NULL_HANDLE;

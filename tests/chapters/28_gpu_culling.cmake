@@ -131,6 +131,22 @@ vkt_chapter_test(chapter.28_gpu_culling.indirect_without_mesh_shader 28_gpu_cull
   ARGS --headless --frames 1 --instances 64 ENV VKT_HIDE_FEATURES=VK_EXT_mesh_shader
   EXPECT "64 instances of 4 meshes .*indirect draws")
 
+# --path task --view culled: after the frame, one more pass from a camera
+# 40 m ahead of the tested one, 8 m right and 22 m up, looking back, launches
+# every meshlet of every instance and colours each by what the tests made
+# for the tested camera find: launched, lit as ever; outside the frustum
+# (0.75, 0.05, 0.85), stored (225, 63, 237); facing away (1, 0.75, 0),
+# (255, 225, 0); occluded, page 28's red (255, 63, 39). Flat colours,
+# depth-tested: no pixel depends on the order of the launches. (40, 57) is
+# on the floor's instances left of the frustum, (130, 186) on the back of a
+# wall, (275, 201) an instance hidden behind that wall.
+vkt_chapter_test(chapter.28_gpu_culling.path_task_view_culled 28_gpu_culling
+  GOLDEN_FILE 28_gpu_culling_task_culled.png LABELS bless
+  PIXEL 0,0,196,218,243 40,57,225,63,237 130,186,255,225,0 275,201,255,63,39
+  ARGS ${headless} ${VKT_28_ARGS} --path task --view culled
+  EXPECT "${VKT_28_COUNTS}"
+         "--meshlet-cull on: [0-9]+ meshlets of the drawn instances, [0-9]+ launched; [1-9][0-9]* culled: [1-9][0-9]* outside the frustum, [1-9][0-9]* facing away, [1-9][0-9]* occluded")
+
 # --benchmark: the GPU's scopes of the two phases.
 vkt_chapter_test(chapter.28_gpu_culling.benchmark 28_gpu_culling
   ARGS --headless --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark ${VKT_28_ARGS}
@@ -153,9 +169,9 @@ vkt_chapter_test(bad_input.28_gpu_culling.reduce 28_gpu_culling EXIT 2 ARGS --re
   EXPECT "--reduce wants one of auto, sampler, shader, not 'max'")
 vkt_chapter_test(bad_input.28_gpu_culling.path 28_gpu_culling EXIT 2 ARGS --path mesh
   EXPECT "--path wants one of indirect, task, not 'mesh'")
-vkt_chapter_test(bad_input.28_gpu_culling.view_culled_with_task 28_gpu_culling EXIT 2
-  ARGS --view culled --path task
-  EXPECT "--view culled needs --path indirect: it draws the cull pass's list of occluded instances")
+vkt_chapter_test(bad_input.28_gpu_culling.view_culled_meshlet_cull_off 28_gpu_culling EXIT 2
+  ARGS --view culled --path task --meshlet-cull off
+  EXPECT "--view culled with --path task shows what the meshlet tests cull: it needs --meshlet-cull on")
 vkt_chapter_test(bad_input.28_gpu_culling.meshlet_cull_without_task 28_gpu_culling EXIT 2
   ARGS --meshlet-cull on
   EXPECT "--meshlet-cull needs --path task: the indirect path draws whole instances, one command each, and has no meshlets")
