@@ -14,7 +14,7 @@ columns are drawn one above the other, 380 units wide.
 import os
 from pathlib import Path
 
-from svg import (BLUE, BLUE_FILL, GREEN, GREEN_FILL, GREY, GREY_FILL, INK, MUTED, ORANGE, ORANGE_FILL,
+from svg import (BLUE, BLUE_FILL, GREEN, GREEN_FILL, GREY, GREY_FILL, MUTED, ORANGE, ORANGE_FILL,
                  Svg)
 
 OVERLAY_CPP = Path(__file__).resolve().parents[2] / "common" / "frame" / "src" / "overlay.cpp"
@@ -149,7 +149,6 @@ def main() -> None:
     y = left_bottom + 34 if narrow else 28
     s.text(right, y, "Each frame, Overlay::record", size=size + 1.5, bold=True, fill=BLUE)
     y += 10
-    step_top = y
     y = lines_box(right, y, col_w, ["SlotBuffers& buffers = slots_[slot]", "memcpy each list's VtxBuffer,",
                                     "IdxBuffer, one after the other:"],
                   BLUE_FILL, BLUE, head="1. upload into this frame's slot", extra=2 * (size + 20))
@@ -189,7 +188,6 @@ def main() -> None:
                                     "~ then first_index, first_vertex += the list's",
                                     "~ IdxBuffer.Size, VtxBuffer.Size"],
                   GREEN_FILL, GREEN, head="3. for each list, each ImDrawCmd")
-    loop_bottom = y
     s.line(right + col_w / 2, y, right + col_w / 2, y + 16, stroke=BLUE, width=1.3, arrow="end")
     y += 16
     y = lines_box(right, y, col_w, ["vkCmdEndRendering(cmd)"], BLUE_FILL, BLUE)
