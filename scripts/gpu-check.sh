@@ -97,7 +97,8 @@ if [ -x "$bin/23_materials" ]; then
   # lights the corner a little: no hand-worked pixel there).
   for run in "uniform|--pixel 0,0,59,69,92|--sky uniform" \
              "model|--pixel 0,0,59,69,92|--sky uniform --model assets/gltf/pbr_cubes.gltf" \
-             "bloom||--sky uniform --bloom 0.3"; do
+             "bloom||--sky uniform --bloom 0.3" \
+             "bloom_karis||--sky uniform --bloom 0.3 --bloom-average karis"; do
     IFS='|' read -r name pixels extra <<<"$run"
     check "23_materials.$name" 23_materials "tests/golden/23_materials_$name.png" "$pixels" \
       "--headless --validation --frames 10 --size 320x240 $extra"; rc=$?
