@@ -1,20 +1,23 @@
-"""Chapter 28b: the task payload, one packed word per mesh workgroup launched.
+"""Chapter 28b: the task payload, two words per mesh workgroup launched.
 
 Top: one 32-bit launch word, the instance in the high 32 - kMeshletBits bits
 and the meshlet in the low kMeshletBits (shaders/28_gpu_culling/task_data.glsl,
-instances.task: `(i << kMeshletBits) | (mesh.first_meshlet + m)`), with the
-bits of an example word. Below: one task workgroup of kTaskGroup invocations,
-one instance each; those that keep their instance append one word per meshlet
-of its mesh to the payload (room for kTaskGroup * kMostMeshlets words), and
-EmitMeshTasksEXT launches one mesh workgroup per word. The constants are read
-from task_data.glsl; which instances are kept and how many meshlets their
-meshes have are an example, as drawn.
+instances.task: `(i << kMeshletBits) | m`, m an index into the list of all
+meshlets), with the bits of an example word. Below: one task workgroup of
+kTaskGroup invocations, one instance each; for each meshlet of a kept instance
+an invocation takes the next slot k = atomicAdd(launches, 1) and writes
+payload.launch[k]; payload.why[k], the payload's second array, is written and
+read only in --view culled's pass. EmitMeshTasksEXT launches one mesh workgroup
+per slot. The constants and the payload's arrays (their names and count) are
+read from task_data.glsl; which instances are kept, how many meshlets their
+meshes have and the order the atomics gave are an example, as drawn.
 
 With VKT_DIAGRAM_LAYOUT=narrow (the builder asks for it, for phones) the same
 content is drawn 400 units wide: narrower cells, the text in short lines.
 """
 
 import os
+import re
 import sys
 from pathlib import Path
 
@@ -28,6 +31,13 @@ TASK_DATA = Path(__file__).resolve().parents[2] / "shaders" / "28_gpu_culling" /
 GROUP = int(constant(TASK_DATA, "kTaskGroup"))
 MOST = int(constant(TASK_DATA, "kMostMeshlets"))
 BITS = int(constant(TASK_DATA, "kMeshletBits"))
+# The payload's arrays, `uint NAME[kTaskGroup * kMostMeshlets];` each, in order.
+_PAYLOAD = re.search(r"struct Payload\s*\{(.*?)\};", TASK_DATA.read_text(encoding="utf-8"), re.S)
+ARRAYS = re.findall(r"^\s*uint\s+(\w+)\[kTaskGroup \* kMostMeshlets\];", _PAYLOAD.group(1), re.M)
+if ARRAYS != ["launch", "why"] or len(re.findall(r";", re.sub(r"//.*", "", _PAYLOAD.group(1)))) != 2:
+    sys.exit(f"{TASK_DATA.name}: struct Payload is not launch[] and why[] any more: redraw 28b_task_payload")
+ROOM = GROUP * MOST
+BYTES = len(ARRAYS) * 4  # per launch slot
 
 # The example: the invocations that keep their instance, with their mesh's first
 # meshlet and meshlet count, in the order their atomicAdd on `launches` landed.
@@ -46,13 +56,15 @@ def main() -> None:
     cell, pw, x0, small, body = (11, 28, 24, 11, 12) if narrow else (20, 40, 60, 11.5, 12.5)
     mono = 11 if narrow else 12
     width = 400 if narrow else W
-    s = Svg(width, H, "Chapter 28b: the task payload, one packed word per mesh workgroup",
+    s = Svg(width, H, "Chapter 28b: the task payload, launch[] and why[], one slot per mesh workgroup",
             f"Top: a 32-bit launch word; its high {32 - BITS} bits hold the instance, its low {BITS} "
             f"bits the meshlet; instance {INSTANCE} and meshlet {MESHLET} make {word:,}. "
             f"Below: one task workgroup of {GROUP} invocations, one instance each; four keep their "
-            f"instance and append one word per meshlet of its mesh to the payload, {launches} words of "
-            f"the {GROUP * MOST} it has room for; EmitMeshTasksEXT({launches}, 1, 1) launches "
-            f"{launches} mesh workgroups, the k-th reading word k.")
+            f"instance and write one launch word per meshlet of its mesh, each in the next free slot, "
+            f"{launches} of the {ROOM} the payload has room for. The payload's second array, why[], "
+            f"is left unwritten: only --view culled's pass uses it. Each slot takes {BYTES} bytes, "
+            f"{ROOM * BYTES:,} in all. EmitMeshTasksEXT({launches}, 1, 1) launches {launches} mesh "
+            f"workgroups, the k-th reading slot k.")
     y = 28
     if narrow:
         s.lines(16, y, ["One launch word: the instance and the", "meshlet in 32 bits"], size=14, bold=True)
@@ -122,14 +134,14 @@ def main() -> None:
                    fill=stroke)
     # The payload: the words written, then the room left.
     if narrow:
-        caption = [f"payload.launch[{GROUP} \u00d7 {MOST} = {GROUP * MOST}]: a kept instance",
-                   "appends one word per meshlet at",
-                   "atomicAdd(launches, count); each word shown",
-                   "as its invocation (top) and its meshlet (bottom)"]
+        caption = [f"payload.launch[{GROUP} \u00d7 {MOST} = {ROOM}]: each meshlet",
+                   "of a kept instance takes the next slot,",
+                   "k = atomicAdd(launches, 1); a word shown as",
+                   "its invocation (top) and meshlet (bottom)"]
     else:
-        caption = [f"payload.launch[{GROUP} \u00d7 {MOST} = {GROUP * MOST}]: a kept instance appends one word "
-                   "per meshlet at atomicAdd(launches, count);",
-                   "each word shown as its invocation (top) and its meshlet (bottom), packed as above"]
+        caption = [f"payload.launch[{GROUP} \u00d7 {MOST} = {ROOM}]: each meshlet of a kept instance takes the "
+                   "next slot,",
+                   "k = atomicAdd(launches, 1); each word shown as its invocation (top) and its meshlet (bottom)"]
     cy = iy + 80
     s.lines(x0 if not narrow else 16, cy, caption, size=12 if not narrow else small, fill=MUTED)
     py = cy + len(caption) * 15 + 6
@@ -144,49 +156,68 @@ def main() -> None:
             s.text(x + pw / 2, py + 14, f"{inv}", size=small, anchor="middle", fill=stroke)
             s.text(x + pw / 2, py + 28, f"m{first + m}", size=small, anchor="middle", fill=INK)
         at += count
+    # The second array, why[], in the row below: unwritten by the frame's passes.
+    wy, wh = py + 34, 20
+    for k in range(launches):
+        x = x0 + k * pw
+        s.rect(x, wy, pw, wh, fill=GREY_FILL, stroke=GREY, width=0.8, dash="3 2")
+        s.text(x + pw / 2, wy + 14, "\u2013", size=small, anchor="middle", fill=MUTED)
+    if not narrow:
+        s.text(x0 - 6, py + 22, "launch", size=small, anchor="end", fill=MUTED, mono=True)
+        s.text(x0 - 6, wy + 14, "why", size=small, anchor="end", fill=MUTED, mono=True)
     rest = x0 + at * pw
     end = width - 16 if narrow else x0 + 32 * cell
-    s.rect(rest, py, end - rest, 34, fill="#ffffff", stroke=GREY, width=1, dash="4 3")
+    s.rect(rest, py, end - rest, 34 + wh, fill="#ffffff", stroke=GREY, width=1, dash="4 3")
     if narrow:
         s.text(rest + 3, py + 22, "\u2026", size=small, fill=MUTED)
     else:
-        s.lines(rest + 8, py + 14, ["unused, up to", f"launch[{GROUP * MOST - 1}]"], size=small, fill=MUTED,
-                leading=1.2)
+        s.lines(rest + 8, py + 18, ["unused slots,", f"up to {ROOM - 1}"], size=small, fill=MUTED,
+                leading=1.3)
     # The mesh workgroups.
-    my = py + 62
+    my = wy + wh + 32
     for k in range(launches):
         x = x0 + k * pw
-        s.line(x + pw / 2, py + 35, x + pw / 2, my - 1, stroke=GREY, width=1.1, arrow="end")
+        s.line(x + pw / 2, wy + wh + 1, x + pw / 2, my - 1, stroke=GREY, width=1.1, arrow="end")
         s.rect(x + 3, my, pw - 6, 30, fill="#ffffff", stroke=INK, width=1.2, rx=4)
         s.text(x + pw / 2, my + 20, str(k), size=12 if not narrow else small, anchor="middle")
     if narrow:
         s.text(x0, my + 48, "mesh workgroups", size=body, fill=INK)
-        s.text(end, my + 48, f"unused, up to launch[{GROUP * MOST - 1}]", size=small, fill=MUTED,
-               anchor="end")
+        s.text(end, my + 48, f"unused slots, up to {ROOM - 1}", size=small, fill=MUTED, anchor="end")
         my += 20
     else:
         s.text(x0 + launches * pw + 8, my + 20, "mesh workgroups", size=body, fill=INK)
     my += 30
     if narrow:
-        s.lines(16, my + 28, [f"EmitMeshTasksEXT(launches = {launches}, 1, 1):", "one mesh workgroup per word"],
+        s.lines(16, my + 28, [f"EmitMeshTasksEXT(launches = {launches}, 1, 1):", "one mesh workgroup per slot"],
                 size=body, bold=True)
         my += 16
         text = ["mesh workgroup k reads payload.launch[k]",
                 "(gl_WorkGroupID.x = k), unpacks the instance and",
                 "the meshlet, and writes that meshlet's triangles,",
                 "placed by that instance's transform. At most",
-                f"{GROUP} \u00d7 {MOST} = {GROUP * MOST} mesh workgroups per task",
-                "workgroup; a culled instance launches none."]
-        note = ["Which instances are kept and their meshlet", "counts: an example, as drawn."]
+                f"{GROUP} \u00d7 {MOST} = {ROOM} mesh workgroups per task",
+                "workgroup; a culled instance launches none.",
+                "",
+                "payload.why[k], the lower row: which test culled",
+                "launch k. Only --view culled's extra pass writes",
+                "and reads it; the frame's passes leave it unset.",
+                f"{len(ARRAYS)} arrays \u00d7 4 bytes = {BYTES} bytes a slot,",
+                f"{ROOM} slots = {ROOM * BYTES:,} bytes of payload."]
+        note = ["Which instances are kept, their meshlet counts", "and the slots' order: an example, as drawn."]
         tx = 16
     else:
-        s.text(x0, my + 28, f"EmitMeshTasksEXT(launches = {launches}, 1, 1): one mesh workgroup per word",
+        s.text(x0, my + 28, f"EmitMeshTasksEXT(launches = {launches}, 1, 1): one mesh workgroup per slot",
                size=body, bold=True)
         text = [f"mesh workgroup k reads payload.launch[gl_WorkGroupID.x = k], unpacks the instance and the meshlet,",
                 f"and writes that meshlet's triangles, placed by that instance's transform. At most {GROUP} \u00d7 "
-                f"{MOST} = {GROUP * MOST}",
-                "mesh workgroups per task workgroup; a culled instance launches none."]
-        note = ["Which instances are kept and their meshlet counts: an example, as drawn."]
+                f"{MOST} = {ROOM}",
+                "mesh workgroups per task workgroup; a culled instance launches none.",
+                "",
+                "payload.why[k], the lower row: which test culled launch k. Only --view culled's extra pass",
+                "writes and reads it; the frame's passes leave it unset. "
+                f"{len(ARRAYS)} arrays \u00d7 4 bytes = {BYTES} bytes a slot,",
+                f"{ROOM} slots = {ROOM * BYTES:,} bytes of payload."]
+        note = ["Which instances are kept, their meshlet counts and the slots' order: an example, as drawn."]
         tx = x0
     s.lines(tx, my + 56, text, size=body)
     ny = my + 56 + len(text) * body * 1.3 + 14

@@ -6,7 +6,6 @@
 
 #include <string>
 
-// [bloom-average]
 // How the bloom's first halving averages its four taps (page 23d): box, the
 // plain mean; karis, each weighed by 1 / (1 + luma), which keeps a lone
 // bright pixel from blinking as a square when it moves (a firefly).
@@ -20,7 +19,6 @@ inline vkt::OptionSpec bloom_average_option() {
             .default_value = "box",
             .choices = {"box", "karis"}};
 }
-// [/bloom-average]
 
 inline void check_flags(const vkt::Options& options) {
     const bool model = options.has("--model"), furnace = options.text("--scene") == "furnace";

@@ -14,8 +14,10 @@ layout(std430, set = 1, binding = 4) readonly buffer Tested { mat4 clip_from_wor
 
 // One task workgroup tests 32 instances (task_path.hpp's kTaskGroup) and
 // launches one mesh workgroup for each meshlet of each it keeps; a mesh has
-// at most 16 meshlets (kMostMeshlets, checked when they are built). Each
-// launch is one word: the instance << 12 | the meshlet.
+// at most 16 meshlets (kMostMeshlets, checked when they are built). Launch k
+// has slot k in both arrays, 8 bytes: launch[k], the instance << 12 | the
+// meshlet; why[k], which test culled it, written and read only in the pass
+// of --view culled (the frame's passes leave it unset).
 const uint kTaskGroup = 32, kMostMeshlets = 16, kMeshletBits = 12;
 struct Payload {
     uint launch[kTaskGroup * kMostMeshlets];
