@@ -6,9 +6,11 @@ the chapter's table takes per texel, against n.v for three
 roughnesses. F0 A + B is the share of the light the specular lobe reflects.
 Prints the SVG; text stays text (the ids title, x-axis-label, y-axis-label and
 legend, as the book's other charts). Needs python3-matplotlib (and numpy,
-which it brings).
+which it brings). With VKT_DIAGRAM_LAYOUT=narrow (the builder asks for it, for
+phones) a narrower chart, its legend below.
 """
 
+import os
 import sys
 from pathlib import Path
 
@@ -54,9 +56,10 @@ def split_sum(n_dot_v: float, roughness: float) -> tuple[float, float]:
 
 
 def main() -> None:
-    plt = pyplot("BRDF table")
+    narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
+    plt = pyplot("BRDF table", title_size=11 if narrow else 12.5)
     xs = [(i + 0.5) / 64 for i in range(64)]
-    figure, ax = plt.subplots(figsize=(8.4, 5.0))
+    figure, ax = plt.subplots(figsize=(4.2, 6.0) if narrow else (8.4, 5.0))
     for roughness, colour in ((0.2, "#0969da"), (0.6, "#8250df"), (1.0, "#cf222e")):
         table = [split_sum(x, roughness) for x in xs]
         ax.plot(xs, [a for a, _ in table], color=colour, linewidth=2.2,
@@ -67,9 +70,14 @@ def main() -> None:
     ax.set_ylim(0, 1.05)
     ax.set_xlabel("n·v: 0 grazing, 1 head on")
     ax.set_ylabel("A (scale on F0) and B (bias)")
-    title = ax.set_title("Chapter 23: the BRDF table; the specular lobe reflects F0 A + B",
-                         loc="left")
-    legend = ax.legend(loc="center right", fontsize=9.5, frameon=False, ncol=2)
+    if narrow:
+        title = ax.set_title("Chapter 23: the BRDF table;\nthe specular lobe reflects F0 A + B", loc="left")
+        legend = ax.legend(loc="upper center", fontsize=9.5, frameon=False, ncol=2,
+                           bbox_to_anchor=(0.42, -0.14))
+    else:
+        title = ax.set_title("Chapter 23: the BRDF table; the specular lobe reflects F0 A + B",
+                             loc="left")
+        legend = ax.legend(loc="center right", fontsize=9.5, frameon=False, ncol=2)
     title.set_gid("title")
     ax.xaxis.label.set_gid("x-axis-label")
     ax.yaxis.label.set_gid("y-axis-label")

@@ -7,10 +7,12 @@ levels 1 to 5 (0.2 to 1). Log scale: at roughness 0.2 the peak is 199, at 1 the
 distribution is flat, 1 / pi. The legend gives, for each, the angle at which D
 falls to half its peak, computed here from the same formula. Prints the SVG;
 text stays text (the ids title, x-axis-label, y-axis-label and legend, as the
-book's other charts). Needs python3-matplotlib.
+book's other charts). With VKT_DIAGRAM_LAYOUT=narrow (the builder asks for it,
+for phones) a narrower chart, its legend below. Needs python3-matplotlib.
 """
 
 import math
+import os
 import sys
 from pathlib import Path
 
@@ -46,26 +48,36 @@ def half_peak_degrees(alpha: float) -> float | None:
 
 
 def main() -> None:
-    plt = pyplot("GGX lobe")
+    narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
+    plt = pyplot("GGX lobe", title_size=11 if narrow else 12.5)
     colours = ("#0969da", "#1a7f37", "#8250df", "#bc4c00", "#cf222e")
     angles = [i * 0.25 for i in range(361)]
-    figure, ax = plt.subplots(figsize=(8.4, 5.0))
+    figure, ax = plt.subplots(figsize=(4.2, 6.4) if narrow else (8.4, 5.0))
     for level, colour in zip(range(1, LEVELS), colours):
         roughness = level / (LEVELS - 1)
         alpha = roughness * roughness
         ds = [distribution_ggx(math.cos(math.radians(a)), alpha) for a in angles]
         half = half_peak_degrees(alpha)
         where = f"half its peak at {half:.1f}°" if half is not None else "flat: every angle alike"
+        gap = "\n" if narrow else " "
         ax.plot(angles, ds, color=colour, linewidth=2.2,
-                label=f"roughness {roughness:.1f} (α = {alpha:.2f}): peak {ds[0]:.3g}, {where}")
+                label=f"roughness {roughness:.1f} (α = {alpha:.2f}):{gap}peak {ds[0]:.3g}, {where}")
     ax.set_yscale("log")
     ax.set_xlim(0, 90)
     ax.set_xticks(range(0, 91, 15))
     ax.set_ylim(0.01, 400)
-    ax.set_xlabel("angle between the half vector h and the normal n (degrees)")
-    ax.set_ylabel("D(n·h), GGX's normal distribution (log scale)")
-    title = ax.set_title("Chapter 23: GGX's lobe widens and flattens as the roughness grows", loc="left")
-    legend = ax.legend(loc="upper right", fontsize=9.5, frameon=False)
+    if narrow:  # plain tick labels: a log axis's superscripts are too small on a phone
+        ax.set_yticks([0.01, 0.1, 1, 10, 100], ["0.01", "0.1", "1", "10", "100"])
+        ax.minorticks_off()
+        ax.set_xlabel("angle between h and n (degrees)")
+        ax.set_ylabel("D(n·h), GGX (log scale)")
+        title = ax.set_title("Chapter 23: GGX's lobe widens\nand flattens as the roughness grows", loc="left")
+        legend = ax.legend(loc="upper center", fontsize=9.5, frameon=False, bbox_to_anchor=(0.42, -0.14))
+    else:
+        ax.set_xlabel("angle between the half vector h and the normal n (degrees)")
+        ax.set_ylabel("D(n·h), GGX's normal distribution (log scale)")
+        title = ax.set_title("Chapter 23: GGX's lobe widens and flattens as the roughness grows", loc="left")
+        legend = ax.legend(loc="upper right", fontsize=9.5, frameon=False)
     title.set_gid("title")
     ax.xaxis.label.set_gid("x-axis-label")
     ax.yaxis.label.set_gid("y-axis-label")

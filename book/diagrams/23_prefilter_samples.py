@@ -9,10 +9,12 @@ by the shader and drawn as a cross. Each dot is coloured by the sky's mip
 level it reads (source_lod in shaders/23_materials/cube.glsl: wider apart,
 coarser level). The same formulas, the same count (Environment::
 specular_samples) and the same sky size. Prints the SVG; text stays text.
-Needs python3-matplotlib.
+With VKT_DIAGRAM_LAYOUT=narrow (the builder asks for it, for phones) the two
+views stand one above the other. Needs python3-matplotlib.
 """
 
 import math
+import os
 import sys
 from pathlib import Path
 
@@ -61,9 +63,13 @@ def samples(roughness: float):
 
 
 def main() -> None:
+    narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
     plt = pyplot("prefilter samples", plain_axes=False, title_size=12)
     from matplotlib.patches import Circle
-    figure, axes = plt.subplots(1, 2, figsize=(9.6, 5.0), layout="constrained")
+    if narrow:
+        figure, axes = plt.subplots(2, 1, figsize=(4.4, 9.4), layout="constrained")
+    else:
+        figure, axes = plt.subplots(1, 2, figsize=(9.6, 5.0), layout="constrained")
     cmap = plt.colormaps["viridis"]
     last = float(constant(ENVIRONMENT_HPP, "sky_levels")) - 1  # the sampler clamps a higher lod to it
     reach = 0.0  # both panels to one scale
@@ -89,9 +95,11 @@ def main() -> None:
                        linewidths=1.3, label=f"below the horizon, skipped ({len(skipped)})")
         widest = max(p[2] for p in kept)
         lods = sorted(p[3] for p in kept)
-        ax.set_title(f"roughness {roughness:.1f} (the cube's level {level}): {len(kept)} of {SAMPLES} kept,\n"
-                     f"all within {widest:.0f}° of n; they read sky levels {lods[0]:.1f} to {lods[-1]:.0f}",
-                     loc="left", fontsize=11)
+        gap = "\n" if narrow else " "
+        ax.set_title(f"roughness {roughness:.1f} (the cube's level {level}):{gap}{len(kept)} of {SAMPLES} kept,"
+                     f"{gap if narrow else chr(10)}all within {widest:.0f}° of n;{gap}"
+                     f"they read sky levels {lods[0]:.1f} to {lods[-1]:.0f}",
+                     loc="left", fontsize=10.5 if narrow else 11)
         reach = max([reach, 1.08] + [math.hypot(p[0], p[1]) + 0.08 for p in skipped])
         ax.set_aspect("equal")
         ax.set_xticks([])
@@ -104,11 +112,16 @@ def main() -> None:
     for ax in axes:
         ax.set_xlim(-reach, reach)
         ax.set_ylim(-reach, reach)
-    bar = figure.colorbar(dots, ax=axes, shrink=0.6)
+    bar = figure.colorbar(dots, ax=axes, shrink=0.6, location="bottom" if narrow else "right")
     bar.set_label("the sky's mip level a sample reads")
-    figure.suptitle("Chapter 23: where the prefilter's samples land, for one texel whose n points at the centre\n"
-                    "(the distance from the centre is the angle from n; the dark circle is the horizon)",
-                    x=0.01, ha="left", fontsize=12)
+    if narrow:
+        figure.suptitle("Chapter 23: where the prefilter's samples\nland, for one texel whose n points at the\n"
+                        "centre (the distance from the centre is\nthe angle from n; the dark circle is the horizon)",
+                        x=0.01, ha="left", fontsize=11)
+    else:
+        figure.suptitle("Chapter 23: where the prefilter's samples land, for one texel whose n points at the centre\n"
+                        "(the distance from the centre is the angle from n; the dark circle is the horizon)",
+                        x=0.01, ha="left", fontsize=12)
     print_svg(plt, figure, "book/diagrams/23_prefilter_samples.py")
 
 

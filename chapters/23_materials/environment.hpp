@@ -112,7 +112,6 @@ public:
     // [/background]
 
 private:
-    // [precompute-step]
     // One step: `pipeline` reads `source` (none for the sky and the table)
     // and writes `target`, one invocation per texel of a size x size face,
     // `faces` faces.
@@ -131,7 +130,6 @@ private:
         const auto groups = uint32_t(vkt::dispatch_count(size, 8));
         vkCmdDispatch(cmd, groups, groups, faces);
     }
-    // [/precompute-step]
 
     void precompute(glm::vec3 sun, bool furnace) {
         vkt::GpuTimer timer(gpu_.physical, gpu_.device, gpu_.queue_family, 1);
