@@ -146,7 +146,7 @@ def main() -> None:
         s.line(x_sphere + side + 6, mid, x_panel - 6, mid, arrow="end")
         px, py, _, _ = panels[shown]
         enlarged(s, view, px, py, pw, ph, x_panel, mid - ph / 2, 1)
-    s.text(x_text, 40 + 3 * row_h + 6, "tests/golden/23_materials.png (bottom row, metallic 1) and "
+    s.text(x_text, 40 + 3 * row_h + 6, "tests/golden/23_materials.png (bottom row) and "
            "23_materials_view_prefiltered.png", size=12, fill=MUTED)
     s.write()
 
