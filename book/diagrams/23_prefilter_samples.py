@@ -19,6 +19,7 @@ import sys
 from pathlib import Path
 
 from charts import print_svg, pyplot  # book/diagrams/charts.py
+from ggx_sampling import ggx_half_vector  # book/diagrams/ggx_sampling.py
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 from source_constants import constant  # noqa: E402  (book/, above this folder)
@@ -27,11 +28,6 @@ ENVIRONMENT_HPP = Path(__file__).resolve().parents[2] / "chapters" / "23_materia
 SAMPLES = int(constant(ENVIRONMENT_HPP, "specular_samples"))
 SKY_SIZE = int(constant(ENVIRONMENT_HPP, "sky_size"))
 LEVELS = int(constant(ENVIRONMENT_HPP, "specular_levels"))
-
-
-def hammersley(i: int, count: int) -> tuple[float, float]:
-    bits = int(f"{i:032b}"[::-1], 2)  # bitfieldReverse
-    return (i + 0.5) / count, bits * 2.3283064365386963e-10
 
 
 def distribution_ggx(n_dot_h: float, alpha: float) -> float:
@@ -51,11 +47,8 @@ def samples(roughness: float):
     alpha = max(roughness * roughness, 1e-3)
     out = []
     for i in range(SAMPLES):
-        u, w = hammersley(i, SAMPLES)
-        phi = 2.0 * math.pi * w
-        cos_h = math.sqrt((1.0 - u) / (1.0 + (alpha * alpha - 1.0) * u))
-        sin_h = math.sqrt(max(0.0, 1.0 - cos_h * cos_h))
-        h = (sin_h * math.cos(phi), sin_h * math.sin(phi), cos_h)
+        h = ggx_half_vector(i, SAMPLES, alpha)
+        cos_h = h[2]
         l = (2.0 * cos_h * h[0], 2.0 * cos_h * h[1], 2.0 * cos_h * h[2] - 1.0)
         lod = source_lod(distribution_ggx(cos_h, alpha) / 4.0, SAMPLES)
         out.append((l[0], l[1], l[2], lod))

@@ -22,6 +22,7 @@ import sys
 from pathlib import Path
 
 from charts import print_svg, pyplot  # book/diagrams/charts.py
+from ggx_sampling import ggx_half_vector, hammersley  # book/diagrams/ggx_sampling.py
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 from source_constants import constant  # noqa: E402  (book/, above this folder)
@@ -55,11 +56,6 @@ def check_shader() -> None:
                              "redraw book/diagrams/23_sky_samples.py")
 
 
-def hammersley(i: int, count: int) -> tuple[float, float]:
-    bits = int(f"{i:032b}"[::-1], 2)  # bitfieldReverse
-    return (i + 0.5) / count, bits * 2.3283064365386963e-10
-
-
 def diffuse(v):
     """The diffuse lobe's directions (frame around n = (0, 0, 1), first axis towards v)."""
     out = []
@@ -75,11 +71,7 @@ def specular(v, roughness: float):
     alpha = max(roughness * roughness, 1e-3)
     out = []
     for i in range(SAMPLES):
-        u, w = hammersley(i, SAMPLES)
-        phi = 2.0 * math.pi * w
-        cos_h = math.sqrt((1.0 - u) / (1.0 + (alpha * alpha - 1.0) * u))
-        sin_h = math.sqrt(max(0.0, 1.0 - cos_h * cos_h))
-        h = (sin_h * math.cos(phi), sin_h * math.sin(phi), cos_h)
+        h = ggx_half_vector(i, SAMPLES, alpha)
         v_dot_h = sum(a * b for a, b in zip(v, h))
         l = tuple(2.0 * v_dot_h * a - b for a, b in zip(h, v))
         out.append((l, l[2] > 0.0 and v_dot_h > 0.0))
