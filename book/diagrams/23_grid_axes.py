@@ -12,36 +12,14 @@ With VKT_DIAGRAM_LAYOUT=narrow (the builder asks for it, for phones) the
 picture is drawn at its own size, 400 units wide in all.
 """
 
-import math
 import os
-import re
-import sys
 from fractions import Fraction
-from pathlib import Path
 
 from golden import GOLDEN, enlarged, read_png
 from svg import MUTED, Svg
-
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
-from source_constants import constant  # noqa: E402  (book/, above this folder)
-
-GRID_HPP = Path(__file__).resolve().parents[2] / "chapters" / "23_materials" / "grid.hpp"
-COLUMNS, ROWS = int(constant(GRID_HPP, "columns")), int(constant(GRID_HPP, "rows"))
-SPACING, FOV_Y = float(constant(GRID_HPP, "spacing")), float(constant(GRID_HPP, "fov_y"))
-MATERIAL = ("{glm::vec3(1.0f, 0.71f, 0.29f), float(row) / float(rows - 1), "
-            "0.1f + 0.9f * float(column) / float(columns - 1)}")
+from grid23 import COLUMNS, ROWS, SPACING, pixels_per_unit  # book/diagrams/grid23.py
 
 
-def eye_distance() -> float:
-    text = GRID_HPP.read_text(encoding="utf-8")
-    if MATERIAL not in " ".join(text.split()):
-        raise SystemExit("chapters/23_materials/grid.hpp: the spheres' material is no longer "
-                         f"`{MATERIAL}`; redraw book/diagrams/23_grid_axes.py")
-    found = re.search(r"glm::vec3 eye\{0\.0f, 0\.0f, ([0-9.]+)f\}", text)
-    if not found:
-        raise SystemExit("chapters/23_materials/grid.hpp: no `glm::vec3 eye{0.0f, 0.0f, Z}`; "
-                         "redraw book/diagrams/23_grid_axes.py")
-    return float(found.group(1))
 
 
 def fraction(value: Fraction) -> str:
@@ -49,7 +27,6 @@ def fraction(value: Fraction) -> str:
 
 
 def main() -> None:
-    distance = eye_distance()
     pixels = read_png(GOLDEN / "23_materials_uniform.png")
     height, width = len(pixels), len(pixels[0])
     narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
@@ -64,7 +41,7 @@ def main() -> None:
             "columns from 0.1 to 1: small sharp highlights on the left, broad soft ones on the right.")
     enlarged(s, pixels, 0, 0, width, height, x0, y0, zoom)
     # Where the camera puts each sphere's centre (grid.hpp's camera: eye on +z, looking at 0).
-    per_unit = (height / 2) / (distance * math.tan(FOV_Y / 2))  # picture pixels per world unit at z = 0
+    per_unit = pixels_per_unit(height, "23_grid_axes.py")  # picture pixels per world unit at z = 0
 
     def column_x(column: int) -> float:
         return x0 + zoom * (width / 2 + per_unit * SPACING * (column - 0.5 * (COLUMNS - 1)))

@@ -18,37 +18,22 @@ row's label stands above its pictures, 400 units wide in all.
 
 import math
 import os
-import re
 import sys
 from fractions import Fraction
 from pathlib import Path
 
 from golden import GOLDEN, enlarged, read_png
 from svg import MUTED, Svg
+from grid23 import COLUMNS, ROWS, SPACING, pixels_per_unit  # book/diagrams/grid23.py
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 from source_constants import constant  # noqa: E402  (book/, above this folder)
 
 CHAPTER = Path(__file__).resolve().parents[2] / "chapters" / "23_materials"
-GRID_HPP, ENVIRONMENT_HPP = CHAPTER / "grid.hpp", CHAPTER / "environment.hpp"
-COLUMNS, ROWS = int(constant(GRID_HPP, "columns")), int(constant(GRID_HPP, "rows"))
-SPACING, FOV_Y = float(constant(GRID_HPP, "spacing")), float(constant(GRID_HPP, "fov_y"))
+ENVIRONMENT_HPP = CHAPTER / "environment.hpp"
 LEVELS = int(constant(ENVIRONMENT_HPP, "specular_levels"))
-MATERIAL = ("{glm::vec3(1.0f, 0.71f, 0.29f), float(row) / float(rows - 1), "
-            "0.1f + 0.9f * float(column) / float(columns - 1)}")
 PICKED, CROP, ZOOM = (0, 2, 4), 46, 2
 
-
-def eye_distance() -> float:
-    text = GRID_HPP.read_text(encoding="utf-8")
-    if MATERIAL not in " ".join(text.split()):
-        raise SystemExit("chapters/23_materials/grid.hpp: the spheres' material is no longer "
-                         f"`{MATERIAL}`; redraw book/diagrams/23c_spheres_levels.py")
-    found = re.search(r"glm::vec3 eye\{0\.0f, 0\.0f, ([0-9.]+)f\}", text)
-    if not found:
-        raise SystemExit("chapters/23_materials/grid.hpp: no `glm::vec3 eye{0.0f, 0.0f, Z}`; "
-                         "redraw book/diagrams/23c_spheres_levels.py")
-    return float(found.group(1))
 
 
 def runs(flags: list[bool]) -> list[tuple[int, int]]:
@@ -85,7 +70,7 @@ def main() -> None:
     view = read_png(GOLDEN / "23_materials_view_prefiltered.png")
     panels = panoramas(view)
     height, width = len(grid), len(grid[0])
-    per_unit = (height / 2) / (eye_distance() * math.tan(FOV_Y / 2))
+    per_unit = pixels_per_unit(height, "23c_spheres_levels.py")
     row = ROWS - 1
     cy = height / 2 - per_unit * SPACING * (0.5 * (ROWS - 1) - row)
     items = []
