@@ -14,11 +14,12 @@
 // first use (07 and 08 read in 48-64 KiB more of libm around frame 3,700,
 // when their angles grow past where sin and cos change method), bounded by
 // the size of the files. Each block of 50 frames keeps its least sample;
-// growth is the lesser of two rises, second quarter's least to the third's and
-// third's to the last's, each per frame times the frames measured
-// (soak_growth.hpp says why: a steady leak reads at its full size, memory kept
-// once as none). Live Vulkan objects and device allocations are exact counts,
-// compared at frame VKT_SOAK_FROM and at the last frame. At exit it prints
+// the frames measured are cut into eight segments, and growth is the median
+// of the seven rises from one segment's least sample to the next one's, per
+// frame times the frames measured (soak_growth.hpp says why: a steady leak
+// reads at its full size, up to three steps of memory kept once as none). Live Vulkan objects and
+// device allocations are exact counts, compared at frame VKT_SOAK_FROM and at the last frame. At
+// exit it prints
 //   vkt_soak: frames 500..10000: resident +0 KiB (limit 64; file-backed +0
 //   KiB), heap +272 bytes (limit 16 KiB), Vulkan objects 18 -> 18, device
 //   allocations 1 -> 1 (16384 -> 16384 bytes): pass
@@ -175,7 +176,7 @@ __attribute__((destructor)) void report() {
         heap.push_back(min.heap_bytes);
     }
     auto growth = [&](const std::vector<int64_t>& minima) {
-        return int64_t(vkt::soak::quarter_growth(minima, block, frames));
+        return int64_t(vkt::soak::median_rise_growth(minima, block, frames));
     };
     const char* rss_text = std::getenv("VKT_SOAK_RSS_KIB");
     const int64_t rss_limit = rss_text ? std::atoll(rss_text) : 64;
