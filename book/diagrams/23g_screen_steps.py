@@ -24,9 +24,9 @@ from tangent_frame import _run, check_vulkan_steps
 
 WHO = "book/diagrams/23g_screen_steps.py"
 FLAT = (128, 128, 255)
-# (title, the window's y, dFdy's step in the world, and its (du, dv)), per API.
-APIS = [("OpenGL: window y runs up", "up", (0, 1, 0), (0, -1)),
-        ("Vulkan: window y runs down", "down", (0, -1, 0), (0, 1))]
+# (title, dFdy's step in the world (y up on the page), and its (du, dv)), per API.
+APIS = [("OpenGL: window y runs up", (0, 1, 0), (0, -1)),
+        ("Vulkan: window y runs down", (0, -1, 0), (0, 1))]
 SIDE = 150  # the face, drawn as a square in the window
 STEP = 52  # one pixel's step, drawn
 
@@ -45,7 +45,7 @@ def frames(dp2, duv2):
     return det, kept[4:6], dropped[4:6]
 
 
-def panel(s, x, y, title, ydir, dp2, duv2, beside=True):
+def panel(s, x, y, title, dp2, duv2, beside=True):
     """One API's window: the face, the two steps, the turn and the frames; its bottom."""
     det, (t, b), (t0, b0) = frames(dp2, duv2)
     s.text(x, y, title, size=14, bold=True)
@@ -58,7 +58,8 @@ def panel(s, x, y, title, ydir, dp2, duv2, beside=True):
     s.text(left + SIDE + 4, top - 4, "u", size=13, fill=MUTED, italic=True)
     s.line(left - 10, top, left - 10, top + SIDE, stroke=MUTED, width=1, arrow="end")
     s.text(left - 14, top + SIDE + 4, "v", size=13, fill=MUTED, italic=True, anchor="end")
-    up = ydir == "up"
+    up = dp2[1] > 0
+    ydir = "up" if up else "down"
     cx, cy = left + 92, top + (92 if up else 58)
     s.circle(cx, cy, 3, fill=INK, stroke=INK)
     s.line(cx, cy, cx + STEP, cy, stroke=BLUE, width=2.4, arrow="end")
