@@ -13,7 +13,16 @@ One cube alone at the middle, the same turn, with the file's TANGENT or with
 the frame the shader makes (chapter 23's test draws both: the pictures must
 agree):
 
-    python3 scripts/make_pbr_cubes.py --single tangent|made OUT.gltf"""
+    python3 scripts/make_pbr_cubes.py --single tangent|made OUT.gltf
+
+The same single cube (with TANGENT) with only the first N of the five maps,
+in the order base colour, metallic-roughness, normal, occlusion, emissive
+(page 23e switches them on in turn; N = 5 is --single tangent). A map left
+out takes its factor with it, so glTF 2.0's defaults apply: metallic 1 and
+roughness 1 without the metallic-roughness map, no glow without the
+emissive one:
+
+    python3 scripts/make_pbr_cubes.py --maps N OUT.gltf"""
 import base64, json, math, os, struct, sys, zlib
 
 N = 64  # texels per side
@@ -93,7 +102,10 @@ MESHES = {
              "TEXCOORD_0": 2}, "indices": 4, "material": 0}]}}
 
 
-def gltf_text(single=None):
+MAPS = ["base colour", "metallic-roughness", "normal", "occlusion", "emissive"]
+
+
+def gltf_text(single=None, maps=5):
     pos, nrm, uv, tan, idx = cube()
     bin_ = b"".join(struct.pack("<3f", *p) for p in pos)
     off_n = len(bin_); bin_ += b"".join(struct.pack("<3f", *p) for p in nrm)
@@ -135,6 +147,18 @@ def gltf_text(single=None):
     if single:
         gltf.update({"scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0, "rotation": TURN}],
                      "meshes": [MESHES[single]]})
+    if maps < 5:  # the first `maps` maps; each one's texture index is its place in MAPS
+        material = gltf["materials"][0]
+        material["name"] = "studs: " + ", ".join(MAPS[:maps])
+        pbr = material["pbrMetallicRoughness"]
+        slots = [(pbr, "baseColorTexture"), (pbr, "metallicRoughnessTexture"),
+                 (material, "normalTexture"), (material, "occlusionTexture"),
+                 (material, "emissiveTexture")]
+        for owner, key in slots[maps:]:
+            del owner[key]
+        del material["emissiveFactor"]  # glTF's default, 0: no glow
+        gltf["textures"] = gltf["textures"][:maps]
+        gltf["images"] = gltf["images"][:maps]
     return json.dumps(gltf, indent=1)
 
 
@@ -148,15 +172,20 @@ def main():
                 sys.exit(path + " differs from what scripts/make_pbr_cubes.py makes")
         print(path + " is what scripts/make_pbr_cubes.py makes")
         return
-    single = None
+    single, maps = None, 5
     if len(args) == 3 and args[0] == "--single":
         if args[1] not in MESHES:
             sys.exit("make_pbr_cubes.py: --single wants one of tangent, made, not '%s'" % args[1])
         single, args = args[1], args[2:]
+    elif len(args) == 3 and args[0] == "--maps":
+        if args[1] not in ("1", "2", "3", "4", "5"):
+            sys.exit("make_pbr_cubes.py: --maps wants a number from 1 to 5, not '%s'" % args[1])
+        single, maps, args = "tangent", int(args[1]), args[2:]
     if len(args) != 1 or args[0].startswith("-"):
-        sys.exit("usage: make_pbr_cubes.py OUT.gltf | --check | --single tangent|made OUT.gltf")
+        sys.exit("usage: make_pbr_cubes.py OUT.gltf | --check | --single tangent|made OUT.gltf"
+                 " | --maps N OUT.gltf")
     with open(args[0], "w") as f:
-        f.write(gltf_text(single))
+        f.write(gltf_text(single, maps))
 
 
 if __name__ == "__main__":

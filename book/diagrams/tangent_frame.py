@@ -1,6 +1,6 @@
 """Chapter 23e's tangent frame, computed by the lines of the shader itself.
 
-Shared by 23e_tangent_frame.py and 23e_mirrored_uv.py. shader_frame() reads
+Shared by the figures of 23e and 23g (23e_*.py, 23g_*.py). shader_frame() reads
 shaders/23_materials/surface.glsl's [normal-map] region: the branch that makes
 the frame from dFdx and dFdy (the `} else {` one), then the lines that read the
 normal map's texel and turn it into the world. It runs them, statement by
@@ -138,11 +138,12 @@ def shader_frame(p, uv, normal, texel, who):
     return _run(p, uv, normal, texel, who)
 
 
-def _run(p, uv, normal, texel, who):
+def _run(p, uv, normal, texel, who, keep_sign=True):
     """Runs the shader's own lines on one triangle (corners p, texture coordinates uv,
     normal), dFdx and dFdy standing for its edges from corner 0 to corners 1 and 2, and
     texel, the normal map's RGB (0..255): e1, e2, their (du, dv), T, B, the texel's m and
-    the normal it gives. who: the diagram, named in a failure."""
+    the normal it gives. who: the diagram, named in a failure. keep_sign=False runs them
+    with det_sign set to 1 (OpenGL's formula as it is: page 23g's figure)."""
     text = SHADER.read_text(encoding="utf-8")
     region = re.search(r"// \[normal-map\]\n(.*?)// \[/normal-map\]", text, re.S)
     made = region and re.search(r"\} else \{\n(.*?)\n    \}\n(.*?)return (.*?);", region.group(1), re.S)
@@ -156,6 +157,8 @@ def _run(p, uv, normal, texel, who):
     for statement in statements(made.group(1)) + statements(made.group(2)):
         if "draw." in statement:  # the push constants' factors: 1 in this example
             continue
+        if not keep_sign and statement.startswith("det_sign ="):
+            statement = "det_sign = 1.0"
         try:
             exec(statement, {}, scope)
         except Exception as error:  # noqa: BLE001  (any failure is one line for the build)

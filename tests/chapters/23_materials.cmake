@@ -133,8 +133,9 @@ add_test(NAME chapter.23_materials.single_cube.make
           ${vkt_23_tangent} ${vkt_23_made})
 set_tests_properties(chapter.23_materials.single_cube.make PROPERTIES
   FIXTURES_SETUP vkt_23_single_cube LABELS chapter)
-vkt_chapter_test(chapter.23_materials.cube_tangent 23_materials PIXEL 0,0,59,69,92
-  ARGS ${headless} --sky uniform --model ${vkt_23_tangent} EXPECT "a glTF model")
+vkt_chapter_test(chapter.23_materials.cube_tangent 23_materials GOLDEN_FILE 23_materials_cube.png
+  LABELS bless PIXEL 0,0,59,69,92 ARGS ${headless} --sky uniform --model ${vkt_23_tangent}
+  EXPECT "a glTF model")
 vkt_chapter_test(chapter.23_materials.cube_made 23_materials PIXEL 0,0,59,69,92
   ARGS ${headless} --sky uniform --model ${vkt_23_made} EXPECT "a glTF model")
 set_property(TEST chapter.23_materials.cube_tangent chapter.23_materials.cube_made
@@ -146,6 +147,58 @@ set_tests_properties(chapter.23_materials.made_frame_agrees PROPERTIES LABELS ch
   PASS_REGULAR_EXPRESSION "is within the tolerance")
 vkt_same_picture(chapter.23_materials.made_frame_agrees chapter.23_materials.cube_tangent)
 vkt_same_picture(chapter.23_materials.made_frame_agrees chapter.23_materials.cube_made)
+
+# Page 23e's maps switched on in turn: the same single cube (TANGENT) with
+# only the first N of its five maps (make_pbr_cubes.py --maps N): 1 base
+# colour; 2 + metallic-roughness; 3 + normal; 4 + occlusion; 5, all five, is
+# cube_tangent above. A map left out is drawn with glTF 2.0's defaults (the
+# loader's factors, the chapter's white and flat stand-in textures): without
+# metallic-roughness the cube is rough metal (metallic 1, roughness 1).
+# Each step has its golden image, and each must differ from the step before
+# by more than rounding: RMSE above 0.2, or more than 0.1% of the pixels more
+# than 2 levels apart. A map the loader dropped or the shader ignored leaves
+# two steps alike (RMSE 0), and the step's "differs" test fails. The smallest
+# step, occlusion (it dims the sky's light only), is RMSE 0.63 with 2.3% of
+# the pixels more than 2 levels apart on lavapipe; the golden tolerance alone
+# would tell it from step 3 by the bias only (0.13, the limit 0.08).
+set(vkt_23_maps 1_base 2_metal_rough 3_normal 4_occlusion)
+set(vkt_23_map_files)
+foreach(step IN LISTS vkt_23_maps)
+  list(APPEND vkt_23_map_files ${vkt_23_dir}/cube_maps_${step}.gltf)
+endforeach()
+add_test(NAME chapter.23_materials.maps.make
+  COMMAND sh -c "p=$0 s=$1 n=1; shift; for out; do \"$p\" \"$s\" --maps $n \"$out\" || exit 1; n=$((n + 1)); done"
+          ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/make_pbr_cubes.py ${vkt_23_map_files})
+set_tests_properties(chapter.23_materials.maps.make PROPERTIES
+  FIXTURES_SETUP vkt_23_maps LABELS chapter)
+set(vkt_23_previous)
+foreach(step IN LISTS vkt_23_maps ITEMS 5)
+  if(step STREQUAL "5")
+    set(vkt_23_test chapter.23_materials.cube_tangent)
+  else()
+    set(vkt_23_test chapter.23_materials.maps_${step})
+    vkt_chapter_test(${vkt_23_test} 23_materials GOLDEN_FILE 23_materials_maps_${step}.png
+      LABELS bless PIXEL 0,0,59,69,92
+      ARGS ${headless} --sky uniform --model ${vkt_23_dir}/cube_maps_${step}.gltf EXPECT "a glTF model")
+    set_property(TEST ${vkt_23_test} APPEND PROPERTY FIXTURES_REQUIRED vkt_23_maps)
+  endif()
+  if(vkt_23_previous)
+    string(SUBSTRING ${step} 0 1 n)
+    add_test(NAME chapter.23_materials.maps_${n}_differs
+      COMMAND vkt_chapter_check --compare ${VKT_TEST_OUTPUT}/${vkt_23_previous}.png
+              ${VKT_TEST_OUTPUT}/${vkt_23_test}.png --tolerance 0.2,2,0.001)
+    set_tests_properties(chapter.23_materials.maps_${n}_differs PROPERTIES LABELS chapter
+      PASS_REGULAR_EXPRESSION "differs: .* is outside the tolerance of ")
+    vkt_same_picture(chapter.23_materials.maps_${n}_differs ${vkt_23_previous})
+    vkt_same_picture(chapter.23_materials.maps_${n}_differs ${vkt_23_test})
+  endif()
+  set(vkt_23_previous ${vkt_23_test})
+endforeach()
+add_test(NAME bad_input.23_materials.cubes_maps_count
+  COMMAND sh -c "\"$0\" \"$1\" --maps 6 /dev/null 2>&1; echo \"exit $?\""
+          ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/make_pbr_cubes.py)
+set_tests_properties(bad_input.23_materials.cubes_maps_count PROPERTIES LABELS chapter
+  PASS_REGULAR_EXPRESSION "make_pbr_cubes.py: --maps wants a number from 1 to 5, not '6'\nexit 1")
 
 # What the loader does not support: an extension the file requires is refused
 # by name (exit 1); one it only uses is a warning, and the rest is drawn.
