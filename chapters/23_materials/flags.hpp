@@ -24,7 +24,6 @@ inline vkt::OptionSpec bloom_average_option() {
             .choices = {"box", "karis"}};
 }
 
-// [term]
 // --term d|f|v: scene.frag draws one factor of the specular BRDF alone, as a
 // plain number (page 23's row of pictures); all: the whole shading.
 inline vkt::OptionSpec term_option() {
@@ -57,7 +56,6 @@ private:
     VkSpecializationMapEntry entry_{0, 0, sizeof(int32_t)};
     VkSpecializationInfo info_{1, &entry_, sizeof(int32_t), &value_};
 };
-// [/term]
 
 // --term with what it cannot show, refused first: it draws the grid's spheres
 // by scene.frag, the uniform sky's shader, lit by the grid's key light.
