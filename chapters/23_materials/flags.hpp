@@ -40,6 +40,8 @@ inline vkt::OptionSpec term_option() {
 // The choice reaches the shader as its specialization constant 0: the
 // compiler drops the branches the pipeline never takes. For all, no
 // specialization at all: the pipeline is the one made without the flag.
+// main.cpp makes it as a temporary inside the pipeline's create call: it
+// lives until that call has returned, as info() must.
 class TermConstant {
 public:
     explicit TermConstant(const vkt::Options& options)
