@@ -1,9 +1,13 @@
 #pragma once
 // Chapter 23's flags that do not go together, refused before anything is
-// made, each with what to change; and the bloom's --bloom-average.
+// made, each with what to change; the bloom's --bloom-average; and --term,
+// one factor of the BRDF alone.
 
 #include "vkt/frame/args.hpp"
 
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
 #include <string>
 
 // How the bloom's first halving averages its four taps (page 23d): box, the
@@ -20,7 +24,63 @@ inline vkt::OptionSpec bloom_average_option() {
             .choices = {"box", "karis"}};
 }
 
+// --term d|f|v: scene.frag draws one factor of the specular BRDF alone, as a
+// plain number (page 23's row of pictures); all: the whole shading.
+inline vkt::OptionSpec term_option() {
+    return {.name = "--term",
+            .type = vkt::OptionType::choice,
+            .value_name = "TERM",
+            .help =
+                "all: the whole BRDF; or one factor of its specular part alone, as a number "
+                "(with --sky uniform): d (GGX), f (Fresnel), v (Smith's, as G)",
+            .default_value = "all",
+            .choices = {"all", "d", "f", "v"}};
+}
+
+// The choice reaches the shader as its specialization constant 0: the
+// compiler drops the branches the pipeline never takes. For all, no
+// specialization at all: the pipeline is the one made without the flag.
+// main.cpp makes it as a temporary inside the pipeline's create call: it
+// lives until that call has returned, as info() must.
+class TermConstant {
+public:
+    explicit TermConstant(const vkt::Options& options)
+        : value_(options.text("--term") == "d"   ? 1
+                 : options.text("--term") == "f" ? 2
+                 : options.text("--term") == "v" ? 3
+                                                 : 0) {}
+    TermConstant(const TermConstant&) = delete;  // info_ points into this object
+    TermConstant& operator=(const TermConstant&) = delete;
+    const VkSpecializationInfo* info() const { return value_ == 0 ? nullptr : &info_; }
+
+private:
+    int32_t value_;
+    VkSpecializationMapEntry entry_{0, 0, sizeof(int32_t)};
+    VkSpecializationInfo info_{1, &entry_, sizeof(int32_t), &value_};
+};
+
+// --term with what it cannot show, refused first: it draws the grid's spheres
+// by scene.frag, the uniform sky's shader, lit by the grid's key light.
+inline void check_term(const vkt::Options& options) {
+    const std::string& term = options.text("--term");
+    if (term == "all") return;
+    const std::string flag = "--term " + term;
+    if (options.has("--model"))
+        throw vkt::UsageError(flag + " shows the sphere grid's BRDF: leave out --model");
+    if (options.text("--scene") == "furnace")
+        throw vkt::UsageError(flag + " needs the grid's lights: leave out --scene furnace");
+    if (options.has("--verify"))
+        throw vkt::UsageError("--verify " + options.text("--verify") +
+                              " checks the whole BRDF: leave out " + flag);
+    if (options.text("--view") != "scene")
+        throw vkt::UsageError(flag + " draws the spheres: leave out --view " +
+                              options.text("--view"));
+    if (options.text("--sky") != "uniform")
+        throw vkt::UsageError(flag + " is drawn by the uniform sky's shader: add --sky uniform");
+}
+
 inline void check_flags(const vkt::Options& options) {
+    check_term(options);
     const bool model = options.has("--model"), furnace = options.text("--scene") == "furnace";
     if (model && furnace)
         throw vkt::UsageError("--model draws a glTF file: leave out --scene furnace");

@@ -142,7 +142,8 @@ public:
                           .attributes = attributes,
                           .cull_mode = model_ ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT,
                           .color_formats = {hdr_format},
-                          .depth_format = depth_format_});
+                          .depth_format = depth_format_,
+                          .fragment_specialization = TermConstant(context.options).info()});
         // [/scene-pipeline]
         const vkt::ShaderModule fullscreen =
             vkt::load_shader(gpu_.device, context.chapter, "fullscreen.vert");
@@ -420,6 +421,7 @@ int main(int argc, char** argv) {
          .min = 0,
          .max = 1},
         bloom_average_option(),
+        term_option(),
         {.name = "--model",
          .type = vkt::OptionType::text,
          .value_name = "FILE",

@@ -98,6 +98,54 @@ vkt_chapter_test(chapter.23_materials.bloom_karis_differs 23_materials GOLDEN_FI
 set_tests_properties(chapter.23_materials.bloom_karis_differs PROPERTIES
   PASS_REGULAR_EXPRESSION "FAIL: picture differs from .*23_materials_bloom\\.png")
 
+# --term d|f|v: one factor of the specular BRDF alone, as a number through
+# the clamp curve (page 23's row of pictures; shaders/23_materials/scene.frag).
+# Hand-worked for the ray through each pixel's centre (a sphere of radius
+# 0.5 at grid.hpp's place; tone map clamp, exposure 0): (250, 51) on the top
+# right sphere (roughness 1, metallic 0), (69, 51) on the top left
+# (roughness 0.1, metallic 0), (69, 188) on the bottom left (roughness 0.1,
+# gold). D at roughness 1 is 1/pi whatever n.h: 0.3183, sRGB-encoded 152.95,
+# stored (153, 153, 153). At roughness 0.1, 36 degrees from the highlight,
+# D is 0.0003: (1, 1, 1) within 1. F where n.v is 0.9997 is F0: the
+# plastic's 0.04, (56, 56, 56); gold's (1, 0.71, 0.29), (255, 219.2, 146.6),
+# stored (255, 219, 147) within 1 (lavapipe: 146). G on the polished sphere
+# is 0.9997, (255, 255, 255); on the rough one, at n.l 0.55, 0.7136, stored
+# (220, 220, 220) within 1 (219.7). The corners are the sky, cut at 1 as in
+# chapter.23_materials.clamp.
+set(vkt_23_term_sky 0,0,63,69,85,1 319,239,63,69,85,1)
+vkt_chapter_test(chapter.23_materials.term_d 23_materials GOLDEN_FILE 23_materials_term_d.png
+  LABELS bless PIXEL ${vkt_23_term_sky} 250,51,153,153,153,1 69,51,1,1,1,1
+  ARGS ${headless} --sky uniform --tone-map clamp --term d)
+vkt_chapter_test(chapter.23_materials.term_f 23_materials GOLDEN_FILE 23_materials_term_f.png
+  LABELS bless PIXEL ${vkt_23_term_sky} 69,51,56,56,56,1 250,51,56,56,56,1 69,188,255,219,147,1
+  ARGS ${headless} --sky uniform --tone-map clamp --term f)
+vkt_chapter_test(chapter.23_materials.term_v 23_materials GOLDEN_FILE 23_materials_term_v.png
+  LABELS bless PIXEL ${vkt_23_term_sky} 69,51,255,255,255,1 250,51,220,220,220,1
+  ARGS ${headless} --sky uniform --tone-map clamp --term v)
+# Each against the whole BRDF drawn with the same flags (chapter.23_materials.clamp's
+# golden image) must fail: a --term that changed nothing would pass there.
+foreach(term d f v)
+  vkt_chapter_test(chapter.23_materials.term_${term}_differs 23_materials
+    GOLDEN_FILE 23_materials_clamp.png ARGS ${headless} --sky uniform --tone-map clamp --term ${term})
+  set_tests_properties(chapter.23_materials.term_${term}_differs PROPERTIES
+    PASS_REGULAR_EXPRESSION "FAIL: picture differs from .*23_materials_clamp\\.png")
+endforeach()
+vkt_chapter_test(bad_input.23_materials.term_word 23_materials EXIT 2 ARGS --term g
+  EXPECT "--term wants one of all, d, f, v, not 'g'")
+vkt_chapter_test(bad_input.23_materials.term_model 23_materials EXIT 2
+  ARGS --model cubes.gltf --term d --sky uniform
+  EXPECT "--term d shows the sphere grid's BRDF: leave out --model")
+vkt_chapter_test(bad_input.23_materials.term_furnace 23_materials EXIT 2
+  ARGS --scene furnace --term f --sky uniform
+  EXPECT "--term f needs the grid's lights: leave out --scene furnace")
+vkt_chapter_test(bad_input.23_materials.term_verify 23_materials EXIT 2
+  ARGS --verify cpu --term v --sky uniform
+  EXPECT "--verify cpu checks the whole BRDF: leave out --term v")
+vkt_chapter_test(bad_input.23_materials.term_view 23_materials EXIT 2 ARGS --view brdf --term d
+  EXPECT "--term d draws the spheres: leave out --view brdf")
+vkt_chapter_test(bad_input.23_materials.term_environment 23_materials EXIT 2 ARGS --term d
+  EXPECT "--term d is drawn by the uniform sky's shader: add --sky uniform")
+
 # A glTF file with every texture: assets/gltf/pbr_cubes.gltf, two cubes of
 # studs (normal map), polished metal studs on a rough dielectric checker
 # (metallic-roughness), dark rings at their feet (occlusion) and a glowing
@@ -221,7 +269,7 @@ vkt_chapter_test(bad_input.23_materials.missing_model 23_materials EXIT 1
 
 vkt_chapter_test(chapter.23_materials.help 23_materials EXIT 0 ARGS --help
   EXPECT "usage: 23_materials" "--exposure EV" "--tone-map CURVE" "--scene SCENE" "--sky SKY" "--bloom F"
-         "--bloom-average KIND" "--model FILE" "--verify CHECK")
+         "--bloom-average KIND" "--term TERM" "--model FILE" "--verify CHECK")
 
 # Bad input: one clear line and exit status 2.
 vkt_chapter_test(bad_input.23_materials.exposure_range 23_materials EXIT 2 ARGS --exposure 11
