@@ -71,6 +71,10 @@ vkt_chapter_test(chapter.21_multisampling.overlay 21_multisampling
   GOLDEN_FILE 21_multisampling_overlay.png LABELS bless ${VKT_21_PANEL}
   ARGS --headless --validation --frames 3 --size 640x480 --overlay on
   EXPECT "overlay: 'Samples: 4' at [0-9]+,[0-9]+ [0-9]+x[0-9]+")
+# Offscreen (our own image, no swapchain), the same picture to the bit.
+vkt_chapter_test(chapter.21_multisampling.overlay_offscreen 21_multisampling
+  SAME_AS chapter.21_multisampling.overlay ${VKT_21_PANEL}
+  ARGS --offscreen --validation --frames 3 --size 640x480 --overlay on)
 # The panel is really there: at the tests' size, the picture with it must be
 # refused as the picture without it (the default golden run's), naming it.
 vkt_chapter_test(chapter.21_multisampling.overlay_differs 21_multisampling
