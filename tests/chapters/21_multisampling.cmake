@@ -51,7 +51,39 @@ vkt_chapter_test(chapter.21_multisampling.sample_shading 21_multisampling
   BETWEEN ${VKT_21_SPOKES},${VKT_21_SPOKE_EDGES} ${VKT_21_STRIPES},605,739
   ARGS ${headless} --sample-shading 1 EXPECT "4x samples .*sample shading on")
 vkt_chapter_test(chapter.21_multisampling.help 21_multisampling EXIT 0 ARGS --help
-  EXPECT "usage: 21_multisampling" "--samples N" "--sample-shading FRACTION")
+  EXPECT "usage: 21_multisampling" "--samples N" "--sample-shading FRACTION" "--overlay on\\|off")
+
+# The overlay (page 21b) in a headless run: --overlay on draws the panel, and
+# --screenshot reads the presented image with it. At 640x480, where its text
+# is legible, after 3 frames (Dear ImGui hides a new panel for its first
+# frame, while it measures it). Hand-worked pixels, from the colours of Dear
+# ImGui's dark style (StyleColorsDark), which reach the vertices as sRGB bytes:
+# - the focused title bar, TitleBgActive (0.16, 0.29, 0.48), the bytes
+#   (41, 74, 122): decoded by overlay.vert, encoded again by the _SRGB
+#   target, stored as (41, 74, 122). Without the decode: (112, 147, 184).
+# - the panel's background over the clear colour: WindowBg's 0.06 is the
+#   byte 15, linear 0.00478, at the runner's alpha 0.85 (the byte 217) over
+#   the linear clear colour (0.02, 0.02, 0.04): linear (0.00705, 0.00705,
+#   0.01003), stored as (20, 20, 26) (lavapipe: 25; within 1). Blending the
+#   bytes undecoded would give (65, 65, 67).
+set(VKT_21_PANEL PIXEL 300,18,41,74,122 300,60,20,20,26)
+vkt_chapter_test(chapter.21_multisampling.overlay 21_multisampling
+  GOLDEN_FILE 21_multisampling_overlay.png LABELS bless ${VKT_21_PANEL}
+  ARGS --headless --validation --frames 3 --size 640x480 --overlay on
+  EXPECT "overlay: 'Samples: 4' at [0-9]+,[0-9]+ [0-9]+x[0-9]+")
+# Offscreen (our own image, no swapchain), the same picture to the bit.
+vkt_chapter_test(chapter.21_multisampling.overlay_offscreen 21_multisampling
+  SAME_AS chapter.21_multisampling.overlay ${VKT_21_PANEL}
+  ARGS --offscreen --validation --frames 3 --size 640x480 --overlay on)
+# The panel is really there: at the tests' size, the picture with it must be
+# refused as the picture without it (the default golden run's), naming it.
+vkt_chapter_test(chapter.21_multisampling.overlay_differs 21_multisampling
+  SAME_AS chapter.21_multisampling ARGS ${headless} --overlay on)
+set_tests_properties(chapter.21_multisampling.overlay_differs PROPERTIES
+  PASS_REGULAR_EXPRESSION "FAIL: picture differs from .*chapter\\.21_multisampling\\.png")
+# And --overlay off is the same picture as no flag, to the bit.
+vkt_chapter_test(chapter.21_multisampling.overlay_off 21_multisampling
+  SAME_AS chapter.21_multisampling ${VKT_21_PIXEL} ARGS ${headless} --overlay off)
 
 # Bad input. A count the command line does not know: exit 2. A count the
 # device does not offer (lavapipe offers 1 and 4): exit 1, naming the device
@@ -65,6 +97,13 @@ vkt_chapter_test(bad_input.21_multisampling.samples_8 21_multisampling EXIT 1
   EXPECT "21_multisampling: error: --samples 8: llvmpipe.* cannot render a colour and depth target with 8 samples per pixel \\(it offers 1, 4\\)")
 vkt_chapter_test(bad_input.21_multisampling.samples_2 21_multisampling EXIT 1
   ARGS --headless --frames 1 --samples 2 EXPECT "--samples 2: .*\\(it offers 1, 4\\)")
+# --overlay takes on or off, and only a chapter with an overlay takes it.
+vkt_chapter_test(bad_input.21_multisampling.overlay_word 21_multisampling EXIT 2
+  ARGS --overlay yes EXPECT "--overlay wants one of on, off, not 'yes'")
+vkt_chapter_test(bad_input.21_multisampling.overlay_missing 21_multisampling EXIT 2
+  ARGS --headless --overlay EXPECT "--overlay needs a value")
+vkt_chapter_test(bad_input.21_multisampling.overlay_elsewhere 04_triangle EXIT 2
+  ARGS --headless --overlay on EXPECT "unknown argument '--overlay'")
 vkt_chapter_test(bad_input.21_multisampling.sample_shading_range 21_multisampling EXIT 2
   ARGS --sample-shading 0.1 EXPECT "--sample-shading wants a number from 0.25 to 1, not '0.1'")
 vkt_chapter_test(bad_input.21_multisampling.sample_shading_word 21_multisampling EXIT 2

@@ -89,6 +89,18 @@ const char* swapchain_maintenance_name(VkPhysicalDevice device, const HiddenName
                : VK_EXT_SWAPCHAIN_MAINTENANCE_1_EXTENSION_NAME;
 }
 
+// --overlay, for the chapters with the overlay (ChapterSpec::overlay,
+// chapter 21) and no other: a headless run can show the panel too.
+OptionSpec overlay_option() {
+    return {.name = "--overlay",
+            .type = OptionType::choice,
+            .help =
+                "the settings panel: on, in every run (headless and --frames too,\n"
+                "so --screenshot shows it); off, in none (default: only in a\n"
+                "window run without --frames, where the mouse can reach it)",
+            .choices = {"on", "off"}};
+}
+
 }  // namespace
 
 Harness::Harness(const Options& options, const ChapterSpec& spec, uint32_t frames_in_flight)
@@ -119,7 +131,8 @@ void Harness::open_presentation() {
         try {
             window_ = std::make_unique<Window>(
                 spec_.title, VkExtent2D{options_.width, options_.height},
-                spec_.overlay && overlay_available() && spec_.input != InputUse::mouse_look
+                spec_.overlay && overlay_available() && spec_.input != InputUse::mouse_look &&
+                        overlay_choice() != "off"
                     ? InputUse::pointer
                     : spec_.input);
             presentation_ = Presentation::window;
@@ -261,6 +274,17 @@ bool Harness::fixed_step() const {
     return !window_ || options_.frames.has_value();
 }
 
+std::string_view Harness::overlay_choice() const {
+    return options_.has("--overlay") ? std::string_view(options_.text("--overlay")) : "";
+}
+
+bool Harness::overlay() const {
+    if (!spec_.overlay || overlay_choice() == "off") return false;
+    // Where the reader can use it: a window run without --frames (with it,
+    // as headless, no input reaches the frames). --overlay on: every run.
+    return overlay_choice() == "on" || (window_ && !fixed_step());
+}
+
 double Harness::time(uint64_t index) const {
     return fixed_step() ? double(index) * fixed_time_step : window_->seconds() - start_seconds_;
 }
@@ -346,11 +370,13 @@ void Harness::finish(const Destination& where, const Readback* last_frame) {
 
 int run_in_harness(int argc, char** argv, const ChapterSpec& spec, uint32_t frames_in_flight,
                    const std::function<void(Harness&)>& loop) {
-    return detail::guarded(argc, argv, Flags::frame_loop, spec.options, spec.check_options,
+    ChapterSpec with_overlay = spec;  // its flags, and --overlay where it has one
+    if (spec.overlay) with_overlay.options.push_back(overlay_option());
+    return detail::guarded(argc, argv, Flags::frame_loop, with_overlay.options, spec.check_options,
                            [&](const Options& options) {
                                std::shared_ptr<const ValidationCounts> counts;
                                {
-                                   Harness harness(options, spec, frames_in_flight);
+                                   Harness harness(options, with_overlay, frames_in_flight);
                                    if (harness.validation()) counts = harness.counts();
                                    loop(harness);
                                }  // everything destroyed: the layer has said all it will say

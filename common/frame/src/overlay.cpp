@@ -81,7 +81,14 @@ public:
         if (changed) said(label, names[size_t(index)]);
         return changed;
     }
-    void text(const std::string& line) override { ImGui::TextUnformatted(line.c_str()); }
+    void text(const std::string& line) override {
+        // Wrapped at 24 em, or sooner in a narrow window: a long line
+        // (chapter 21's memory note) would widen the panel past its edge.
+        const float room = ImGui::GetIO().DisplaySize.x - 30.0f;  // less the margins
+        ImGui::PushTextWrapPos(std::max(std::min(ImGui::GetFontSize() * 24.0f, room), 100.0f));
+        ImGui::TextUnformatted(line.c_str());
+        ImGui::PopTextWrapPos();
+    }
 
 private:
     void where(const std::string& name) {

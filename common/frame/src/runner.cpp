@@ -76,12 +76,13 @@ void ChapterRun::run(const RendererFactory& factory) {
     renderer_ = factory(context);
 
     Window* window = harness_.window();
-    // The overlay only where the reader can use it: a window run without
-    // --frames (with it, as headless, no input reaches the frames, and the
-    // pictures must be exact).
-    if (window && spec_.overlay && !harness_.fixed_step()) {
+    // The overlay where the reader can use it (a window run without
+    // --frames), or where --overlay on asks for it: a headless picture of it.
+    if (harness_.overlay()) {
         if (overlay_available())
             overlay_ = std::make_unique<Overlay>(context);
+        else if (harness_.overlay_choice() == "on")
+            throw Error("--overlay on: this build has no Dear ImGui (libimgui-dev), so no overlay");
         else
             std::fprintf(stderr, "%s: no overlay: this build has no Dear ImGui\n",
                          spec_.name.c_str());

@@ -21,6 +21,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace vkt {
@@ -32,8 +33,10 @@ struct ChapterSpec {
     std::vector<OptionSpec> options;  // the chapter's own flags (--model, --lights, ...)
     InputUse input = InputUse::none;  // what input the chapter wants in a window (chapter 11)
     // The on-screen overlay of the chapter's settings (Renderer::overlay,
-    // chapter 21), in a window only; its CMake call says OVERLAY too, for the
-    // overlay's shaders. The window then reports the pointer (InputUse::pointer).
+    // chapter 21), in a window run without --frames, or in any run with
+    // --overlay on (a flag only such chapters take); its CMake call says
+    // OVERLAY too, for the overlay's shaders. The window then reports the
+    // pointer (InputUse::pointer).
     bool overlay = false;
     // The chapter may write its frames from a compute shader: give our own
     // target a storage view (Frame::target_storage, chapter 20). Only where
@@ -113,6 +116,11 @@ public:
     double time(uint64_t index) const;
     // Whether the time follows the frame index rather than the clock.
     bool fixed_step() const;
+    // Whether the runner draws the chapter's overlay (ChapterSpec::overlay):
+    // in a window run without --frames, or wherever --overlay on asks.
+    bool overlay() const;
+    // What --overlay said: "on", "off", or "" (not given).
+    std::string_view overlay_choice() const;
     // The size to make a swapchain: the window's framebuffer, or --size.
     VkExtent2D wanted_extent() const;
     // True once after the window changed size (never headless).

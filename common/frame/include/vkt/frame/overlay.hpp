@@ -2,9 +2,9 @@
 // The on-screen overlay, taught in chapter 21: a small panel of a chapter's
 // settings that the reader changes live with the mouse. Dear ImGui lays the
 // widgets out; the runner draws them with a pipeline of its own
-// (common/frame/src/overlay.cpp) over the finished frame. Only in an
-// open-ended window run (no --frames), so headless, offscreen and scripted
-// pictures, and with them every golden test, never contain it.
+// (common/frame/src/overlay.cpp) over the finished frame. In an open-ended
+// window run (no --frames); headless, offscreen and scripted pictures show
+// it only when --overlay on asks (chapter 21's overlay golden test).
 
 #include <span>
 #include <string>
