@@ -370,13 +370,16 @@ void Harness::finish(const Destination& where, const Readback* last_frame) {
 
 int run_in_harness(int argc, char** argv, const ChapterSpec& spec, uint32_t frames_in_flight,
                    const std::function<void(Harness&)>& loop) {
-    ChapterSpec with_overlay = spec;  // its flags, and --overlay where it has one
-    if (spec.overlay) with_overlay.options.push_back(overlay_option());
-    return detail::guarded(argc, argv, Flags::frame_loop, with_overlay.options, spec.check_options,
+    // The chapter's flags, and --overlay where it has one. Not a copy of the
+    // spec: a chapter's check_options may still change its requirements
+    // (chapter 28 asks for mesh shaders only with --path task).
+    std::vector<OptionSpec> flags = spec.options;
+    if (spec.overlay) flags.push_back(overlay_option());
+    return detail::guarded(argc, argv, Flags::frame_loop, flags, spec.check_options,
                            [&](const Options& options) {
                                std::shared_ptr<const ValidationCounts> counts;
                                {
-                                   Harness harness(options, with_overlay, frames_in_flight);
+                                   Harness harness(options, spec, frames_in_flight);
                                    if (harness.validation()) counts = harness.counts();
                                    loop(harness);
                                }  // everything destroyed: the layer has said all it will say
