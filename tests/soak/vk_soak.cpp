@@ -14,10 +14,11 @@
 // first use (07 and 08 read in 48-64 KiB more of libm around frame 3,700,
 // when their angles grow past where sin and cos change method), bounded by
 // the size of the files. Each block of 50 frames keeps its least sample;
-// the frames measured are cut into eight segments, and growth is the median
-// of the seven rises from one segment's least sample to the next one's, per
-// frame times the frames measured (soak_growth.hpp says why: a steady leak
-// reads at its full size, up to three steps of memory kept once as none). Live Vulkan objects and
+// the frames measured are cut into eight segments, and growth is the least
+// of the six rises from one segment's least sample to the next one's (the
+// first segment is warm-up), per frame times the frames measured
+// (soak_growth.hpp says why: a steady leak reads at its full size, memory
+// kept once or given back later as none). Live Vulkan objects and
 // device allocations are exact counts, compared at frame VKT_SOAK_FROM and at the last frame. At
 // exit it prints
 //   vkt_soak: frames 500..10000: resident +0 KiB (limit 64; file-backed +0
@@ -176,7 +177,7 @@ __attribute__((destructor)) void report() {
         heap.push_back(min.heap_bytes);
     }
     auto growth = [&](const std::vector<int64_t>& minima) {
-        return int64_t(vkt::soak::median_rise_growth(minima, block, frames));
+        return int64_t(vkt::soak::least_rise_growth(minima, block, frames));
     };
     const char* rss_text = std::getenv("VKT_SOAK_RSS_KIB");
     const int64_t rss_limit = rss_text ? std::atoll(rss_text) : 64;
