@@ -188,13 +188,9 @@ vkt_chapter_test(chapter.23_materials.cube_made 23_materials PIXEL 0,0,59,69,92
   ARGS ${headless} --sky uniform --model ${vkt_23_made} EXPECT "a glTF model")
 set_property(TEST chapter.23_materials.cube_tangent chapter.23_materials.cube_made
   APPEND PROPERTY FIXTURES_REQUIRED vkt_23_single_cube)
-add_test(NAME chapter.23_materials.made_frame_agrees
-  COMMAND vkt_chapter_check --compare ${VKT_TEST_OUTPUT}/chapter.23_materials.cube_tangent.png
-          ${VKT_TEST_OUTPUT}/chapter.23_materials.cube_made.png --tolerance 0.05,1,0.0002)
-set_tests_properties(chapter.23_materials.made_frame_agrees PROPERTIES LABELS chapter
-  PASS_REGULAR_EXPRESSION "is within the tolerance")
-vkt_same_picture(chapter.23_materials.made_frame_agrees chapter.23_materials.cube_tangent)
-vkt_same_picture(chapter.23_materials.made_frame_agrees chapter.23_materials.cube_made)
+vkt_compare_pictures(chapter.23_materials.made_frame_agrees
+  chapter.23_materials.cube_tangent chapter.23_materials.cube_made
+  AGREE TOLERANCE 0.05,1,0.0002)
 
 # Page 23e's maps switched on in turn: the same single cube (TANGENT) with
 # only the first N of its five maps (make_pbr_cubes.py --maps N): 1 base
@@ -232,13 +228,8 @@ foreach(step IN LISTS vkt_23_maps ITEMS 5)
   endif()
   if(vkt_23_previous)
     string(SUBSTRING ${step} 0 1 n)
-    add_test(NAME chapter.23_materials.maps_${n}_differs
-      COMMAND vkt_chapter_check --compare ${VKT_TEST_OUTPUT}/${vkt_23_previous}.png
-              ${VKT_TEST_OUTPUT}/${vkt_23_test}.png --tolerance 0.2,2,0.001)
-    set_tests_properties(chapter.23_materials.maps_${n}_differs PROPERTIES LABELS chapter
-      PASS_REGULAR_EXPRESSION "differs: .* is outside the tolerance of ")
-    vkt_same_picture(chapter.23_materials.maps_${n}_differs ${vkt_23_previous})
-    vkt_same_picture(chapter.23_materials.maps_${n}_differs ${vkt_23_test})
+    vkt_compare_pictures(chapter.23_materials.maps_${n}_differs ${vkt_23_previous} ${vkt_23_test}
+      DIFFER TOLERANCE 0.2,2,0.001)
   endif()
   set(vkt_23_previous ${vkt_23_test})
 endforeach()

@@ -37,13 +37,9 @@ vkt_chapter_test(chapter.26_mesh_shaders.no_culling 26_mesh_shaders SAME_AS chap
 vkt_chapter_test(chapter.26_mesh_shaders.indirect 26_mesh_shaders ${VKT_26_PIXEL}
   ARGS ${headless} --draw indirect
   EXPECT "one vkCmdDrawIndexedIndirect \\(vertex shader\\)" "submitted 30720 triangles \\(the whole model\\)")
-add_test(NAME chapter.26_mesh_shaders.indirect_agrees
-  COMMAND vkt_chapter_check --compare ${VKT_TEST_OUTPUT}/chapter.26_mesh_shaders.png
-          ${VKT_TEST_OUTPUT}/chapter.26_mesh_shaders.indirect.png --tolerance 0.05,1,0.0002)
-set_tests_properties(chapter.26_mesh_shaders.indirect_agrees PROPERTIES LABELS chapter
-  PASS_REGULAR_EXPRESSION "is within the tolerance")
-vkt_same_picture(chapter.26_mesh_shaders.indirect_agrees chapter.26_mesh_shaders)
-vkt_same_picture(chapter.26_mesh_shaders.indirect_agrees chapter.26_mesh_shaders.indirect)
+vkt_compare_pictures(chapter.26_mesh_shaders.indirect_agrees
+  chapter.26_mesh_shaders chapter.26_mesh_shaders.indirect
+  AGREE TOLERANCE 0.05,1,0.0002)
 # The gaze turned 30 degrees left: the right part of the knot leaves the
 # frustum. Turned 180 degrees: everything lies behind the camera.
 vkt_chapter_test(chapter.26_mesh_shaders.turn_30 26_mesh_shaders ${VKT_26_PIXEL}
@@ -98,13 +94,9 @@ vkt_chapter_test(chapter.26_mesh_shaders.fine_knot_no_culling 26_mesh_shaders
 vkt_chapter_test(chapter.26_mesh_shaders.fine_knot_indirect 26_mesh_shaders ${VKT_26_PIXEL}
   ARGS ${headless} --model ${vkt_26_fine} --draw indirect
   EXPECT "submitted 184320 triangles \\(the whole model\\)")
-add_test(NAME chapter.26_mesh_shaders.fine_knot_indirect_agrees
-  COMMAND vkt_chapter_check --compare ${VKT_TEST_OUTPUT}/chapter.26_mesh_shaders.fine_knot.png
-          ${VKT_TEST_OUTPUT}/chapter.26_mesh_shaders.fine_knot_indirect.png --tolerance 0.05,1,0.0002)
-set_tests_properties(chapter.26_mesh_shaders.fine_knot_indirect_agrees PROPERTIES LABELS chapter
-  PASS_REGULAR_EXPRESSION "is within the tolerance")
-vkt_same_picture(chapter.26_mesh_shaders.fine_knot_indirect_agrees chapter.26_mesh_shaders.fine_knot)
-vkt_same_picture(chapter.26_mesh_shaders.fine_knot_indirect_agrees chapter.26_mesh_shaders.fine_knot_indirect)
+vkt_compare_pictures(chapter.26_mesh_shaders.fine_knot_indirect_agrees
+  chapter.26_mesh_shaders.fine_knot chapter.26_mesh_shaders.fine_knot_indirect
+  AGREE TOLERANCE 0.05,1,0.0002)
 set_property(TEST chapter.26_mesh_shaders.fine_knot chapter.26_mesh_shaders.fine_knot_no_culling
   chapter.26_mesh_shaders.fine_knot_indirect APPEND PROPERTY FIXTURES_REQUIRED vkt_26_fine)
 # The default knot is still the stored one, byte for byte; and a bad count

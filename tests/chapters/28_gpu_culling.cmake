@@ -95,29 +95,18 @@ vkt_chapter_test(chapter.28_gpu_culling.path_task_meshlet_cull_off 28_gpu_cullin
   SAME_AS chapter.28_gpu_culling.path_task ARGS ${headless} ${VKT_28_ARGS} --path task
   --meshlet-cull off
   EXPECT "--meshlet-cull off: ([0-9]+) meshlets of the drawn instances, \\1 launched; 0 culled: 0 outside the frustum, 0 facing away, 0 occluded")
-add_test(NAME chapter.28_gpu_culling.path_task_agrees
-  COMMAND vkt_chapter_check --compare ${VKT_TEST_OUTPUT}/chapter.28_gpu_culling.png
-          ${VKT_TEST_OUTPUT}/chapter.28_gpu_culling.path_task.png
-          --tolerance ${VKT_28_TASK_TOLERANCE})
-set_tests_properties(chapter.28_gpu_culling.path_task_agrees PROPERTIES LABELS chapter
-  PASS_REGULAR_EXPRESSION "is within the tolerance")
-vkt_same_picture(chapter.28_gpu_culling.path_task_agrees chapter.28_gpu_culling)
-vkt_same_picture(chapter.28_gpu_culling.path_task_agrees chapter.28_gpu_culling.path_task)
+vkt_compare_pictures(chapter.28_gpu_culling.path_task_agrees
+  chapter.28_gpu_culling chapter.28_gpu_culling.path_task
+  AGREE TOLERANCE ${VKT_28_TASK_TOLERANCE})
 # The tolerance refuses a picture that is nearly right: the task path one
 # frame later (the camera turned by a hundredth of a degree; 0.6% of the
 # pixels, at the edges, differ).
 vkt_chapter_test(chapter.28_gpu_culling.path_task_frame_11 28_gpu_culling PIXEL 0,0,196,218,243
   ARGS --headless --validation --frames 11 --size ${VKT_TEST_SIZE} ${VKT_28_ARGS} --path task
   EXPECT "${VKT_28_COUNTS}")
-add_test(NAME chapter.28_gpu_culling.path_task_tolerance_refuses
-  COMMAND vkt_chapter_check --compare ${VKT_TEST_OUTPUT}/chapter.28_gpu_culling.png
-          ${VKT_TEST_OUTPUT}/chapter.28_gpu_culling.path_task_frame_11.png
-          --tolerance ${VKT_28_TASK_TOLERANCE})
-set_tests_properties(chapter.28_gpu_culling.path_task_tolerance_refuses PROPERTIES
-  LABELS chapter PASS_REGULAR_EXPRESSION "is outside the tolerance")
-vkt_same_picture(chapter.28_gpu_culling.path_task_tolerance_refuses chapter.28_gpu_culling)
-vkt_same_picture(chapter.28_gpu_culling.path_task_tolerance_refuses
-  chapter.28_gpu_culling.path_task_frame_11)
+vkt_compare_pictures(chapter.28_gpu_culling.path_task_tolerance_refuses
+  chapter.28_gpu_culling chapter.28_gpu_culling.path_task_frame_11
+  DIFFER TOLERANCE ${VKT_28_TASK_TOLERANCE})
 # Within the task path, culling is invisible to the bit, as in the indirect.
 vkt_chapter_test(chapter.28_gpu_culling.path_task_cull_none 28_gpu_culling
   SAME_AS chapter.28_gpu_culling.path_task ARGS ${headless} ${VKT_28_ARGS} --path task --cull none
