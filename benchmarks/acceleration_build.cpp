@@ -175,29 +175,9 @@ struct BottomSample {
 // ALLOW_COMPACTION, opaque), timed alone: the build, then the compacting copy.
 BottomSample time_bottom_level(const vkt::Gpu& gpu, const ch24::RayFunctions& ray,
                                VkDeviceSize alignment, Stopwatch& watch, const Mesh& mesh) {
-    VkAccelerationStructureGeometryKHR geometry{
-        .sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR,
-        .geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR,
-        .flags = VK_GEOMETRY_OPAQUE_BIT_KHR,
-    };
-    geometry.geometry.triangles = {
-        .sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR,
-        .vertexFormat = VK_FORMAT_R32G32B32_SFLOAT,
-        .vertexData = {.deviceAddress = mesh.vertices.address},
-        .vertexStride = sizeof(vkt::shapes::Vertex),
-        .maxVertex = mesh.vertex_count - 1,
-        .indexType = mesh.index_type,
-        .indexData = {.deviceAddress = mesh.indices.address},
-    };
-    VkAccelerationStructureBuildGeometryInfoKHR build{
-        .sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR,
-        .type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
-        .flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
-                 VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR,
-        .mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR,
-        .geometryCount = 1,
-        .pGeometries = &geometry,
-    };
+    const VkAccelerationStructureGeometryKHR geometry = ch24::triangle_geometry(
+        mesh.vertices.address, mesh.vertex_count, mesh.index_type, mesh.indices.address);
+    VkAccelerationStructureBuildGeometryInfoKHR build = ch24::bottom_level_build(&geometry);
     VkAccelerationStructureBuildSizesInfoKHR sizes{
         .sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
     ray.build_sizes(gpu.device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &build,

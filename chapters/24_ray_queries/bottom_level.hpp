@@ -19,58 +19,74 @@ struct BottomLevelReport {
     VkDeviceSize built_bytes = 0, compacted_bytes = 0, scratch_bytes = 0;
 };
 
+// [geometry]
+// A mesh as one triangle geometry: positions (the first 12 bytes of every
+// vertex) and indices, read through their buffers' GPU addresses. OPAQUE: no
+// any-hit work, every hit counts.
+inline VkAccelerationStructureGeometryKHR triangle_geometry(VkDeviceAddress vertices,
+                                                            uint32_t vertex_count,
+                                                            VkIndexType index_type,
+                                                            VkDeviceAddress indices) {
+    return {
+        .sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR,
+        .geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR,
+        .geometry =
+            {.triangles =
+                 {
+                     .sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR,
+                     .vertexFormat = VK_FORMAT_R32G32B32_SFLOAT,
+                     .vertexData = {.deviceAddress = vertices},
+                     .vertexStride = sizeof(vkt::shapes::Vertex),
+                     .maxVertex = vertex_count - 1,
+                     .indexType = index_type,
+                     .indexData = {.deviceAddress = indices},
+                 }},
+        .flags = VK_GEOMETRY_OPAQUE_BIT_KHR,
+    };
+}
+// [/geometry]
+
+// [build-info]
+// One bottom level's build of one geometry: PREFER_FAST_TRACE (it is built
+// once and traced every frame), ALLOW_COMPACTION (so that the device can
+// later tell how small the finished structure can be). The destination and
+// the scratch address are filled in once they exist.
+inline VkAccelerationStructureBuildGeometryInfoKHR bottom_level_build(
+    const VkAccelerationStructureGeometryKHR* geometry) {
+    return {
+        .sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR,
+        .type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
+        .flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
+                 VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR,
+        .mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR,
+        .geometryCount = 1,
+        .pGeometries = geometry,
+    };
+}
+// [/build-info]
+
 inline std::vector<AccelerationStructure> build_bottom_levels(
     const vkt::Gpu& gpu, const RayFunctions& ray, VkDeviceSize scratch_alignment,
     std::span<const vkt::shapes::MeshRange> meshes, VkDeviceAddress vertices, uint32_t vertex_count,
     VkDeviceAddress indices, BottomLevelReport& report) {
     const size_t count = meshes.size();
-    // [geometry]
-    // Each mesh is one triangle geometry: positions (the first 12 bytes of
-    // every vertex) and 16-bit indices, read through their buffers' GPU
-    // addresses. OPAQUE: no any-hit work, every hit counts.
     std::vector<VkAccelerationStructureGeometryKHR> geometries(count);
     std::vector<VkAccelerationStructureBuildRangeInfoKHR> ranges(count);
     for (size_t i = 0; i < count; ++i) {
-        geometries[i] = VkAccelerationStructureGeometryKHR{
-            .sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR,
-            .geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR,
-            .geometry =
-                {.triangles =
-                     {
-                         .sType =
-                             VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR,
-                         .vertexFormat = VK_FORMAT_R32G32B32_SFLOAT,
-                         .vertexData = {.deviceAddress = vertices},
-                         .vertexStride = sizeof(vkt::shapes::Vertex),
-                         .maxVertex = vertex_count - 1,
-                         .indexType = VK_INDEX_TYPE_UINT16,
-                         .indexData = {.deviceAddress =
-                                           indices + meshes[i].first_index * sizeof(uint16_t)},
-                     }},
-            .flags = VK_GEOMETRY_OPAQUE_BIT_KHR,
-        };
+        geometries[i] = triangle_geometry(vertices, vertex_count, VK_INDEX_TYPE_UINT16,
+                                          indices + meshes[i].first_index * sizeof(uint16_t));
         ranges[i] = {.primitiveCount = meshes[i].index_count / 3};
     }
-    // [/geometry]
 
     // [sizes]
     // How big each structure and its scratch space must be: a question
-    // asked of the device, which alone knows its layout. ALLOW_COMPACTION,
-    // so that it can later tell how small the finished structure can be.
+    // asked of the device, which alone knows its layout.
     std::vector<VkAccelerationStructureBuildGeometryInfoKHR> builds(count);
     std::vector<AccelerationStructure> built(count);
     std::vector<VkDeviceSize> scratch_offsets(count);
     VkDeviceSize scratch_size = 0;
     for (size_t i = 0; i < count; ++i) {
-        builds[i] = VkAccelerationStructureBuildGeometryInfoKHR{
-            .sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR,
-            .type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
-            .flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
-                     VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR,
-            .mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR,
-            .geometryCount = 1,
-            .pGeometries = &geometries[i],
-        };
+        builds[i] = bottom_level_build(&geometries[i]);
         VkAccelerationStructureBuildSizesInfoKHR sizes{
             .sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
         ray.build_sizes(gpu.device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &builds[i],
