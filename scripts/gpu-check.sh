@@ -114,6 +114,9 @@ for run in "22_shadows|22_shadows_map|320x240|--view map" \
            "23_materials|23_materials_view_irradiance|640x480|--view irradiance" \
            "23_materials|23_materials_view_prefiltered|640x480|--view prefiltered" \
            "23_materials|23_materials_view_brdf|640x480|--view brdf --tone-map clamp" \
+           "23_materials|23_materials_term_d|320x240|--sky uniform --tone-map clamp --term d" \
+           "23_materials|23_materials_term_f|320x240|--sky uniform --tone-map clamp --term f" \
+           "23_materials|23_materials_term_v|320x240|--sky uniform --tone-map clamp --term v" \
            "28_gpu_culling|28_gpu_culling_pyramid|320x240|--instances 4096 --view pyramid --level 1" \
            "28_gpu_culling|28_gpu_culling_culled|320x240|--instances 4096 --view culled" \
            "28_gpu_culling|28_gpu_culling_task_culled|320x240|--instances 4096 --path task --view culled"; do
@@ -124,6 +127,14 @@ for run in "22_shadows|22_shadows_map|320x240|--view map" \
   echo "$chapter $extra picture vs lavapipe golden: exit $rc; $(grep -h -E '^picture|^FAIL' "$out/gpu.$name.check.txt" | tr '\n' ' ')"
   [ $rc -eq 0 ] || status=1
 done
+# Chapter 21's settings panel drawn headless (--overlay on, page 21b), after
+# 3 frames as tests/chapters/21_multisampling.cmake has it.
+if [ -x "$bin/21_multisampling" ]; then
+  check 21_multisampling_overlay 21_multisampling tests/golden/21_multisampling_overlay.png "" \
+    "--headless --validation --frames 3 --size 640x480 --overlay on"; rc=$?
+  echo "21_multisampling --overlay on picture vs lavapipe golden: exit $rc; $(grep -h -E '^picture|^FAIL' "$out/gpu.21_multisampling_overlay.check.txt" | tr '\n' ' ')"
+  [ $rc -eq 0 ] || status=1
+fi
 # Chapter 25 lays its shader binding table out by the device's alignments and
 # caps its recursion by the device's maxRayRecursionDepth: both lines, and the
 # picture without reflections against its own lavapipe golden.
