@@ -34,7 +34,7 @@ vkt_chapter_test(chapter.22_shadows.map 22_shadows GOLDEN_FILE 22_shadows_map.pn
   ARGS ${headless} --view map EXPECT "the shadow map shown")
 # One cascade and four: the same shadow and the same light at the two pixels.
 vkt_chapter_test(chapter.22_shadows.one_cascade 22_shadows ${VKT_22_PIXEL}
-  ARGS ${headless} --cascades 1 EXPECT "1 cascades of 1024x1024")
+  ARGS ${headless} --cascades 1 EXPECT "1 cascade of 1024x1024")
 vkt_chapter_test(chapter.22_shadows.four_cascades 22_shadows ${VKT_22_PIXEL}
   ARGS ${headless} --cascades 4 EXPECT "4 cascades of 1024x1024")
 # Without the bias the lit floor shadows itself (acne): around the lit pixel
