@@ -43,13 +43,13 @@ def loaded_functions() -> dict:
 def in_order(path: Path, needles: list) -> None:
     """Each needle occurs in path, after the one before it."""
     text = path.read_text(encoding="utf-8")
-    at = 0
+    at, before = 0, None
     for needle in needles:
         found = text.find(needle, at)
         if found < 0:
-            stop(str(path.relative_to(ROOT)), f"'{needle}' is not there after '{text[at - 40:at]}'"
-                 if at else f"'{needle}' is not there")
-        at = found + len(needle)
+            stop(str(path.relative_to(ROOT)),
+                 f"'{needle}' is not there after '{before}'" if before else f"'{needle}' is not there")
+        at, before = found + len(needle), needle
 
 
 def calls() -> tuple:
