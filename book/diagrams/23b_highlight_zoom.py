@@ -30,7 +30,7 @@ def saturated(pixels) -> int:
 
 def main() -> None:
     narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
-    zoom, x0, gap, size = (4, 16, 16, 12) if narrow else (6, 20, 30, 13.5)
+    zoom, x0, gap, size = (4, 16, 16, 13) if narrow else (6, 20, 30, 13.5)
     w, h, y0 = CROP_W * zoom, CROP_H * zoom, 34
     pictures = [(read_png(GOLDEN / name), flag) for name, flag in COLUMNS]
     counts = [saturated(p) for p, _ in pictures]
@@ -50,7 +50,7 @@ def main() -> None:
         s.text(x + w / 2, y0 + h + 18, f"{count} pixels at 255", size=size, anchor="middle", fill=MUTED)
     where = f"x {LEFT}..{LEFT + CROP_W - 1}, y {TOP}..{TOP + CROP_H - 1} of the 320x240 picture"
     s.lines(x0, y0 + h + 40, [where + ",", f"--sky uniform, each pixel enlarged {zoom} times"],
-            size=size - 0.5 if narrow else size, fill=MUTED)
+            size=size, fill=MUTED)
     s.write()
 
 
