@@ -27,7 +27,7 @@ def main() -> None:
     s = Svg(1000, Y0 + h + 120, "Chapter 23: the glTF test model, enlarged 5 times",
             "The two cubes of assets/gltf/pbr_cubes.gltf from the chapter's test picture, each pixel "
             "enlarged 5 times: a red and white checker, a dark polished metal stud on every square "
-            "with a small highlight, a darker ring where each stud meets the square, and an orange "
+            "with a small highlight, a darker ring where each stud meets the square, and a yellow "
             "glowing ring in the middle of each face. The left cube has tangents in the file, the "
             "right one has them made in the shader; both show the same round raised studs, though the cubes stand at different angles.")
     s.text(20, 28, "--model assets/gltf/pbr_cubes.gltf at 320x240, enlarged 5 times", size=14, bold=True)
@@ -40,7 +40,7 @@ def main() -> None:
     s.text(X0 + (212 - LEFT) * ZOOM, Y0 + h + 24, "right: no TANGENT, the frame made from dFdx, dFdy",
            size=13, anchor="middle")
     s.lines(20, Y0 + h + 58, [
-        "Ringed (dashed): the emissive texture, a ring that glows orange whatever the light. On every "
+        "Ringed (dashed): the emissive texture, a ring that glows yellow whatever the light. On every "
         "square a stud: dark",
         "polished metal (metallic-roughness) with a small white highlight, its round relief the normal "
         "map; the darker rim",

@@ -48,7 +48,7 @@ def main() -> None:
         "flat discs of dark polished metal; almost everything changes. 3, with the normal map: the "
         "discs become round raised studs; the change is a bright and a dark edge on each. 4, with "
         "occlusion: a faint darker rim at each stud's foot; the change is a thin ring per stud. 5, "
-        "with emissive: an orange glowing ring in the middle of each face; only the rings change.")
+        "with emissive: a yellow glowing ring in the middle of each face; only the rings change.")
     where = f"x {LEFT}..{LEFT + CROP - 1}, y {TOP}..{TOP + CROP - 1} of each 320x240 picture"
     if narrow:
         zoom, margin, gap, size = 1.25, 14, 12, 12.5
