@@ -177,8 +177,9 @@ public:
         std::fprintf(stderr,
                      "22_shadows: %u cascade%s of %ux%u, splits at %.1f %.1f %.1f %.1f, bias %.2f "
                      "+ %.2f x slope%s\n",
-                     cascades_, cascades_ == 1 ? "" : "s", shadow_size, shadow_size, block_.splits[0], block_.splits[1],
-                     block_.splits[2], block_.splits[3], bias_constant_, bias_slope_,
+                     cascades_, cascades_ == 1 ? "" : "s", shadow_size, shadow_size,
+                     block_.splits[0], block_.splits[1], block_.splits[2], block_.splits[3],
+                     bias_constant_, bias_slope_,
                      colour_cascades_ ? ", cascades coloured"
                      : show_map_      ? ", the shadow map shown"
                                       : "");
