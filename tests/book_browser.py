@@ -91,7 +91,7 @@ SEARCH_QUERIES = (
     ("pipeline cache", "27_threads.html", r"a-pipeline-cache-on-disk"),
     ("shader binding table", "25_ray_tracing.html", r"the-shader-binding-table"),
     ("frames in flight", "03_swapchain.html", r"frames-in-flight"),
-    ("PCF", "22_shadows.html", r"looking-a-point-up-cascade-compare-filter"),
+    ("PCF", "22_shadows.html", r"looking-a-point-up-compare-filter"),
     ("timeline semaphore", "29_async_compute.html", r"timeline-semaphores"),
     ("depth pyramid", "28_gpu_culling.html", r"the-depth-pyramid"),
     ("vkCmdDrawIndexedIndirectCount", "28_gpu_culling.html", r"drawing-with-a-count"),
