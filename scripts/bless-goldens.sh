@@ -2,17 +2,19 @@
 # Re-blesses the golden images after a reviewed change:
 #   scripts/bless-goldens.sh                 every chapter
 #   scripts/bless-goldens.sh 04_triangle     only the chapters named
-# It builds the release preset, re-runs each chapter's primary (headless)
-# regression test with VKT_BLESS=1, which copies the new picture over
-# tests/golden/NN_name.png, and then runs the chapter tests normally so the
-# other variants (offscreen, window) are checked against the new pictures.
+# It builds the release preset, re-runs every test labelled bless of those
+# chapters with VKT_BLESS=1 (the chapter's primary headless test, which
+# copies its picture over tests/golden/NN_name.png, and the variants with a
+# picture of their own, NN_name_variant.png), and then runs the chapter tests
+# normally so the other variants (offscreen, window) are checked against the
+# new pictures.
 # Look at every changed picture (git diff --stat tests/golden) before committing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake --preset release >/dev/null
 cmake --build --preset release
 pattern="."
-if [ $# -gt 0 ]; then pattern="^chapter\\.($(IFS='|'; echo "$*"))\$"; fi
+if [ $# -gt 0 ]; then pattern="^chapter\\.($(IFS='|'; echo "$*"))(\\.|\$)"; fi
 VKT_BLESS=1 ctest --preset release -L bless -R "$pattern"
 ctest --preset release -L chapter
 {

@@ -267,6 +267,10 @@ Options parse_args(std::span<const char* const> args, Flags flags,
             const OptionSpec* spec = nullptr;
             for (const auto& candidate : chapter_options)
                 if (candidate.name == flag) spec = &candidate;
+            // The runner offers --overlay only to chapters with a settings
+            // panel; elsewhere say why rather than "unknown".
+            if (!spec && flag == "--overlay")
+                throw UsageError("--overlay is not used by this chapter: it has no settings panel");
             if (!spec) throw UsageError("unknown argument '" + std::string(arg) + "'");
             options.values[spec->name] = check_option_value(*spec, value());
         }
