@@ -40,6 +40,29 @@ vkt_chapter_test(chapter.23_materials.clamp 23_materials GOLDEN_FILE 23_material
 vkt_chapter_test(chapter.23_materials.exposure 23_materials PIXEL 0,0,124,134,162
   ARGS ${headless} --sky uniform --exposure 2 --tone-map clamp
   EXPECT "exposure \\+2.00 EV \\(x4.000\\), tone map clamp")
+# Page 23b's exposure strip: the uniform sky's grid through ACES at -2 and
+# +2 EV (0 EV is chapter.23_materials.uniform), each its own golden image.
+# Hand-worked sky pixels: (0.05, 0.06, 0.09) times 1/4 is (0.0125, 0.015,
+# 0.0225), through ACES (0.0052, 0.0068, 0.0126), sRGB-encoded (16.03,
+# 19.58, 29.44), stored (16, 20, 29) within 1 (lavapipe: blue 30); times 4
+# it is (0.2, 0.24, 0.36), through ACES (0.2995, 0.3600, 0.5036),
+# sRGB-encoded (148.78, 161.74, 188.13), stored (149, 162, 188) within 1
+# (lavapipe: exact).
+vkt_chapter_test(chapter.23_materials.exposure_minus_2 23_materials
+  GOLDEN_FILE 23_materials_exposure_minus_2.png LABELS bless
+  PIXEL 0,0,16,20,29,1 319,239,16,20,29,1 ARGS ${headless} --sky uniform --exposure -2
+  EXPECT "exposure -2.00 EV \\(x0.250\\), tone map ACES")
+vkt_chapter_test(chapter.23_materials.exposure_plus_2 23_materials
+  GOLDEN_FILE 23_materials_exposure_plus_2.png LABELS bless
+  PIXEL 0,0,149,162,188,1 319,239,149,162,188,1 ARGS ${headless} --sky uniform --exposure 2
+  EXPECT "exposure \\+2.00 EV \\(x4.000\\), tone map ACES")
+# Each against the picture at 0 EV must differ by more than rounding (RMSE
+# above 0.2, or more than 0.1% of the pixels more than 2 levels apart): an
+# exposure the tone-mapping pass never applied leaves the three alike.
+foreach(ev minus_2 plus_2)
+  vkt_compare_pictures(chapter.23_materials.exposure_${ev}_differs
+    chapter.23_materials.uniform chapter.23_materials.exposure_${ev} DIFFER TOLERANCE 0.2,2,0.001)
+endforeach()
 
 # The CPU reference (common/scene/include/vkt/scene/pbr.hpp): at 60 points,
 # three on each sphere, the HDR radiance the GPU wrote against the same BRDF,
