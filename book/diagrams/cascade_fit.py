@@ -97,19 +97,29 @@ def one_cascade_box_side():
 
 
 def check_page() -> None:
-    """book/22_shadows.md quotes these numbers in its prose; a page that no longer agrees
-    with the arithmetic stops the diagram, and so the book's build, with one line."""
-    page = Path(__file__).resolve().parents[1] / "22_shadows.md"
-    text = " ".join(page.read_text(encoding="utf-8").split())
+    """book/22_shadows.md and book/22b_cascades.md quote these numbers in their prose; a page
+    that no longer agrees with the arithmetic stops the diagram, and so the book's build,
+    with one line."""
+    book = Path(__file__).resolve().parents[1]
     quoted = {
-        f"a texel is {texel(0):.4f} units wide": "the near cascade's texel",
-        f"the box is {box_side(0):.2f} units across": "the near cascade's box",
-        f"floor falls about {FLOOR_SLOPE * texel(0):.4f} units": "the floor's fall across a texel",
-        f"{4 * FLOOR_SLOPE * texel(0):.3f} units in the near cascade": "the slope bias 4",
-        f"A texel is now about {one_cascade_box_side() / MAP_SIZE:.2f} units wide (a box "
-        f"{one_cascade_box_side():.0f} units across)": "--cascades 1's texel and box",
+        "22_shadows.md": {
+            f"a texel is {texel(0):.4f} units wide": "the near cascade's texel",
+            f"the box is {box_side(0):.2f} units across": "the near cascade's box",
+            f"floor falls about {FLOOR_SLOPE * texel(0):.4f} units": "the floor's fall across a texel",
+            f"{4 * FLOOR_SLOPE * texel(0):.3f} units in the near cascade": "the slope bias 4",
+            f"with one map, {one_cascade_box_side():.0f} units across": "--cascades 1's box",
+        },
+        "22b_cascades.md": {
+            f"A texel is now about {one_cascade_box_side() / MAP_SIZE:.2f} units wide (a box "
+            f"{one_cascade_box_side():.0f} units across)": "--cascades 1's texel and box",
+            f"boundaries fall at {splits()[1]:.1f} and {splits()[2]:.1f}": "the splits",
+            f"The square around the far slice is {box_side(2):.0f} units wide, over six times the "
+            f"near one's {box_side(0):.0f}": "the far and near boxes",
+        },
     }
-    for phrase, what in quoted.items():
-        if phrase not in text:
-            sys.exit(f"book/22_shadows.md: {what}: the page should say '{phrase}' "
-                     "(book/diagrams/cascade_fit.py computes it as cascades.hpp does)")
+    for name, phrases in quoted.items():
+        text = " ".join((book / name).read_text(encoding="utf-8").split())
+        for phrase, what in phrases.items():
+            if phrase not in text:
+                sys.exit(f"book/{name}: {what}: the page should say '{phrase}' "
+                         "(book/diagrams/cascade_fit.py computes it as cascades.hpp does)")
