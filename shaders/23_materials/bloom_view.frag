@@ -15,7 +15,6 @@ layout(location = 0) out vec4 radiance;
 const vec3 background = vec3(0.02);
 const float gap = 0.025;  // of a panel's width and height, on each side
 
-// [bloom-view]
 void main() {
     const vec2 extent = vec2(view.settings.xy);
     const int levels = int(view.settings.z);
@@ -40,4 +39,3 @@ void main() {
         radiance.rgb = texelFetch(up_levels, texel, level).rgb / float(levels - level);
     }
 }
-// [/bloom-view]
