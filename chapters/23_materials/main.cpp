@@ -425,7 +425,7 @@ int main(int argc, char** argv) {
          .type = vkt::OptionType::choice,
          .value_name = "VIEW",
          .help = "scene; or in its place the image-based light's images: sky, irradiance, "
-                 "prefiltered (its six levels), brdf (the table); or bloom (its levels)",
+                 "prefiltered (its six levels), brdf (the table); or bloom (the bloom's levels)",
          .default_value = "scene",
          .choices = {"scene", "sky", "irradiance", "prefiltered", "brdf", "bloom"}},
         {.name = "--verify",
