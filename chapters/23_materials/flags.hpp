@@ -7,7 +7,9 @@
 
 #include <vulkan/vulkan.h>
 
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 
 // How the bloom's first halving averages its four taps (page 23d): box, the
@@ -97,12 +99,32 @@ inline void check_flags(const vkt::Options& options) {
     if (verify == "lut" && uniform)
         throw vkt::UsageError(
             "--verify lut checks the environment's BRDF table: leave out --sky uniform");
-    if (view != "scene" && uniform)
+    if (view != "scene" && view != "bloom" && uniform)
         throw vkt::UsageError("--view " + view +
                               " shows the environment's images: leave out --sky uniform");
+    // The chain is made only with --bloom F (above 0): without it, there is nothing to show.
+    if (view == "bloom" && options.number("--bloom") == 0)
+        throw vkt::UsageError("--view bloom shows the bloom's levels: add --bloom F");
     if (options.text("--bloom-average") != "box" && options.number("--bloom") == 0)
         throw vkt::UsageError("--bloom-average " + options.text("--bloom-average") +
                               " changes the bloom: add --bloom F");
     if (view != "scene" && (verify == "cpu" || verify == "furnace"))
         throw vkt::UsageError("--verify " + verify + " checks the scene: leave out --view " + view);
+}
+
+// The flags' choices, said once at start-up (the tests read this line).
+inline void print_settings(const vkt::Options& options) {
+    const double exposure = options.number("--exposure");
+    std::fprintf(
+        stderr,
+        "23_materials: %s, sky %s, HDR target R16G16B16A16_SFLOAT, exposure %+.2f EV "
+        "(x%.3f), tone map %s, bloom %.2f%s\n",
+        options.has("--model")                 ? "a glTF model"
+        : options.text("--scene") == "furnace" ? "the white furnace"
+                                               : "the sphere grid",
+        options.text("--sky") == "environment" ? "environment (image-based light)" : "uniform",
+        exposure, std::exp2(exposure),
+        options.text("--tone-map") == "aces" ? "ACES (Narkowicz's fit)" : "clamp",
+        options.number("--bloom"),
+        options.text("--bloom-average") == "karis" ? ", Karis average" : "");
 }

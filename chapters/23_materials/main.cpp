@@ -10,6 +10,7 @@
 // scaled by the exposure and squeezed into 0..1 by a tone curve (ACES).
 
 #include "blocks.hpp"
+#include "bloom_view.hpp"
 #include "environment.hpp"
 #include "flags.hpp"
 #include "grid.hpp"
@@ -86,9 +87,8 @@ public:
                                              scene_.indices.size() * sizeof(uint32_t),
                                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
-        // The frame's block (set 0): camera, lights, sky. One buffer for
-        // every frame in flight: it changes only at a resize or from the
-        // overlay, with the GPU idle.
+        // The frame's block (set 0): camera, lights, sky. One buffer for every frame
+        // in flight: it changes only at a resize or from the overlay, GPU idle.
         frame_buffer_ =
             vkt::create_host_buffer(gpu_, sizeof(FrameBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
         const VkDescriptorSetLayoutBinding frame_binding{
@@ -152,10 +152,12 @@ public:
                 scene_layout_, fullscreen,
                 vkt::load_shader(gpu_.device, context.chapter, "background.frag"), hdr_format,
                 depth_format_);
-        if (context.options.text("--view") != "scene")  // the light's images, not the scene
-            view_.emplace(gpu_, context.chapter, *environment_,
-                          IblView::kind(context.options.text("--view")), fullscreen, hdr_format,
-                          depth_format_);
+        const std::string& view = context.options.text("--view");
+        if (view == "bloom")  // the bloom's levels, drawn once the bloom is made (page 23d)
+            bloom_view_.emplace(gpu_, context.chapter, bloom_, fullscreen, hdr_format);
+        else if (view != "scene")  // the light's images, not the scene
+            view_.emplace(gpu_, context.chapter, *environment_, IblView::kind(view), fullscreen,
+                          hdr_format, depth_format_);
 
         // [tonemap-pipeline]
         // The second pass: one full-screen triangle into the _SRGB target,
@@ -185,16 +187,7 @@ public:
                 "VK_FORMAT_R16G16B16A16_SFLOAT cannot be drawn into, sampled and stored to here");
         // [/check-format]
         resize(context.extent);
-        std::fprintf(stderr,
-                     "23_materials: %s, sky %s, HDR target R16G16B16A16_SFLOAT, exposure %+.2f EV "
-                     "(x%.3f), tone map %s, bloom %.2f%s\n",
-                     model_     ? "a glTF model"
-                     : furnace_ ? "the white furnace"
-                                : "the sphere grid",
-                     ibl_ ? "environment (image-based light)" : "uniform", double(exposure_),
-                     std::exp2(double(exposure_)),
-                     tone_map_ == 0 ? "ACES (Narkowicz's fit)" : "clamp", double(bloom_strength_),
-                     context.options.text("--bloom-average") == "karis" ? ", Karis average" : "");
+        print_settings(context.options);
     }
 
     // [overlay]
@@ -230,6 +223,7 @@ public:
                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
         depth_ = vkt::create_depth_image(gpu_.physical, gpu_.device, depth_format_, extent);
         bloom_.resize(extent, hdr_.view);
+        if (bloom_view_) bloom_view_->resize();
         vkt::write_image_descriptor(gpu_.device, hdr_set_, 1, bloom_.level0(), bloom_.sampler(),
                                     VK_IMAGE_LAYOUT_GENERAL);
         write_frame_block();
@@ -293,10 +287,12 @@ public:
             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
             VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
             VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-        if (bloom_strength_ > 0.0f) {
+        if (bloom_strength_ > 0.0f || bloom_view_) {
             auto bloom_scope = frame.gpu_scope("bloom");
-            bloom_.record(cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            bloom_.record(cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                          bloom_view_ ? bloom_view_->halfway() : nullptr);
         }
+        if (bloom_view_) bloom_view_->draw(cmd, hdr_, frame.extent);  // over the scene, unmixed
         auto scope = frame.gpu_scope("tone map");
         vkt::begin_colour_rendering(cmd, frame.target_view, frame.extent,
                                     VK_ATTACHMENT_LOAD_OP_DONT_CARE);
@@ -304,8 +300,8 @@ public:
         vkt::set_viewport_and_scissor(cmd, frame.extent);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, tonemap_layout_, 0, 1,
                                 &hdr_set_, 0, nullptr);
-        const TonemapPush settings{std::exp2(exposure_), tone_map_, bloom_strength_,
-                                   float(bloom_.levels())};
+        const TonemapPush settings{std::exp2(exposure_), tone_map_,
+                                   bloom_view_ ? 0.0f : bloom_strength_, float(bloom_.levels())};
         vkCmdPushConstants(cmd, tonemap_layout_, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof settings,
                            &settings);
         vkCmdDraw(cmd, 3, 1, 0, 0);
@@ -315,13 +311,10 @@ public:
 
     // --verify: the last frame's HDR image against the CPU reference.
     void verify() override {
-        if (verify_.empty()) return;
         if (verify_ == "lut")
-            return verify::check_lut(
-                verify::read_hdr(gpu_, environment_->lut(),
-                                 {Environment::lut_size, Environment::lut_size}),
-                Environment::lut_size, Environment::lut_samples);
-        verify::check(verify_, verify::read_hdr(gpu_, hdr_.image, extent_), extent_, furnace_);
+            verify::check_lut(gpu_, *environment_);
+        else if (!verify_.empty())
+            verify::check(verify_, verify::read_hdr(gpu_, hdr_.image, extent_), extent_, furnace_);
     }
 
 private:
@@ -362,7 +355,8 @@ private:
     vkt::GltfScene scene_;
     std::optional<MaterialSets> materials_;
     std::optional<Environment> environment_;
-    std::optional<IblView> view_;  // --view other than scene
+    std::optional<IblView> view_;          // --view sky, irradiance, prefiltered or brdf
+    std::optional<BloomView> bloom_view_;  // --view bloom
     vkt::Buffer vertices_, indices_, frame_buffer_;
     vkt::DescriptorSetLayout frame_layout_, hdr_layout_;
     vkt::DescriptorPool pool_;
@@ -430,10 +424,10 @@ int main(int argc, char** argv) {
         {.name = "--view",
          .type = vkt::OptionType::choice,
          .value_name = "VIEW",
-         .help = "scene; or the image-based light's images in its place: sky, irradiance, "
-                 "prefiltered (its six levels), brdf (the table)",
+         .help = "scene; or in its place the image-based light's images: sky, irradiance, "
+                 "prefiltered (its six levels), brdf (the table); or bloom (the bloom's levels)",
          .default_value = "scene",
-         .choices = {"scene", "sky", "irradiance", "prefiltered", "brdf"}},
+         .choices = {"scene", "sky", "irradiance", "prefiltered", "brdf", "bloom"}},
         {.name = "--verify",
          .type = vkt::OptionType::choice,
          .value_name = "CHECK",

@@ -11,6 +11,7 @@
 //            faces the eye at n.v >= 0.3: within 3% of 1 (the sky's radiance)
 //   lut      the image-based light's BRDF table against the CPU's integration
 
+#include "environment.hpp"
 #include "grid.hpp"
 
 #include "vkt/core/barrier.hpp"
@@ -159,5 +160,11 @@ inline void check_lut(const std::vector<glm::vec3>& table, uint32_t size, uint32
                  double(worst[0]), double(worst[1]));
 }
 // [/verify-lut]
+
+// The table environment.hpp made at start-up, read back and checked.
+inline void check_lut(const vkt::Gpu& gpu, const Environment& environment) {
+    check_lut(read_hdr(gpu, environment.lut(), {Environment::lut_size, Environment::lut_size}),
+              Environment::lut_size, Environment::lut_samples);
+}
 
 }  // namespace verify

@@ -389,3 +389,28 @@ vkt_chapter_test(bad_input.23_materials.view_uniform_sky 23_materials EXIT 2
 vkt_chapter_test(bad_input.23_materials.view_verify 23_materials EXIT 2
   ARGS --view brdf --verify furnace --scene furnace
   EXPECT "--verify furnace checks the scene: leave out --view brdf")
+
+# --view bloom (page 23d): this frame's bloom chain, drawn over the scene once
+# the bloom has read it, through the same exposure and ACES curve, at 640x480
+# like the views above. Twelve panels of 160 by 120 pixels from (80, 0), three
+# across: the way down's levels 0 to 5 (a copy made halfway), then the same
+# levels after the way up. Hand-worked: the background 0.02 gives (26, 26,
+# 26); the way down's levels 0 to 3 at their top left texel hold the mean of
+# at most 24 by 24 of the scene's pixels in its top left corner, bare sky
+# (0.05, 0.06, 0.09), stored (59, 69, 92) within 1, as chapter.23_materials.uniform.
+# An empty copy (the copy or its barrier gone) leaves those panels black.
+vkt_chapter_test(chapter.23_materials.view_bloom 23_materials
+  GOLDEN_FILE 23_materials_view_bloom.png LABELS bless
+  PIXEL 40,40,26,26,26 85,4,59,69,92,1 245,4,59,69,92,1 405,4,59,69,92,1 85,124,59,69,92,1
+  ARGS ${vkt_23_views} --sky uniform --bloom 0.3 --view bloom)
+# The same flags at 320x240 against the scene's golden image must fail: a view
+# that drew nothing would leave the scene there.
+vkt_chapter_test(chapter.23_materials.view_bloom_differs 23_materials GOLDEN_FILE 23_materials_bloom.png
+  ARGS ${headless} --sky uniform --bloom 0.3 --view bloom)
+set_tests_properties(chapter.23_materials.view_bloom_differs PROPERTIES
+  PASS_REGULAR_EXPRESSION "FAIL: picture differs from .*23_materials_bloom\\.png")
+vkt_chapter_test(bad_input.23_materials.view_bloom_without_bloom 23_materials EXIT 2
+  ARGS --view bloom --sky uniform EXPECT "--view bloom shows the bloom's levels: add --bloom F")
+vkt_chapter_test(bad_input.23_materials.view_bloom_verify 23_materials EXIT 2
+  ARGS --view bloom --bloom 0.3 --sky uniform --verify cpu
+  EXPECT "--verify cpu checks the scene: leave out --view bloom")

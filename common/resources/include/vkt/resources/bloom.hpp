@@ -10,7 +10,8 @@
 // queue more work. `karis` (chapter 23's --bloom-average karis) weighs the
 // first halving's taps by 1 / (1 + luma), Karis's average, against fireflies.
 // Its shaders are shaders/common/bloom/ (SHARED_SHADERS bloom/bloom_down.comp
-// bloom/bloom_up.comp).
+// bloom/bloom_up.comp). record()'s `halfway`, called between the way down and
+// the way up, is where chapter 23's --view bloom copies the way down out.
 
 #include "vkt/core/barrier.hpp"
 #include "vkt/core/check.hpp"
@@ -22,6 +23,7 @@
 #include "vkt/resources/upload.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -80,11 +82,11 @@ public:
         views_.clear();  // before the image they view
         extent_ = {std::max(extent.width / 2, 1u), std::max(extent.height / 2, 1u)};
         levels_ = std::min(max_levels, vkt::mip_level_count(extent_.width, extent_.height));
-        image_ = vkt::create_image_2d_mips(gpu_.physical, gpu_.device,
-                                           VK_FORMAT_R16G16B16A16_SFLOAT, extent_, levels_,
-                                           VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                               VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                                           VK_IMAGE_ASPECT_COLOR_BIT);
+        image_ = vkt::create_image_2d_mips(
+            gpu_.physical, gpu_.device, VK_FORMAT_R16G16B16A16_SFLOAT, extent_, levels_,
+            VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+            VK_IMAGE_ASPECT_COLOR_BIT);
         for (uint32_t level = 0; level < levels_; ++level) {
             const VkImageViewCreateInfo info{
                 .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
@@ -142,7 +144,9 @@ public:
     // queue, chapter 23's fragment shader). Then down the chain, then up,
     // each dispatch reading what the one before it wrote: a barrier between
     // every two. The HDR image must already be readable by compute shaders.
-    void record(VkCommandBuffer cmd, VkPipelineStageFlags2 readers) const {
+    // `halfway`, if given, is recorded between the way down and the way up.
+    void record(VkCommandBuffer cmd, VkPipelineStageFlags2 readers,
+                const std::function<void(VkCommandBuffer)>& halfway = {}) const {
         vkt::image_barrier(cmd, image_.image, {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels_, 0, 1},
                            VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
                            readers | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0,
@@ -167,12 +171,15 @@ public:
                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | readers,
                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
                     VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+            if (step + 1 == levels_ && halfway) halfway(cmd);
         }
     }
     // [/bloom-record]
 
     VkImageView level0() const { return views_.front(); }
     VkImage image() const { return image_.image; }
+    VkImageView view() const { return image_.view; }  // every level
+    VkExtent2D extent() const { return extent_; }     // level 0's: half the HDR image's
     uint32_t levels() const { return levels_; }
     VkSampler sampler() const { return sampler_; }
 
