@@ -35,7 +35,7 @@ SKY_SIZE = int(constant(ENVIRONMENT_HPP, "sky_size"))
 SKY_LEVELS = int(constant(ENVIRONMENT_HPP, "sky_levels"))
 LEVELS = int(constant(ENVIRONMENT_HPP, "specular_levels"))
 LEVEL = 1  # the prefiltered cube's level: roughness 1 / (LEVELS - 1)
-PICKED = (0, 120)  # the first sample, and one in the tail
+PICKED = (0, 120)  # the first sample, and one in the tail (book/23f_ibl_accuracy.md names both)
 
 # What prefilter.comp must still say for this to be its rule (whitespace folded).
 PREFILTER_LINES = [
