@@ -91,6 +91,13 @@ def main() -> None:
     source_lod = glsl_function(SHADERS / "cube.glsl", "source_lod", params)
     distribution_ggx = glsl_function(SHADERS / "pbr.glsl", "distribution_ggx", params)
 
+    # The extra blur, as source_lod's return line says it: `log2(...) + 1.0`.
+    cube = " ".join((SHADERS / "cube.glsl").read_text(encoding="utf-8").split())
+    extra = re.search(r"return max\(0\.5 \* log2\(sample_angle / texel_angle\) \+ ([0-9.]+), 0\.0\);", cube)
+    if not extra:
+        raise SystemExit("shaders/23_materials/cube.glsl: source_lod() no longer returns "
+                         "max(0.5 * log2(sample_angle / texel_angle) + K, 0.0); redraw book/diagrams/23f_level_rule.py")
+    extra = float(extra.group(1))
     roughness = LEVEL / (LEVELS - 1)
     alpha = max(roughness * roughness, 1e-3)
     texel = 4.0 * math.pi / (6.0 * SKY_SIZE * SKY_SIZE)
@@ -102,7 +109,7 @@ def main() -> None:
         patch = 1.0 / (SAMPLES * pdf)
         lod = source_lod(pdf, SAMPLES)
         # The same number the long way round, step by step, as the table shows it.
-        by_hand = max(0.5 * math.log2(patch / texel) + 1.0, 0.0)
+        by_hand = max(0.5 * math.log2(patch / texel) + extra, 0.0)
         if abs(by_hand - lod) > 1e-9:
             raise SystemExit(f"source_lod gives {lod} where the table's steps give {by_hand}: "
                              "redraw book/diagrams/23f_level_rule.py")
@@ -126,7 +133,7 @@ def main() -> None:
         ("a texel of the sky's level 0:", f"4π / (6 · {SKY_SIZE}²), in sr"),
         ("patch / texel", ""),
         ("levels up, ½ log₂ of that:", "each level's texel is 4 times larger"),
-        ("+ 1, at least 0:", "source_lod's level"),
+        (f"+ {extra:g}, at least 0:", "source_lod's level"),
         ("the two levels it blends", ""),
     ]
 
