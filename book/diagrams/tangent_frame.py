@@ -1,6 +1,6 @@
-"""Chapter 23e's tangent frame, computed by the lines of the shader itself.
+"""Chapter 23g's tangent frame, computed by the lines of the shader itself.
 
-Shared by the figures of 23e and 23g (23e_*.py, 23g_*.py). shader_frame() reads
+Shared by the figures of 23g (23g_*.py). shader_frame() reads
 shaders/23_materials/surface.glsl's [normal-map] region: the branch that makes
 the frame from dFdx and dFdy (the `} else {` one), then the lines that read the
 normal map's texel and turn it into the world. It runs them, statement by

@@ -1,4 +1,4 @@
-"""Chapter 23e: the tangent frame made from a triangle's edges and its UVs.
+"""Chapter 23g: the tangent frame made from a triangle's edges and its UVs.
 
 One triangle with texture coordinates, in three panels: the triangle in
 position space with its edges e1 and e2; the same triangle in UV space (v down
@@ -139,9 +139,9 @@ def frame_panel(s, x, y, w, t, b, m, result, text_at=None):
 
 def main() -> None:
     e1, e2, duv1, duv2, t, b, m, result = shader_frame(P, UV, NORMAL, TEXEL,
-                                                       "book/diagrams/23e_tangent_frame.py")
+                                                       "book/diagrams/23g_tangent_frame.py")
     narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
-    title = "Chapter 23e: the tangent frame made from a triangle's edges and its texture coordinates"
+    title = "Chapter 23g: the tangent frame made from a triangle's edges and its texture coordinates"
     desc = (f"A triangle with corners P0, P1, P2 in the plane z = 0; its edges e1 = {fmt(e1)} and "
             f"e2 = {fmt(e2)}. The same triangle in UV space, v down the image: its edges' (du, dv) are "
             f"{fmt(duv1)} and {fmt(duv2)}. From them the shader's lines make T = {fmt(t)}, the direction "

@@ -1,4 +1,4 @@
-"""Chapter 23e: a mirrored UV island, and why TANGENT carries a sign.
+"""Chapter 23g: a mirrored UV island, and why TANGENT carries a sign.
 
 One half of a texture (a UV triangle) is used twice on a face: on the right
 triangle as it is, on the left one mirrored, so that u grows to the right on
@@ -29,7 +29,7 @@ LEFT = [(0.0, 0.0, 0.0), (0.0, 2.0, 0.0), (-2.0, 0.0, 0.0)]
 ISLAND = {(0.0, 0.0): (0.2, 0.85), (2.0, 0.0): (0.8, 0.85), (0.0, 2.0): (0.2, 0.25)}
 UV_RIGHT = [ISLAND[(x, y)] for x, y, _ in RIGHT]
 UV_LEFT = [ISLAND[(abs(x), y)] for x, y, _ in LEFT]
-WHO = "book/diagrams/23e_mirrored_uv.py"
+WHO = "book/diagrams/23g_mirrored_uv.py"
 
 
 def fmt(v):
@@ -104,7 +104,7 @@ def main() -> None:
     right, left = side(RIGHT, UV_RIGHT), side(LEFT, UV_LEFT)
     without = cross(Vec(*NORMAL), left[0])  # B as N x T alone, on the left
     narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
-    title = "Chapter 23e: a mirrored UV island turns T round, and TANGENT's w says so"
+    title = "Chapter 23g: a mirrored UV island turns T round, and TANGENT's w says so"
     desc = (f"One UV island used twice on a face: on the right as it is, on the left mirrored. On the right "
             f"T = {fmt(right[0])} and B = {fmt(right[1])}, w = {right[3]:+d}; on the left T = {fmt(left[0])}, "
             f"B = {fmt(left[1])}, w = {left[3]:+d}. A texel leaning towards +u gives the normal "
