@@ -114,6 +114,9 @@ for run in "22_shadows|22_shadows_map|320x240|--view map" \
            "23_materials|23_materials_view_irradiance|640x480|--view irradiance" \
            "23_materials|23_materials_view_prefiltered|640x480|--view prefiltered" \
            "23_materials|23_materials_view_brdf|640x480|--view brdf --tone-map clamp" \
+           "23_materials|23_materials_view_bloom|640x480|--sky uniform --bloom 0.3 --view bloom" \
+           "23_materials|23_materials_exposure_minus_2|320x240|--sky uniform --exposure -2" \
+           "23_materials|23_materials_exposure_plus_2|320x240|--sky uniform --exposure 2" \
            "23_materials|23_materials_term_d|320x240|--sky uniform --tone-map clamp --term d" \
            "23_materials|23_materials_term_f|320x240|--sky uniform --tone-map clamp --term f" \
            "23_materials|23_materials_term_v|320x240|--sky uniform --tone-map clamp --term v" \
