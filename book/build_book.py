@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Builds the tutorial's book: book/*.md -> browsable HTML.
+r"""Builds the tutorial's book: book/*.md -> browsable HTML.
 
     /usr/bin/python3 book/build_book.py --out DIR     build the HTML into DIR
     /usr/bin/python3 book/build_book.py --check       validate only, write nothing
