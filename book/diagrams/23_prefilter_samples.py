@@ -91,7 +91,7 @@ def main() -> None:
         gap = "\n" if narrow else " "
         ax.set_title(f"roughness {roughness:.1f} (the cube's level {level}):{gap}{len(kept)} of {SAMPLES} kept,"
                      f"{gap if narrow else chr(10)}all within {widest:.0f}° of n;{gap}"
-                     f"they read sky levels {lods[0]:.1f} to {lods[-1]:.0f}",
+                     f"they read sky levels {lods[0]:.1f} to {lods[-1]:.1f}",
                      loc="left", fontsize=10.5 if narrow else 11)
         reach = max([reach, 1.08] + [math.hypot(p[0], p[1]) + 0.08 for p in skipped])
         ax.set_aspect("equal")

@@ -1,4 +1,4 @@
-"""Chapter 23c: what the split sum gets wrong, drawn with matplotlib when the book is built.
+"""Chapter 23f: what the split sum gets wrong, drawn with matplotlib when the book is built.
 
 A floor (n straight up) of white metal (F0 = 1) under the chapter's sky without
 its sun: sky() of shaders/23_materials/sky.comp, its colours read from the
@@ -21,7 +21,7 @@ blend between levels, so the figure shows the approximation alone. The
 points are Hammersley's, so every build draws the same figure.
 
 Left, the two sides against n.v for three roughnesses; right, the split sum's
-error in percent over n.v and roughness. book/23c_image_based_light.md quotes
+error in percent over n.v and roughness. book/23f_ibl_accuracy.md quotes
 numbers this script computes; a page that no longer agrees stops the build.
 Prints the SVG; text stays text (ids title, x-axis-label, y-axis-label,
 legend, as the book's other charts). With VKT_DIAGRAM_LAYOUT=narrow (the
@@ -40,7 +40,7 @@ from charts import print_svg, pyplot  # book/diagrams/charts.py
 
 ROOT = Path(__file__).resolve().parents[2]
 SHADERS = ROOT / "shaders" / "23_materials"
-PAGE = ROOT / "book" / "23c_image_based_light.md"
+PAGE = ROOT / "book" / "23f_ibl_accuracy.md"
 SAMPLES = 8192  # per point, both sides; 65536 moves no error on the map by 0.7 points or more
 LUMINANCE = np.array([0.2126, 0.7152, 0.0722])
 
@@ -77,7 +77,7 @@ def check_shaders() -> None:
         for want in lines:
             if want not in code:
                 raise SystemExit(f"shaders/23_materials/{name}: no longer says `{want[:60]}`; "
-                                 "redraw book/diagrams/23c_split_sum_error.py")
+                                 "redraw book/diagrams/23f_split_sum_error.py")
 
 
 def sky_colours() -> dict[str, float]:
@@ -88,7 +88,7 @@ def sky_colours() -> dict[str, float]:
         found = re.search(rf"\b{name}\s*=\s*vec3\(([^)]*)\)", code)
         if not found:
             raise SystemExit(f"shaders/23_materials/sky.comp: no colour `{name} = vec3(...)`; "
-                             "redraw book/diagrams/23c_split_sum_error.py")
+                             "redraw book/diagrams/23f_split_sum_error.py")
         out[name] = float(np.array([float(x) for x in found.group(1).split(",")]) @ LUMINANCE)
     return out
 
@@ -210,12 +210,12 @@ def main() -> None:
                           shrink=0.9, pad=0.02)
     bar.set_label("split sum against brute force, %\n(red: too dark, blue: too bright)")
 
-    title = figure.suptitle("Chapter 23c: a white metal floor under\nthe chapter's sky, the split sum against\nbrute force"
-                            if narrow else "Chapter 23c: a white metal floor under the chapter's sky, "
+    title = figure.suptitle("Chapter 23f: a white metal floor under\nthe chapter's sky, the split sum against\nbrute force"
+                            if narrow else "Chapter 23f: a white metal floor under the chapter's sky, "
                             "the split sum against brute force",
                             x=0.02, ha="left", fontsize=11 if narrow else 12.5)
     title.set_gid("title")
-    print_svg(plt, figure, "book/diagrams/23c_split_sum_error.py")
+    print_svg(plt, figure, "book/diagrams/23f_split_sum_error.py")
 
 
 def off(percent: float) -> str:
@@ -224,7 +224,7 @@ def off(percent: float) -> str:
 
 
 def quoted() -> dict[str, str]:
-    """The phrases book/23c_image_based_light.md must say, computed here."""
+    """The phrases book/23f_ibl_accuracy.md must say, computed here."""
     grazing = error_percent(0.05, 1.0)
     head_on = error_percent(1.0, 1.0)
     smooth = max(abs(error_percent(x, r)) for r in np.linspace(0.0, 0.2, 6) for x in np.linspace(0.1, 1.0, 19))
@@ -241,8 +241,8 @@ def check_page() -> None:
     text = " ".join(PAGE.read_text(encoding="utf-8").split())
     for phrase, what in quoted().items():
         if phrase not in text:
-            sys.exit(f"book/23c_image_based_light.md: {what}: the page should say '{phrase}' "
-                     "(book/diagrams/23c_split_sum_error.py computes it)")
+            sys.exit(f"book/23f_ibl_accuracy.md: {what}: the page should say '{phrase}' "
+                     "(book/diagrams/23f_split_sum_error.py computes it)")
 
 
 if __name__ == "__main__":
