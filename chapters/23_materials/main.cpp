@@ -373,7 +373,6 @@ private:
 }  // namespace
 
 int main(int argc, char** argv) {
-    // [spec]
     vkt::ChapterSpec spec{.name = "23_materials",
                           .title = "23 - Physically based materials and HDR"};
     spec.overlay = true;  // in a window: the exposure, the tone curve, the bloom and the sky, live
@@ -438,7 +437,6 @@ int main(int argc, char** argv) {
          .choices = {"cpu", "furnace", "lut"}},
     };
     spec.check_options = check_flags;
-    // [/spec]
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
         return std::make_unique<Materials>(context);
     });
