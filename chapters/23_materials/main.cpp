@@ -278,7 +278,7 @@ public:
             vkCmdEndRendering(cmd);
         }
 
-        // [tonemap-pass]
+        // [tonemap-barrier]
         // Colour writes to shader reads: the tone-mapping pass (and the
         // bloom's first compute pass) sample every pixel the scene pass wrote.
         vkt::image_barrier(
@@ -287,12 +287,14 @@ public:
             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
             VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
             VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+        // [/tonemap-barrier]
         if (bloom_strength_ > 0.0f || bloom_view_) {
             auto bloom_scope = frame.gpu_scope("bloom");
             bloom_.record(cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                           bloom_view_ ? bloom_view_->halfway() : nullptr);
         }
         if (bloom_view_) bloom_view_->draw(cmd, hdr_, frame.extent);  // over the scene, unmixed
+        // [tonemap-draw]
         auto scope = frame.gpu_scope("tone map");
         vkt::begin_colour_rendering(cmd, frame.target_view, frame.extent,
                                     VK_ATTACHMENT_LOAD_OP_DONT_CARE);
@@ -306,7 +308,7 @@ public:
                            &settings);
         vkCmdDraw(cmd, 3, 1, 0, 0);
         vkCmdEndRendering(cmd);
-        // [/tonemap-pass]
+        // [/tonemap-draw]
     }
 
     // --verify: the last frame's HDR image against the CPU reference.
@@ -371,7 +373,6 @@ private:
 }  // namespace
 
 int main(int argc, char** argv) {
-    // [spec]
     vkt::ChapterSpec spec{.name = "23_materials",
                           .title = "23 - Physically based materials and HDR"};
     spec.overlay = true;  // in a window: the exposure, the tone curve, the bloom and the sky, live
@@ -436,7 +437,6 @@ int main(int argc, char** argv) {
          .choices = {"cpu", "furnace", "lut"}},
     };
     spec.check_options = check_flags;
-    // [/spec]
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
         return std::make_unique<Materials>(context);
     });
