@@ -202,7 +202,7 @@ def main() -> None:
     res = results()
     check_snap_page(res)
     narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
-    size = 11 if narrow else 12.5
+    size = 11 if narrow else 14
     _, _, m0, outline0, differ0 = res[False]
     _, _, m1, outline1, differ1 = res[True]
     t = res[False][0].texel
@@ -219,9 +219,9 @@ def main() -> None:
         spots = {False: (50, 60), True: (50, 480)}
         legend_y = 880
     else:
-        W, side, H = 960, 380, 640
+        W, side, H = 960, 380, 660
         spots = {False: (50, 60), True: (530, 60)}
-        legend_y = 560
+        legend_y = 575
     s = Svg(W, H, "Chapter 22b: the same patch of the near cascade's map before and after the "
             "camera steps 0.37 units, without and with the snap",
             f"A patch of the near cascade's shadow map, {PATCH} texels of {t:.4f} units a side, at "
