@@ -202,7 +202,7 @@ def main() -> None:
     res = results()
     check_snap_page(res)
     narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
-    size = 11 if narrow else 14
+    size = 12.5 if narrow else 14
     _, _, m0, outline0, differ0 = res[False]
     _, _, m1, outline1, differ1 = res[True]
     t = res[False][0].texel
@@ -215,9 +215,9 @@ def main() -> None:
                                  f"{outline1} texels change."]),
     }
     if narrow:
-        W, side, H = 400, 300, 960
-        spots = {False: (50, 60), True: (50, 480)}
-        legend_y = 880
+        W, side, H = 400, 340, 1040
+        spots = {False: (30, 40), True: (30, 500)}
+        legend_y = 960
     else:
         W, side, H = 960, 380, 660
         spots = {False: (50, 60), True: (530, 60)}
@@ -234,7 +234,7 @@ def main() -> None:
         title, lines = texts[snap]
         b, a = res[snap][0], res[snap][1]
         panel(s, *spots[snap], side, b, a, title, lines, size)
-    x, y = 50, legend_y
+    x, y = spots[False][0], legend_y
     s.line(x, y, x + 30, y, stroke=BLUE, width=4.5)
     s.text(x + 38, y + 4, "the sphere's texels before the step", size=size)
     s.line(x, y + 22, x + 30, y + 22, stroke=ORANGE, width=2.5, dash="7 5")
