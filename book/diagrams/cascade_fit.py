@@ -89,6 +89,13 @@ def texel(i):
 FLOOR_SLOPE = 0.75
 
 
+def one_cascade_radius():
+    """The radius of the sphere round the whole view, which --cascades 1 fits its box around."""
+    corners = slice_corners(NEAR, FAR)
+    centre = mul(1 / 8, tuple(map(sum, zip(*corners))))
+    return max(math.dist(p, centre) for p in corners)
+
+
 def one_cascade_box_side():
     """The side of the light box with --cascades 1: one sphere round the whole view."""
     corners = slice_corners(NEAR, FAR)
@@ -108,6 +115,10 @@ def check_page() -> None:
             f"floor falls about {FLOOR_SLOPE * texel(0):.4f} units": "the floor's fall across a texel",
             f"{4 * FLOOR_SLOPE * texel(0):.3f} units in the near cascade": "the slope bias 4",
             f"with one map, {one_cascade_box_side():.0f} units across": "--cascades 1's box",
+            f"the one map's texels are {one_cascade_box_side() / box_side(0):.0f} times as wide as the near "
+            "cascade's": "--cascades 1's texel against the near cascade's",
+            f"sphere is {one_cascade_radius():.1f} units in radius": "--cascades 1's sphere",
+            f"with one map {one_cascade_box_side():.0f} units across, and a depth": "--cascades 1's box",
         },
         "22b_cascades.md": {
             f"A texel is now about {one_cascade_box_side() / MAP_SIZE:.2f} units wide (a box "

@@ -33,8 +33,25 @@ vkt_chapter_test(chapter.22_shadows.map 22_shadows GOLDEN_FILE 22_shadows_map.pn
   LABELS bless PIXEL 0,0,89,89,97 1,100,255,149,149 5,70,203,225,255
   ARGS ${headless} --view map EXPECT "the shadow map shown")
 # One cascade and four: the same shadow and the same light at the two pixels.
-vkt_chapter_test(chapter.22_shadows.one_cascade 22_shadows ${VKT_22_PIXEL}
+# One cascade is the one map of the core page (book/22_shadows.md), which
+# shows this picture, so it has its own golden (LABELS bless).
+vkt_chapter_test(chapter.22_shadows.one_cascade 22_shadows
+  GOLDEN_FILE 22_shadows_one_cascade.png LABELS bless ${VKT_22_PIXEL}
   ARGS ${headless} --cascades 1 EXPECT "1 cascade of 1024x1024")
+# The core page's acne and peter-panning, with its one map. Without bias the
+# lit pixel falls strictly between lit (214) and full shadow (111), as with
+# three cascades (lavapipe: 188). The one map's texels are seven times as wide
+# as the near cascade's, so the slope term moves depths seven times as far:
+# a slope factor of 20 already lifts the right front pillar's shadow off the
+# floor point at (235, 166), which is lit.
+vkt_chapter_test(chapter.22_shadows.one_cascade.no_bias 22_shadows
+  GOLDEN_FILE 22_shadows_one_cascade_acne.png LABELS bless PIXEL 272,228,163,163,158,33
+  ARGS ${headless} --cascades 1 --bias-constant 0 --bias-slope 0
+  EXPECT "1 cascade of 1024x1024.*bias 0.00 \\+ 0.00 x slope")
+vkt_chapter_test(chapter.22_shadows.one_cascade.peter_panning 22_shadows
+  GOLDEN_FILE 22_shadows_one_cascade_peter_panning.png LABELS bless PIXEL 235,166,214,214,208,2
+  ARGS ${headless} --cascades 1 --bias-slope 20
+  EXPECT "1 cascade of 1024x1024.*bias 4.00 \\+ 20.00 x slope")
 vkt_chapter_test(chapter.22_shadows.four_cascades 22_shadows ${VKT_22_PIXEL}
   ARGS ${headless} --cascades 4 EXPECT "4 cascades of 1024x1024")
 # Without the bias the lit floor shadows itself (acne): around the lit pixel
