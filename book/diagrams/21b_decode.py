@@ -11,13 +11,16 @@ the title bar's and the background's. Their values under each crop are read
 from the pictures when the book is built.
 
 With VKT_DIAGRAM_LAYOUT=narrow (the builder asks for it, for phones) the two
-crops are stacked, 400 units wide, instead of side by side.
+crops are stacked, 400 units wide, instead of side by side. A phone's column
+shows that a little smaller than the crop's own size, so there the crop is
+scaled smoothly rather than pixelated, which would break the panel's text.
 """
 
+import base64
 import os
 from pathlib import Path
 
-from golden import GOLDEN, enlarged, read_png
+from golden import GOLDEN, enlarged, png_bytes, read_png
 from svg import INK, Svg
 
 IMAGES = Path(__file__).resolve().parents[1] / "images"
@@ -25,6 +28,15 @@ LEFT, TOP, CROP_W, CROP_H = 0, 0, 338, 156
 PIXELS = [((300, 18), "title bar"), ((300, 60), "background")]
 COLUMNS = [(GOLDEN / "21_multisampling_overlay.png", "decoded (as committed)"),
            (IMAGES / "21b_undecoded.png", "written undecoded (Try it)")]
+
+
+def smooth(s, pixels, x: float, y: float) -> None:
+    """The crop drawn at (x, y) at its own size, left to the viewer to scale smoothly."""
+    crop = [row[LEFT:LEFT + CROP_W] for row in pixels[TOP:TOP + CROP_H]]
+    data = base64.b64encode(png_bytes(crop)).decode("ascii")
+    s.add(f'<image x="{x:g}" y="{y:g}" width="{CROP_W}" height="{CROP_H}" '
+          f'href="data:image/png;base64,{data}"/>')
+    s.rect(x, y, CROP_W, CROP_H, stroke=INK, width=1)
 
 
 def main() -> None:
@@ -53,7 +65,10 @@ def main() -> None:
     for ((pixels, label), vals, (x, y)) in zip(pictures, values, places):
         s.text(x, y + 14, label, size=size + 0.5, bold=True)
         top = y + 24
-        enlarged(s, pixels, LEFT, TOP, CROP_W, CROP_H, x, top, 1)
+        if narrow:
+            smooth(s, pixels, x, top)
+        else:
+            enlarged(s, pixels, LEFT, TOP, CROP_W, CROP_H, x, top, 1)
         for n, ((px, py), _) in enumerate(PIXELS, start=1):
             cx, cy = x + px - LEFT + 0.5, top + py - TOP + 0.5
             s.circle(cx, cy, 6, stroke="#ffffff", width=2.4)
