@@ -390,7 +390,6 @@ int main(int argc, char** argv) {
     spec.requirements.features = {VKT_FEATURE_12(separateDepthStencilLayouts),
                                   VKT_FEATURE_13(maintenance4)};
     // [/device]
-    // [options]
     spec.options = {
         {.name = "--draw",
          .type = vkt::OptionType::choice,
@@ -426,7 +425,6 @@ int main(int argc, char** argv) {
                 "--view meshlets needs --draw mesh: the indirect draw has no "
                 "meshlets");
     };
-    // [/options]
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
         return std::make_unique<MeshShaders>(context);
     });
