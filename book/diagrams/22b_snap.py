@@ -12,7 +12,9 @@ sphere's upper left edge as the light sees it: the texels the sphere covers befo
 outline) and after it (orange, dashed), and in red the places where the two maps disagree, which
 are shadowed in one frame and lit in the next. Below each, the count over the sphere's whole
 outline: the texels of the second map, on the sphere's outline, that hold the sphere where the
-first map at the same place did not, or the other way round. With VKT_DIAGRAM_LAYOUT=narrow the
+first map at the same place did not, or the other way round. Each count is over the map after
+the step, and the two panels' grids after it sit at different offsets against the sphere, so
+their staircases hold slightly different numbers of texels. With VKT_DIAGRAM_LAYOUT=narrow the
 two panels are stacked, 400 units wide. The page quotes the counts; check_snap_page() stops the
 build if it no longer agrees.
 """
@@ -118,7 +120,7 @@ def check_snap_page(res) -> None:
     for phrase in (f"{abs(m0[0]):.2f} texels across and {abs(m0[1]):.2f}",
                    f"{differ0} of the {outline0} texels",
                    f"exactly {abs(m1[0]):.0f} and {abs(m1[1]):.0f} texels",
-                   f"and {differ1} of them change"):
+                   f"and {differ1} of the {outline1} texels"):
         if phrase not in text:
             sys.exit(f"book/22b_cascades.md: the snap's figure: the page should say '{phrase}' "
                      "(book/diagrams/22b_snap.py computes it as cascades.hpp does)")
@@ -211,8 +213,8 @@ def main() -> None:
                                      f"{abs(m0[1]):.2f} down: {differ0} of the {outline0} texels either",
                                      "side of the sphere's outline change."]),
         True: ("With the snap", [f"The grid moves exactly {abs(m1[0]):.0f} and {abs(m1[1]):.0f} texels:",
-                                 f"the outlines are one, and {differ1} of its",
-                                 f"{outline1} texels change."]),
+                                 f"the outlines are one: {differ1} of the {outline1} texels",
+                                 "either side of it change."]),
     }
     if narrow:
         W, side, H = 400, 340, 1040

@@ -12,7 +12,6 @@
 
 namespace ch24 {
 
-// [functions]
 // VK_KHR_acceleration_structure's commands are extension functions: the
 // Vulkan loader does not export them, so the chapter asks the device for
 // each one by name, once, after the device exists.
@@ -42,9 +41,7 @@ private:
         if (!out) throw vkt::Error(std::string("the device gave no ") + name);
     }
 };
-// [/functions]
 
-// [address-buffer]
 // A buffer the GPU reaches by address: the build reads its vertices, indices
 // and instances through 64-bit addresses, and a structure's storage is a
 // buffer too. Usage SHADER_DEVICE_ADDRESS, and memory allocated with the
@@ -88,7 +85,6 @@ inline AddressBuffer create_address_buffer(const vkt::Gpu& gpu, VkDeviceSize siz
     out.address = vkGetBufferDeviceAddress(gpu.device, &which);
     return out;
 }
-// [/address-buffer]
 
 // One acceleration structure and the buffer that holds it, destroyed in that
 // order. Move-only, like the owners of vkt/core/owned.hpp.
