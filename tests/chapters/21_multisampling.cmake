@@ -63,10 +63,12 @@ vkt_chapter_test(chapter.21_multisampling.help 21_multisampling EXIT 0 ARGS --he
 #   target, stored as (41, 74, 122). Without the decode: (112, 147, 184).
 # - the panel's background over the clear colour: WindowBg's 0.06 is the
 #   byte 15, linear 0.00478, at the runner's alpha 0.85 (the byte 217) over
-#   the linear clear colour (0.02, 0.02, 0.04): linear (0.00705, 0.00705,
-#   0.01003), stored as (20, 20, 26) (lavapipe: 25; within 1). Blending the
+#   the clear colour (0.02, 0.02, 0.04) as the target stored it: the bytes
+#   (39, 39, 56), linear (0.02029, 0.02029, 0.03955). The blend is linear
+#   (0.00709, 0.00709, 0.00996), stored as (20, 20, 25); within 1. (Blending
+#   over the unstored 0.04 would give blue 25.505, the byte 26.) Blending the
 #   bytes undecoded would give (65, 65, 67).
-set(VKT_21_PANEL PIXEL 300,18,41,74,122 300,60,20,20,26)
+set(VKT_21_PANEL PIXEL 300,18,41,74,122 300,60,20,20,25)
 vkt_chapter_test(chapter.21_multisampling.overlay 21_multisampling
   GOLDEN_FILE 21_multisampling_overlay.png LABELS bless ${VKT_21_PANEL}
   ARGS --headless --validation --frames 3 --size 640x480 --overlay on
