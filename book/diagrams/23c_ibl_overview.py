@@ -96,7 +96,7 @@ def main() -> None:
     sky_lines = [f"{SKY} × {SKY} a face, 6 faces", f"{SKY_LEVELS} levels: {sizes(SKY, SKY_LEVELS)}",
                  "`sky.comp`: level 0, its formula", "`downsample.comp`: each next level"]
     irr_lines = [f"{IRR} × {IRR} a face, 1 level", f"{IRR_SAMPLES} cosine samples a texel",
-                 "mean radiance over n's hemisphere"]
+                 "cosine-weighted mean over n's hemisphere"]
     spec_lines = [f"{SPEC} × {SPEC} a face, {SPEC_LEVELS} levels: {sizes(SPEC, SPEC_LEVELS)}",
                   "roughness " + ", ".join(f"{r:g}" for r in steps),
                   f"{SPEC_SAMPLES} samples a texel (level 0: 1)"]
