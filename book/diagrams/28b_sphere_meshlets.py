@@ -18,16 +18,13 @@ order. `python3 28b_sphere_meshlets.py --numbers` prints the counts.
 With VKT_DIAGRAM_LAYOUT=narrow the text stands below the drawing, 400 units wide.
 """
 
+import importlib
 import math
 import os
-import re
 import sys
-from pathlib import Path
 
-from svg import GREEN, GREEN_FILL, INK, MUTED, Svg
+from svg import GREEN, INK, MUTED, Svg
 
-ROOT = Path(__file__).resolve().parents[2]
-SCENE = ROOT / "chapters" / "28_gpu_culling" / "scene.hpp"
 SEGMENTS, RINGS, PATCH = 32, 16, 2
 RADIUS = 1.0
 ASPECT = 4.0 / 3.0
@@ -36,13 +33,8 @@ MAGENTA, MAGENTA_FILL = "#a01fb0", "#e23fed"  # --view culled's magenta (linear 
 YELLOW, YELLOW_FILL = "#9a7400", "#ffe100"    # --view culled's yellow (linear 1, 0.75, 0)
 
 
-def field_of_view() -> float:
-    text = SCENE.read_text(encoding="utf-8")
-    found = re.findall(r"vulkan_perspective\(glm::radians\(([0-9.]+)f?\)", text)
-    if len(found) != 1:
-        sys.exit("chapters/28_gpu_culling/scene.hpp: no single vulkan_perspective(glm::radians(...)) call; "
-                 "redraw book/diagrams/28b_sphere_meshlets.py")
-    return float(found[0])
+# The camera's vertical field of view, read from scene.hpp as 28b_cone_rays.py reads it.
+field_of_view = importlib.import_module("28b_cone_rays").field_of_view
 
 
 def half_width() -> float:
