@@ -19,6 +19,7 @@ void main() {
     int size = imageSize(target).x;
     if (p.x >= size || p.y >= size) return;
     vec3 n = cube_direction(p.xy, p.z, size);
+    // [prefilter-loop]
     mat3 frame = frame_towards(n, n);
     float alpha = max(params.roughness * params.roughness, 1e-3);
     vec3 sum = vec3(0.0);
@@ -36,6 +37,7 @@ void main() {
         sum += textureLod(source, l, source_lod(pdf, params.samples)).rgb * n_dot_l;
         weight += n_dot_l;
     }
+    // [/prefilter-loop]
     imageStore(target, p, vec4(sum / weight, 1.0));
 }
 // [/prefilter]
