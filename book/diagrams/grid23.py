@@ -1,6 +1,6 @@
 """Chapter 23's sphere grid as its camera sees it, read from grid.hpp, for
 the figures that place labels or crops on its pictures (23_grid_axes.py,
-23c_spheres_levels.py): the grid's size and spacing, the field of view, the
+23c_spheres_levels.py, 23_grid_lights.py): the grid's size and spacing, the field of view, the
 eye's distance, and each sphere's centre in pixels of a width x height
 picture. A figure stops the book's build when grid.hpp no longer says what
 this reads."""
