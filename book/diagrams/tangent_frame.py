@@ -11,7 +11,9 @@ the triangle. So a figure drawn with these numbers cannot disagree with the
 shader; a line this cannot run stops the book's build with one line naming it.
 Before each figure the same lines also run on Vulkan's own steps (one pixel
 right, one down the window, on a face towards the eye): unless T then points
-where u grows and B where v falls, the build stops.
+where u grows and B where v falls, the build stops. file_frame() runs the other
+branch, the frame from a file's TANGENT, and the same texel lines (page 23e's
+figure of one face).
 """
 
 from __future__ import annotations
@@ -166,3 +168,30 @@ def _run(p, uv, normal, texel, who, keep_sign=True):
                              f"({error}); redraw the figure") from None
     result = eval(made.group(3), {}, scope)
     return e1, e2, duv1, duv2, scope["t"], scope["b"], scope["m"], result
+
+
+def file_frame(normal, tangent, texel, who):
+    """Runs the shader's other branch, the frame from the file's TANGENT (xyz and its
+    w, +1 or -1), then the lines that read the normal map's texel (RGB, 0..255) and
+    turn it into the world, for one point with that normal: T, B, the texel's m and
+    the normal it gives. who: the diagram, named in a failure."""
+    text = SHADER.read_text(encoding="utf-8")
+    region = re.search(r"// \[normal-map\]\n(.*?)// \[/normal-map\]", text, re.S)
+    found = region and re.search(r"\{\n    (vec3 n = .*?;)\n.*?if \(world_tangent\.w != 0\.0\) \{\n(.*?)\n"
+                                 r"    \} else \{\n.*?\n    \}\n(.*?)return (.*?);", region.group(1), re.S)
+    if not found:
+        raise SystemExit(f"{WHERE}: no `vec3 n = ...`, then `if (world_tangent.w != 0.0) {{ ... }} "
+                         f"else {{ ... }}` followed by a `return`; redraw {who}")
+    scope = dict(GLSL, world_normal=Vec(*normal), world_tangent=Vec(*tangent), uv=None,
+                 texture=lambda sampler, at: Vec(*(c / 255 for c in texel), 1.0))
+    lines = statements(found.group(1)) + statements(found.group(2)) + statements(found.group(3))
+    for statement in lines:
+        if "draw." in statement:  # the normal map's scale: the figure's file gives none, so 1
+            continue
+        try:
+            exec(statement, {}, scope)
+        except Exception as error:  # noqa: BLE001  (any failure is one line for the build)
+            raise SystemExit(f"{WHERE}: {who} cannot run `{statement}` "
+                             f"({error}); redraw the figure") from None
+    result = eval(found.group(4), {}, scope)
+    return scope["t"], scope["b"], scope["m"], result
