@@ -1,4 +1,4 @@
-"""Chapter 23b: the same HDR picture at three exposures, side by side.
+"""Chapter 23b: the same HDR picture at three exposures, and why the HDR image holds floats.
 
 Drawn from three reviewed test pictures made with the same flags but the
 exposure, headless at 320x240 after 10 frames, through the ACES curve:
@@ -10,13 +10,23 @@ of 2 EV is four times the light. Under each picture, read from it when the
 book is built: the sky's corner pixel, and how many pixels have a channel at
 255, in all and row by row (plastic at the top to gold at the bottom).
 
-book/23b_hdr.md says where those pixels go from 0 EV to +2 EV; the phrases
-it must say are computed here from the same pictures (quoted()), and the
-build stops if the page says otherwise. `python3 23b_exposure_strip.py
---numbers` prints them.
+Below them, one square of the -2 EV picture (boxed on it), around the bottom
+row's second sphere, enlarged: as the chapter makes it, from the float HDR
+image, and from book/images/23b_unorm_exposure_minus_2.png, the same command
+with the scene pass's output clamped to 0..1 and rounded to 8 bits, as an
+R8G8B8A8_UNORM target stores it (book/images/23b_unorm_exposure_minus_2.txt
+says how it was made). Under each square, read from the pictures when the book
+is built: its brightest pixel and how many pixels of the square have exactly
+that colour.
+
+book/23b_hdr.md says where the pixels at 255 go from 0 EV to +2 EV and quotes
+the squares' brightest pixels; the phrases it must say are computed here from
+the same pictures (quoted()), and the build stops if the page says otherwise.
+`python3 23b_exposure_strip.py --numbers` prints them.
 
 With VKT_DIAGRAM_LAYOUT=narrow (the builder asks for it, for phones) the
-three pictures are stacked, 400 units wide.
+three pictures are stacked, 400 units wide, and the two squares sit side by
+side under them, enlarged 4 times instead of 6.
 """
 
 import os
@@ -32,6 +42,10 @@ COLUMNS = [("23_materials_exposure_minus_2.png", "--exposure -2", "× 1/4"),
            ("23_materials_exposure_plus_2.png", "--exposure 2", "× 4")]
 ROWS, SPHERE_COLUMNS = 4, 5  # chapters/23_materials/grid.hpp: metallic down, roughness across
 PAGE = Path(__file__).resolve().parents[1] / "23b_hdr.md"
+# The square enlarged under the strip (23b_clamp_aces.py's): the bottom row's second sphere.
+LEFT, TOP, CROP_W, CROP_H = 92, 164, 44, 44
+SQUARES = [(GOLDEN / "23_materials_exposure_minus_2.png", "float (the chapter's)"),
+           (PAGE.parent / "images" / "23b_unorm_exposure_minus_2.png", "8-bit (R8G8B8A8_UNORM)")]
 
 
 def at_255(p) -> bool:
@@ -86,14 +100,36 @@ def listed(numbers: list) -> str:
     return ", ".join(words[:-1]) + " and " + words[-1]
 
 
+def brightest(pixels) -> tuple[tuple[int, int, int], int]:
+    """The square's brightest pixel (largest channel sum) and how many pixels share its colour."""
+    square = [p for row in pixels[TOP:TOP + CROP_H] for p in row[LEFT:LEFT + CROP_W]]
+    top = max(square, key=sum)
+    return top, square.count(top)
+
+
+def squares() -> list[tuple[list, tuple[int, int, int], int]]:
+    """Each square's picture, its brightest pixel and how many pixels have that colour."""
+    out = []
+    for path, _ in SQUARES:
+        pixels = read_png(path)
+        if len(pixels) != H or len(pixels[0]) != W:
+            raise SystemExit(f"{path.name}: {len(pixels[0])}x{len(pixels)}, not {W}x{H}; "
+                             "redraw book/diagrams/23b_exposure_strip.py")
+        out.append((pixels, *brightest(pixels)))
+    return out
+
+
 def quoted() -> dict[str, str]:
-    """The phrases book/23b_hdr.md must say about 0 EV against +2 EV, computed here."""
+    """The phrases book/23b_hdr.md must say, computed here: 0 EV against +2 EV, and the squares."""
     (_, _), (_, zero), (_, plus) = pictures()
     rows0, rows2 = [sum(r) for r in zero], [sum(r) for r in plus]
     t0, t2 = sum(rows0), sum(rows2)
+    (_, lit, _), (_, flat, flat_count) = squares()
     return {
         f"from {t0} to {t2}, {t2 / t0:.1f} times": "the pixels at 255 in all",
         f"from {listed(rows0)} to {listed(rows2)}": "the pixels at 255 row by row",
+        f"the brightest pixel {lit}": "the float square's brightest pixel",
+        f"{flat_count} pixels of one colour, {flat}": "the 8-bit square's flat disc",
     }
 
 
@@ -103,34 +139,47 @@ def check_page() -> None:
     for phrase, what in quoted().items():
         if phrase not in text:
             sys.exit(f"book/23b_hdr.md: {what}: the page should say '{phrase}' "
-                     "(book/diagrams/23b_exposure_strip.py computes it from the golden images)")
+                     "(book/diagrams/23b_exposure_strip.py computes it from the pictures)")
 
 
 def main() -> None:
     check_page()
     narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
-    shown = pictures()
-    title = "Chapter 23b: the uniform sky's grid at -2, 0 and +2 EV, through the ACES curve"
+    shown, crops = pictures(), squares()
+    zoom = 4 if narrow else 6
+    zw, zh = CROP_W * zoom, CROP_H * zoom
+    title = ("Chapter 23b: the uniform sky's grid at -2, 0 and +2 EV through the ACES curve, and one "
+             "highlight at -2 EV from a float and an 8-bit HDR image")
     description = ("Three test pictures of the sphere grid under the uniform sky, the same but for the "
                    "exposure. At -2 EV (radiance times 1/4) the picture is dark, the sky near black and "
                    "the highlights small. At 0 EV it is the chapter's picture. At +2 EV (times 4) the "
                    "plastic is pale cream, the sky a light blue-grey and the metal rows' highlights "
                    "several times larger, yet every sphere is still shaded: the curve's shoulder rolls "
                    "the bright values off instead of cutting them. Under each picture, its sky pixel and "
-                   "its pixels with a channel at 255, in all and row by row from plastic to gold.")
+                   "its pixels with a channel at 255, in all and row by row from plastic to gold. Below, "
+                   f"the square boxed on the -2 EV picture, {CROP_W} by {CROP_H} pixels around the second "
+                   f"sphere of the bottom row, enlarged {zoom} times, twice. Left, from the 16-bit float "
+                   "HDR image: both highlights white at the centre and fading into the gold. Right, from "
+                   "an image that stores 0 to 1 in 8 bits: every value above 1 was stored as 1, so the "
+                   "large highlight is a flat grey disc and the small one a flat grey patch. Under each "
+                   "square, its brightest pixel and how many pixels have that colour.")
     size, top, step, under = 13.5, 30, 0, 64
     if narrow:
         width, x0, step = 400, 40, H + 46 + under
-        s = Svg(width, top + 2 * step + H + under + 44, title, description)
+        rule = top + 2 * step + H + under + 44
     else:
         gap, x0 = 20, 10
         width = 2 * x0 + 3 * W + 2 * gap
-        s = Svg(width, top + H + under + 26, title, description)
+        rule = top + H + under + 34
+    zoom_top = rule + (70 if narrow else 58)
+    s = Svg(width, zoom_top + zh + (96 if narrow else 58), title, description)
     for i, ((pixels, cells), (_, flag, factor)) in enumerate(zip(shown, COLUMNS)):
         x, y = (x0, top + i * step) if narrow else (x0 + i * (W + gap), top)
         s.text(x + W / 2, y - 10, f"{flag}  ({factor})", size=size + 0.5, anchor="middle", bold=True,
                mono=True)
         enlarged(s, pixels, 0, 0, W, H, x, y, 1)
+        if i == 0:
+            s.rect(x + LEFT - 1, y + TOP - 1, CROP_W + 2, CROP_H + 2, stroke="#ffffff", width=1.5)
         rows = [sum(r) for r in cells]
         s.text(x + W / 2, y + H + 20, f"sky {pixels[0][0]}", size=size, anchor="middle", fill=MUTED)
         s.text(x + W / 2, y + H + 40, f"{sum(rows)} pixels at 255, by row:", size=size, anchor="middle",
@@ -143,6 +192,33 @@ def main() -> None:
         s.lines(x0, foot, key, size=size, fill=MUTED)
     else:
         s.text(x0, foot, " ".join(key), size=size, fill=MUTED)
+
+    # The boxed square of the -2 EV picture, from the float image and from an 8-bit one.
+    s.line(x0 if not narrow else 10, rule, width - (x0 if not narrow else 10), rule, stroke=MUTED, width=0.8)
+    heading = (["The boxed square at -2 EV, enlarged 4 times,", "had the HDR image been float or 8-bit:"]
+               if narrow else
+               [f"The boxed square of the -2 EV picture, enlarged {zoom} times, had the HDR image been float "
+                "or 8-bit:"])
+    s.lines(10 if narrow else x0, rule + 22, heading, size=size + 0.5, bold=True, leading=1.25)
+    for c, ((pixels, (r, g, b), count), (_, label)) in enumerate(zip(crops, SQUARES)):
+        zx = (16 + c * (zw + 16)) if narrow else (x0 + (W - zw) / 2 + c * (W + gap))
+        s.text(zx + zw / 2, zoom_top - 8, label.split(" (")[0] if narrow else label, size=size,
+               anchor="middle", bold=True)
+        enlarged(s, pixels, LEFT, TOP, CROP_W, CROP_H, zx, zoom_top, zoom)
+        caption = [f"brightest ({r}, {g}, {b})", f"× {count}"] if narrow else \
+            [f"brightest ({r}, {g}, {b}) × {count}"]
+        for i, line in enumerate(caption):
+            s.text(zx + zw / 2, zoom_top + zh + 18 + 16 * i, line, size=size, anchor="middle", fill=MUTED)
+    where = f"x {LEFT}..{LEFT + CROP_W - 1}, y {TOP}..{TOP + CROP_H - 1} of the 320x240 picture"
+    if narrow:
+        s.lines(16, zoom_top + zh + 58, [where + ",", "--sky uniform --exposure -2"], size=size, fill=MUTED)
+    else:
+        note = ["8-bit: the scene pass's output", "clamped to 0..1 and rounded to",
+                "8 bits, as R8G8B8A8_UNORM", "stores it. Every value above 1",
+                "became 1, so × 1/4 only turns", "the flat disc grey.", "",
+                f"x {LEFT}..{LEFT + CROP_W - 1}, y {TOP}..{TOP + CROP_H - 1} of the",
+                "320x240 picture, --sky uniform", "--exposure -2"]
+        s.lines(x0 + 2 * (W + gap) + 10, zoom_top + 14, note, size=size, fill=MUTED)
     s.write()
 
 
