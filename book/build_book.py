@@ -1026,6 +1026,23 @@ def search_index(pages: list[Page]) -> str:
             "window.BOOK_SEARCH_INDEX = " + json.dumps(data, ensure_ascii=False, separators=(",", ":")) + ";\n")
 
 
+PLAIN_BLOCK_RE = re.compile(r'<div class="highlight">(<pre>(?:(?!</pre>).)*</pre>)', re.S)
+COLUMNS_RE = re.compile(r"^\s*[|+]|\S {3,}\S", re.M)
+
+
+def mark_plain_output(body: str) -> str:
+    """A code block the highlighter did not colour (no language: a program's output,
+    indented on the page) wraps its long lines, where code scrolls sideways: a
+    count at the end of a printed line must be seen without scrolling."""
+    def mark(match: re.Match) -> str:
+        # Coloured code, and text laid out in columns (a matrix, a box drawn in
+        # characters), keep their lines whole.
+        if '<span class="' in match.group(1) or COLUMNS_RE.search(match.group(1)):
+            return match.group(0)
+        return '<div class="highlight output">' + match.group(1)
+    return PLAIN_BLOCK_RE.sub(mark, body)
+
+
 def convert(page: Page) -> None:
     md = markdown.Markdown(
         extensions=["fenced_code", "codehilite", "tables", "toc"],
@@ -1034,7 +1051,7 @@ def convert(page: Page) -> None:
             "toc": {"permalink": False},
         },
         output_format="html")
-    page.body = place_math(md.convert(page.markdown), page.math)
+    page.body = place_math(mark_plain_output(md.convert(page.markdown)), page.math)
     page.toc = md.toc_tokens
     page.ids = set(re.findall(r'\bid="([^"]+)"', page.body))
 
