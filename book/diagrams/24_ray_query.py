@@ -9,7 +9,8 @@ in the order the shader makes them. A schematic: the offset is drawn far
 larger than it is.
 
 The numbers and flags are read from shaders/24_ray_queries/scene.frag's
-rayQueryInitializeEXT call, so the figure cannot drift from the shader.
+rayQueryInitializeEXT call, and the origin's offset from the default of its
+specialization constant ray_offset, so the figure cannot drift from the shader.
 
 With VKT_DIAGRAM_LAYOUT=narrow (the builder asks for it, for phones) the calls
 go under the picture, 400 units wide.
@@ -27,19 +28,23 @@ ROOT = Path(__file__).resolve().parents[2]
 FRAG = ROOT / "shaders" / "24_ray_queries" / "scene.frag"
 
 CALL = re.compile(r"rayQueryInitializeEXT\(query, scene, (?P<flags>[^,]+),\s*(?P<mask>0x[0-9A-Fa-f]+), "
-                  r"world \+ (?P<offset>[0-9.]+) \* n, (?P<tmin>[0-9.]+), -frame\.light\.xyz, "
-                  r"(?P<tmax>[0-9.]+)\);")
+                  r"origin, (?P<tmin>[0-9.]+), -frame\.light\.xyz, (?P<tmax>[0-9.]+)\);")
+# The origin, by default (no --ray-offset): ray_offset along the normal, the
+# specialization constant's default value.
+OFFSET = re.compile(r"const float ray_offset = (?P<offset>[0-9.]+);")
+ORIGIN = "const vec3 origin = use_float_offset ? float_offset(world, n) : world + ray_offset * n;"
 
 
 def read_call() -> dict:
     text = " ".join(FRAG.read_text(encoding="utf-8").split())
-    match = CALL.search(text)
-    if match is None or "while (rayQueryProceedEXT(query)) { }" not in text \
+    match, offset = CALL.search(text), OFFSET.search(text)
+    if match is None or offset is None or ORIGIN not in text \
+            or "while (rayQueryProceedEXT(query)) { }" not in text \
             or "rayQueryGetIntersectionTypeEXT(query, true) == gl_RayQueryCommittedIntersectionNoneEXT" \
             not in text:
         raise SystemExit("shaders/24_ray_queries/scene.frag: its ray query no longer reads as the "
                          "figure draws it; redraw book/diagrams/24_ray_query.py")
-    call = match.groupdict()
+    call = match.groupdict() | offset.groupdict()
     call["flags"] = [f.strip().replace("gl_RayFlags", "").replace("EXT", "")
                      for f in call["flags"].split("|")]
     return call

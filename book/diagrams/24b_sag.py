@@ -38,7 +38,7 @@ def read(path: Path, pattern: str) -> str:
     return match.group(1)
 
 
-OFFSET = float(read(ROOT / "shaders/24_ray_queries/scene.frag", r"world \+ ([0-9.]+) \* n"))
+OFFSET = float(read(ROOT / "shaders/24_ray_queries/scene.frag", r"const float ray_offset = ([0-9.]+);"))
 SLICES, STACKS = (int(v) for v in read(ROOT / "chapters/24_ray_queries/main.cpp",
                                        r"builder\.sphere\((\d+, \d+)\)").split(", "))
 SCALE = float(read(ROOT / "chapters/24_ray_queries/main.cpp",

@@ -23,6 +23,7 @@
 #include "vkt/resources/shader.hpp"
 #include "vkt/scene/camera_math.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -48,6 +49,26 @@ struct Object {
     vkt::shapes::MeshRange mesh;
     Mesh kind;
 };
+
+// Where the shadow ray starts, scene.frag's specialization constants 0 and 1
+// (page 24b): --ray-offset D, D along the normal (0 to 1, 0.01 by default),
+// or --ray-offset ulp, Waechter and Binder's floating-point offset alone.
+struct RayStart {
+    float distance = 0.01f;
+    VkBool32 float_offset = VK_FALSE;
+};
+
+RayStart ray_start(const vkt::Options& options) {
+    const std::string& text = options.text("--ray-offset");
+    if (text == "ulp") return {.float_offset = VK_TRUE};
+    float distance = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), distance);
+    if (error != std::errc{} || end != text.data() + text.size() ||
+        !(distance >= 0 && distance <= 1))
+        throw vkt::UsageError("--ray-offset wants a distance from 0 to 1 along the normal, " +
+                              std::string("or ulp, not '") + text + "'");
+    return {.distance = distance};
+}
 
 // [scene]
 // Chapter 22's scene: a floor 60 units deep, two rows of pillars, a sphere
@@ -202,15 +223,22 @@ public:
         layout_ = vkt::create_pipeline_layout(device_, set_layouts, {&push, 1});
         const vkt::ShaderModule vertex = vkt::load_shader(device_, context.chapter, "scene.vert");
         const vkt::ShaderModule fragment = vkt::load_shader(device_, context.chapter, "scene.frag");
+        const RayStart start = ray_start(context.options);
+        const VkSpecializationMapEntry entries[] = {
+            {0, offsetof(RayStart, distance), sizeof start.distance},
+            {1, offsetof(RayStart, float_offset), sizeof start.float_offset}};
+        const VkSpecializationInfo specialization{2, entries, sizeof start, &start};
         depth_format_ = vkt::choose_depth_format(physical_);
-        pipeline_ = vkt::create_graphics_pipeline(device_, {.vertex = vertex,
-                                                            .fragment = fragment,
-                                                            .layout = layout_,
-                                                            .bindings = {&binding, 1},
-                                                            .attributes = attributes,
-                                                            .cull_mode = VK_CULL_MODE_BACK_BIT,
-                                                            .color_formats = {context.color_format},
-                                                            .depth_format = depth_format_});
+        pipeline_ =
+            vkt::create_graphics_pipeline(device_, {.vertex = vertex,
+                                                    .fragment = fragment,
+                                                    .layout = layout_,
+                                                    .bindings = {&binding, 1},
+                                                    .attributes = attributes,
+                                                    .cull_mode = VK_CULL_MODE_BACK_BIT,
+                                                    .color_formats = {context.color_format},
+                                                    .depth_format = depth_format_,
+                                                    .fragment_specialization = &specialization});
         if (context.options.text("--view") == "boxes") {
             boxes_ = std::make_unique<ch24::BoxView>(gpu, context.chapter, context.color_format,
                                                      depth_format_, context.frames_in_flight,
@@ -393,7 +421,13 @@ int main(int argc, char** argv) {
                  "is built from",
          .default_value = "scene",
          .choices = {"scene", "boxes"}},
+        {.name = "--ray-offset",
+         .value_name = "D|ulp",
+         .help = "where the shadow ray starts: D along the normal (0 to 1), or ulp: Waechter and "
+                 "Binder's floating-point offset alone",
+         .default_value = "0.01"},
     };
+    spec.check_options = [](const vkt::Options& options) { ray_start(options); };
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
         return std::make_unique<RayQueries>(context);
     });

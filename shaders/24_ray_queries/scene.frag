@@ -28,7 +28,31 @@ float map_visibility() {
     return lit / 9.0;
 }
 
+// [float-offset]
+// Waechter and Binder's start for a ray leaving a surface (Ray Tracing Gems,
+// chapter 6): each coordinate moved along the normal by a number of units in
+// its last place, up to 256, so the step grows with the coordinate as its
+// rounding error does; within 1/32 of zero, where floats are dense, by a
+// small fixed distance instead. It covers the floating-point error only.
+vec3 float_offset(vec3 p, vec3 n) {
+    const ivec3 steps = ivec3(256.0 * n);
+    vec3 moved;
+    for (int i = 0; i < 3; ++i) {
+        const int step = p[i] < 0.0 ? -steps[i] : steps[i];
+        moved[i] = abs(p[i]) < 1.0 / 32.0 ? p[i] + n[i] / 65536.0
+                                          : intBitsToFloat(floatBitsToInt(p[i]) + step);
+    }
+    return moved;
+}
+// [/float-offset]
+
 // [ray-query]
+// Where the ray starts: ray_offset along the normal, a hundredth by default
+// (--ray-offset D sets it; --ray-offset ulp uses float_offset instead, page
+// 24b's comparison), both specialization constants of the pipeline.
+layout(constant_id = 0) const float ray_offset = 0.01;
+layout(constant_id = 1) const bool use_float_offset = false;
+
 // The ray query's answer, exactly 0 or 1: a ray from the point towards the
 // light, started a little off the surface so that it does not hit the
 // triangle it leaves. Any hit at all means shadow, so the query stops at the
@@ -36,9 +60,10 @@ float map_visibility() {
 // geometry), so the loop that would let the shader judge candidate hits
 // (alpha-tested leaves, say) finds none to judge.
 float ray_visibility(vec3 n) {
+    const vec3 origin = use_float_offset ? float_offset(world, n) : world + ray_offset * n;
     rayQueryEXT query;
     rayQueryInitializeEXT(query, scene, gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsOpaqueEXT,
-                          0xFF, world + 0.01 * n, 0.0, -frame.light.xyz, 1000.0);
+                          0xFF, origin, 0.0, -frame.light.xyz, 1000.0);
     while (rayQueryProceedEXT(query)) {
     }
     return rayQueryGetIntersectionTypeEXT(query, true) == gl_RayQueryCommittedIntersectionNoneEXT

@@ -70,7 +70,29 @@ vkt_chapter_test(chapter.24_ray_queries.crowd 24_ray_queries ${VKT_24_PIXEL}
   ARGS --headless --validation --frames 3 --size ${VKT_TEST_SIZE} --crowd 256
   EXPECT "top level 275 instances")
 vkt_chapter_test(chapter.24_ray_queries.help 24_ray_queries EXIT 0 ARGS --help
-  EXPECT "usage: 24_ray_queries" "--shadows HOW" "--tlas HOW" "--crowd N")
+  EXPECT "usage: 24_ray_queries" "--shadows HOW" "--tlas HOW" "--crowd N" "--ray-offset D\\|ulp")
+# Where the shadow ray starts (--ray-offset, page 24b's "Where the ray
+# starts"): scene.frag's specialization constants. Given as its default,
+# 0.01 along the normal, it draws the default's picture to the bit.
+vkt_chapter_test(chapter.24_ray_queries.ray_offset_default 24_ray_queries
+  SAME_AS chapter.24_ray_queries ${VKT_24_PIXEL} ARGS ${headless} --ray-offset 0.01)
+# Started on the surface (0), rays hit the triangles they leave: acne over
+# the lit surfaces (lavapipe: 9.8% of the pixels differ from the default's
+# golden by more than 24 in a channel), so the picture must fail against the
+# golden even with 5% of the pixels allowed to differ.
+vkt_chapter_test(chapter.24_ray_queries.ray_offset_zero 24_ray_queries
+  GOLDEN TOLERANCE 8,24,0.05 ARGS ${headless} --ray-offset 0)
+set_tests_properties(chapter.24_ray_queries.ray_offset_zero PROPERTIES
+  PASS_REGULAR_EXPRESSION "FAIL: picture differs from .*24_ray_queries\\.png")
+# Waechter and Binder's floating-point offset alone (ulp) leaves blue specks
+# on the sphere and the torus in the comparison, 84 pixels changed at
+# 320x240 on lavapipe (the page counts them), so the picture fails against
+# the comparison's golden with 0.05% (38 pixels) allowed to differ.
+vkt_chapter_test(chapter.24_ray_queries.ray_offset_ulp 24_ray_queries
+  GOLDEN_FILE 24_ray_queries_compare.png TOLERANCE 8,24,0.0005
+  ARGS ${headless} --shadows compare --ray-offset ulp)
+set_tests_properties(chapter.24_ray_queries.ray_offset_ulp PROPERTIES
+  PASS_REGULAR_EXPRESSION "FAIL: picture differs from .*24_ray_queries_compare\\.png")
 
 # A device without ray queries (the H100's driver offers acceleration
 # structures and ray-tracing pipelines but not VK_KHR_ray_query), or without
@@ -100,6 +122,10 @@ vkt_chapter_test(bad_input.24_ray_queries.bad_crowd 24_ray_queries EXIT 2 ARGS -
   EXPECT "--crowd wants a whole number from 0 to 16384, not '16385'")
 vkt_chapter_test(bad_input.24_ray_queries.crowd_word 24_ray_queries EXIT 2 ARGS --crowd many
   EXPECT "--crowd wants a whole number")
+vkt_chapter_test(bad_input.24_ray_queries.bad_ray_offset 24_ray_queries EXIT 2 ARGS --ray-offset 2
+  EXPECT "--ray-offset wants a distance from 0 to 1 along the normal, or ulp, not '2'")
+vkt_chapter_test(bad_input.24_ray_queries.ray_offset_word 24_ray_queries EXIT 2
+  ARGS --ray-offset far EXPECT "--ray-offset wants a distance from 0 to 1 .*, not 'far'")
 # The boxes view: the lit scene and, over it, each bottom level's box carried
 # into the world (orange) and each instance's axis-aligned box in the top
 # level (blue, drawn second). Hand-worked: the sphere (radius 0.5, scaled
