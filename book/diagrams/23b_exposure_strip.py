@@ -8,7 +8,8 @@ tests/golden/23_materials_exposure_plus_2.png (--sky uniform --exposure 2).
 The exposure multiplies the radiance by 2^EV before the curve, so each step
 of 2 EV is four times the light. Under each picture, read from it when the
 book is built: the sky's corner pixel, and how many pixels have a channel at
-255, in all and row by row (plastic at the top to gold at the bottom).
+255. The row-by-row counts (plastic at the top to gold at the bottom) are not
+drawn; the page quotes them in its text.
 
 Below them, one square of the -2 EV picture (boxed on it), around the bottom
 row's second sphere, enlarged: as the chapter makes it, from the float HDR
@@ -22,6 +23,9 @@ that colour.
 book/23b_hdr.md says where the pixels at 255 go from 0 EV to +2 EV and quotes
 the squares' brightest pixels; the phrases it must say are computed here from
 the same pictures (quoted()), and the build stops if the page says otherwise.
+The page also says that the 8-bit square's flat disc is the same set of pixels
+as the pure white disc in tests/golden/23_materials_clamp.png (23b_clamp_aces.py's
+square, the same place at 0 EV cut at 1); same_disc() checks that it is.
 `python3 23b_exposure_strip.py --numbers` prints them.
 
 With VKT_DIAGRAM_LAYOUT=narrow (the builder asks for it, for phones) the
@@ -119,17 +123,34 @@ def squares() -> list[tuple[list, tuple[int, int, int], int]]:
     return out
 
 
+def same_disc(flat_pixels, flat) -> int:
+    """The 8-bit square's pixels of its brightest colour must be exactly the clamped picture's pure
+    white pixels in the same square: both store every channel that reaches 1 as 1. Their count."""
+    def where(pixels, colour):
+        return {(x, y) for y in range(TOP, TOP + CROP_H) for x in range(LEFT, LEFT + CROP_W)
+                if pixels[y][x] == colour}
+    grey = where(flat_pixels, flat)
+    white = where(read_png(GOLDEN / "23_materials_clamp.png"), (255, 255, 255))
+    if grey != white:
+        raise SystemExit(f"book/diagrams/23b_exposure_strip.py: the 8-bit square's flat disc ({len(grey)} "
+                         f"pixels) is not the clamped picture's white disc ({len(white)} pixels); "
+                         "book/23b_hdr.md says they are the same pixels")
+    return len(grey)
+
+
 def quoted() -> dict[str, str]:
     """The phrases book/23b_hdr.md must say, computed here: 0 EV against +2 EV, and the squares."""
     (_, _), (_, zero), (_, plus) = pictures()
     rows0, rows2 = [sum(r) for r in zero], [sum(r) for r in plus]
     t0, t2 = sum(rows0), sum(rows2)
-    (_, lit, _), (_, flat, flat_count) = squares()
+    (_, lit, _), (flat_pixels, flat, flat_count) = squares()
+    disc = same_disc(flat_pixels, flat)
     return {
         f"from {t0} to {t2}, {t2 / t0:.1f} times": "the pixels at 255 in all",
         f"from {listed(rows0)} to {listed(rows2)}": "the pixels at 255 row by row",
         f"the brightest pixel {lit}": "the float square's brightest pixel",
         f"{flat_count} pixels of one colour, {flat}": "the 8-bit square's flat disc",
+        f"the same {disc} pixels that [the 8-bit square]": "the 8-bit and the clamped discs, one set",
     }
 
 
@@ -156,21 +177,21 @@ def main() -> None:
                    "plastic is pale cream, the sky a light blue-grey and the metal rows' highlights "
                    "several times larger, yet every sphere is still shaded: the curve's shoulder rolls "
                    "the bright values off instead of cutting them. Under each picture, its sky pixel and "
-                   "its pixels with a channel at 255, in all and row by row from plastic to gold. Below, "
+                   "how many of its pixels have a channel at 255. Below, "
                    f"the square boxed on the -2 EV picture, {CROP_W} by {CROP_H} pixels around the second "
                    f"sphere of the bottom row, enlarged {zoom} times, twice. Left, from the 16-bit float "
                    "HDR image: both highlights white at the centre and fading into the gold. Right, from "
                    "an image that stores 0 to 1 in 8 bits: every value above 1 was stored as 1, so the "
                    "large highlight is a flat grey disc and the small one a flat grey patch. Under each "
                    "square, its brightest pixel and how many pixels have that colour.")
-    size, top, step, under = 13.5, 30, 0, 64
+    size, top, step, under = 13.5, 30, 0, 44
     if narrow:
         width, x0, step = 400, 40, H + 46 + under
-        rule = top + 2 * step + H + under + 44
+        rule = top + 2 * step + H + under + 14
     else:
         gap, x0 = 20, 10
         width = 2 * x0 + 3 * W + 2 * gap
-        rule = top + H + under + 34
+        rule = top + H + under + 14
     zoom_top = rule + (70 if narrow else 58)
     s = Svg(width, zoom_top + zh + (96 if narrow else 58), title, description)
     for i, ((pixels, cells), (_, flag, factor)) in enumerate(zip(shown, COLUMNS)):
@@ -180,18 +201,9 @@ def main() -> None:
         enlarged(s, pixels, 0, 0, W, H, x, y, 1)
         if i == 0:
             s.rect(x + LEFT - 1, y + TOP - 1, CROP_W + 2, CROP_H + 2, stroke="#ffffff", width=1.5)
-        rows = [sum(r) for r in cells]
         s.text(x + W / 2, y + H + 20, f"sky {pixels[0][0]}", size=size, anchor="middle", fill=MUTED)
-        s.text(x + W / 2, y + H + 40, f"{sum(rows)} pixels at 255, by row:", size=size, anchor="middle",
+        s.text(x + W / 2, y + H + 40, f"{sum(map(sum, cells))} pixels at 255", size=size, anchor="middle",
                fill=MUTED)
-        s.text(x + W / 2, y + H + 60, "  ".join(str(n) for n in rows), size=size, anchor="middle",
-               fill=MUTED, bold=True)
-    foot = top + (2 * step if narrow else 0) + H + under + 16
-    key = ["rows, top to bottom: metallic 0 (plastic),", "1/3, 2/3 and 1 (gold)"]
-    if narrow:
-        s.lines(x0, foot, key, size=size, fill=MUTED)
-    else:
-        s.text(x0, foot, " ".join(key), size=size, fill=MUTED)
 
     # The boxed square of the -2 EV picture, from the float image and from an 8-bit one.
     s.line(x0 if not narrow else 10, rule, width - (x0 if not narrow else 10), rule, stroke=MUTED, width=0.8)
