@@ -4,8 +4,9 @@ table) and the three reads a pixel makes of them.
 
 The sizes, level counts, sample counts and the format are read from
 chapters/23_materials/environment.hpp (book/source_constants.py), and the
-script checks that scene_ibl.frag still reads the three images as drawn, so
-the figure cannot drift from the code.
+script checks that environment.hpp still gives level 0 of the prefiltered
+cube one sample and that scene_ibl.frag still reads the three images as
+drawn, so the figure cannot drift from the code.
 
 With VKT_DIAGRAM_LAYOUT=narrow (the builder asks for it, for phones) the
 three stages are drawn one above the other, 380 units wide.
@@ -45,6 +46,9 @@ READS = [
     "textureLod(specular_map, reflect(-v, n), level).rgb * specular_share;",
 ]
 
+# The prefilter's sample count: one for level 0, the mirror, whose half vectors are all n.
+MIRROR_SAMPLES = "push.samples = level == 0 ? 1 : specular_samples;"
+
 
 def check_sources() -> str:
     """The image format's name (environment.hpp); exits if scene_ibl.frag no longer reads as drawn."""
@@ -53,6 +57,10 @@ def check_sources() -> str:
         if want not in code:
             raise SystemExit(f"shaders/23_materials/scene_ibl.frag: no longer says `{want[:60]}`; "
                              "redraw book/diagrams/23c_ibl_overview.py")
+    env = " ".join(ENVIRONMENT_HPP.read_text(encoding="utf-8").split())
+    if MIRROR_SAMPLES not in env:
+        raise SystemExit(f"chapters/23_materials/environment.hpp: no longer says `{MIRROR_SAMPLES}`; "
+                         "redraw book/diagrams/23c_ibl_overview.py")
     found = re.search(r"VkFormat format = VK_FORMAT_([A-Z0-9_]+);", ENVIRONMENT_HPP.read_text(encoding="utf-8"))
     if not found:
         raise SystemExit("chapters/23_materials/environment.hpp: no `VkFormat format = VK_FORMAT_...;`; "
@@ -76,7 +84,7 @@ def main() -> None:
             f"and downsample.comp its {SKY_LEVELS} mip levels. From it irradiance.comp makes the irradiance "
             f"cube, {IRR} by {IRR} a face, one level, {IRR_SAMPLES} samples a texel, and prefilter.comp the "
             f"prefiltered specular cube, {SPEC} by {SPEC} a face, {SPEC_LEVELS} levels, one per roughness "
-            f"step from 0 to 1. brdf_lut.comp makes the BRDF table, {LUT} by {LUT}, from no sky at all. "
+            f"step from 0 to 1, {SPEC_SAMPLES} samples a texel but 1 at level 0, a mirror. brdf_lut.comp makes the BRDF table, {LUT} by {LUT}, from no sky at all. "
             f"All are {fmt}. Every pixel of scene_ibl.frag then reads the table at (n·v, roughness) for "
             "A and B, S = F0 A + B; the irradiance at n, times the diffuse colour and 1 − S; and the "
             "prefiltered cube in the mirror direction at level roughness × "
@@ -99,7 +107,8 @@ def main() -> None:
                  "cosine-weighted mean over n's hemisphere"]
     spec_lines = [f"{SPEC} × {SPEC} a face, {SPEC_LEVELS} levels: {sizes(SPEC, SPEC_LEVELS)}",
                   "roughness " + ", ".join(f"{r:g}" for r in steps),
-                  f"{SPEC_SAMPLES} samples a texel (level 0: 1)"]
+                  f"{SPEC_SAMPLES} samples a texel at levels 1 to {SPEC_LEVELS - 1};",
+                  "level 0, a mirror: 1 sample a texel"]
     lut_lines = [f"{LUT} × {LUT}, 2D, 1 level: (A, B)", "at (n·v, roughness)",
                  f"{LUT_SAMPLES} samples; reads no sky"]
     reads = [
