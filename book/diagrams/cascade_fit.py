@@ -103,6 +103,12 @@ def one_cascade_box_side():
     return 2 * max(math.dist(p, centre) for p in corners) * MAP_SIZE / (MAP_SIZE - 1)
 
 
+def one_cascade_centre():
+    """The centre of the sphere round the whole view: on the line of sight, halfway out."""
+    corners = slice_corners(NEAR, FAR)
+    return mul(1 / 8, tuple(map(sum, zip(*corners))))
+
+
 def check_page() -> None:
     """book/22_shadows.md and book/22b_cascades.md quote these numbers in their prose; a page
     that no longer agrees with the arithmetic stops the diagram, and so the book's build,
@@ -118,6 +124,9 @@ def check_page() -> None:
             f"the one map's texels are {one_cascade_box_side() / box_side(0):.0f} times as wide as the near "
             "cascade's": "--cascades 1's texel against the near cascade's",
             f"sphere is {one_cascade_radius():.1f} units in radius": "--cascades 1's sphere",
+            f"{math.dist(one_cascade_centre(), EYE):.2f} units from the eye": "--cascades 1's sphere's centre",
+            f"centre is at y = \u2212{-one_cascade_centre()[1]:.1f}, {-one_cascade_centre()[1]:.1f} units "
+            "below the floor": "--cascades 1's sphere's centre",
             f"with one map {one_cascade_box_side():.0f} units across, and a depth": "--cascades 1's box",
         },
         "22b_cascades.md": {

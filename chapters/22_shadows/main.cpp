@@ -237,7 +237,7 @@ public:
         const VkImageSubresourceRange layers{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, cascades_};
         constexpr VkPipelineStageFlags2 tests = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
                                                 VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-        // [shadow-pass]
+        // [shadow-before]
         // The map is rewritten each frame: after the last frame's lit pass
         // has read it (fragment shader), its old contents are thrown away.
         vkt::image_barrier(cmd, shadow_image_, layers, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -248,9 +248,12 @@ public:
         bind_geometry(cmd);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadow_pipeline_);
         vkt::set_viewport_and_scissor(cmd, {shadow_size, shadow_size});
+        // [/shadow-before]
+        // [shadow-loop]
         {  // --benchmark's GPU time of the shadow pass, every cascade
             auto scope = frame.gpu_scope("shadow");
             for (uint32_t c = 0; c < cascades_; ++c) {
+                // [shadow-layer]
                 const VkRenderingAttachmentInfo depth{
                     .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
                     .imageView = shadow_views_[c],
@@ -273,8 +276,11 @@ public:
                     vkCmdDrawIndexed(cmd, draw.mesh.index_count, 1, draw.mesh.first_index, 0, 0);
                 }
                 vkCmdEndRendering(cmd);
+                // [/shadow-layer]
             }
         }
+        // [/shadow-loop]
+        // [shadow-after]
         // Depth writes to shader reads: the lit pass's fragment shader must
         // see every layer complete.
         vkt::image_barrier(cmd, shadow_image_, layers, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
@@ -282,7 +288,7 @@ public:
                            VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                            VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-        // [/shadow-pass]
+        // [/shadow-after]
 
         if (show_map_) {  // --view map: the map itself instead of the scene
             map_view_.draw(cmd, frame.target_view, frame.extent, block_.light_from_world);
