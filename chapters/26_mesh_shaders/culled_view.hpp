@@ -32,7 +32,6 @@ inline void check_view(const vkt::Options& options) {
             "--view culled shows what the task shader's tests cull: it needs --cull on");
 }
 
-// [show-from]
 // Before the frame's draw: the second camera's matrix into `shown` (binding
 // 5), once the last frame's mesh shaders are done reading it, and visible
 // to this frame's.
@@ -44,6 +43,5 @@ inline void show_from(VkCommandBuffer cmd, VkBuffer shown, const glm::mat4& clip
                         VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_MESH_SHADER_BIT_EXT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
 }
-// [/show-from]
 
 }  // namespace ch26
