@@ -8,8 +8,10 @@
 // triangles straight to the rasteriser. The task shader counts what it culls;
 // the last frame's counts are printed beside the CPU's own for the same view.
 // --draw indirect draws the same model chapter 15's way, for the comparison
-// the book measures; --view meshlets colours each meshlet.
+// the book measures; --view meshlets colours each meshlet, --view culled
+// each by the task shader's verdict (culled_view.hpp).
 
+#include "culled_view.hpp"
 #include "mesh_limits.hpp"
 #include "meshlets.hpp"
 
@@ -50,17 +52,20 @@ struct GpuVertex {
     glm::vec4 position, normal;
 };
 using ch26::kMeshVertices, ch26::kMeshTriangles, ch26::kTaskGroup;
+const char* const kViews[] = {"lit", "meshlets", "culled"};  // by ch26::View
 constexpr uint32_t kCounters = 4;  // per frame: frustum, cone, triangles, meshlets drawn
 constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_TASK_BIT_EXT | VK_SHADER_STAGE_MESH_BIT_EXT |
                                        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
 // The camera circles the model outside its bounding sphere, 25 degrees above
 // it, and --turn swings its gaze that many degrees to the left of the model.
+// `opposite`: --view culled's second camera, across the model from the first.
 struct View {
     glm::mat4 clip_from_world;
     glm::vec3 eye;
 };
-View camera(glm::vec3 lo, glm::vec3 hi, VkExtent2D extent, double time, float turn_degrees) {
+View camera(glm::vec3 lo, glm::vec3 hi, VkExtent2D extent, double time, float turn_degrees,
+            bool opposite = false) {
     const glm::vec3 centre = 0.5f * (lo + hi);
     const float radius = std::max(0.5f * glm::length(hi - lo), 1e-4f);
     const float aspect = float(extent.width) / float(extent.height), fov = glm::radians(45.0f);
@@ -68,8 +73,9 @@ View camera(glm::vec3 lo, glm::vec3 hi, VkExtent2D extent, double time, float tu
     const float distance = radius / std::sin(half);
     const float azimuth = 0.6f + 0.25f * float(time), elevation = glm::radians(25.0f);
     const glm::vec3 eye =
-        centre + distance * glm::vec3(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
-                                      std::cos(elevation) * std::cos(azimuth));
+        centre + (opposite ? -distance : distance) *
+                     glm::vec3(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+                               std::cos(elevation) * std::cos(azimuth));
     const glm::mat4 turn =
         glm::rotate(glm::mat4(1.0f), glm::radians(turn_degrees), glm::vec3(0.0f, 1.0f, 0.0f));
     const glm::vec3 gaze = glm::vec3(turn * glm::vec4(centre - eye, 0.0f));
@@ -84,7 +90,7 @@ public:
         : physical_(context.physical), device_(context.device) {
         const vkt::Gpu gpu = context.gpu();
         indirect_ = context.options.text("--draw") == "indirect";
-        view_ = context.options.text("--view") == "meshlets" ? 1 : 0;
+        view_ = ch26::parse_view(context.options.text("--view"));
         cull_ = context.options.text("--cull") == "on" ? 1 : 0;
         turn_ = float(context.options.number("--turn"));
 
@@ -207,6 +213,8 @@ public:
             gpu, built.vertices.data(), built.vertices.size() * sizeof(uint32_t), storage));
         buffers_.push_back(vkt::create_device_buffer(
             gpu, built.triangles.data(), built.triangles.size() * sizeof(uint32_t), storage));
+        const glm::mat4 unset(1.0f);  // --view culled: the second camera, from record()
+        shown_ = vkt::create_device_buffer(gpu, &unset, sizeof(unset), storage);
         counters_ = vkt::create_host_buffer(
             gpu, std::size_t(context.frames_in_flight) * kCounters * sizeof(uint32_t), storage);
         std::memset(counters_.mapped, 0, counters_.size);
@@ -218,12 +226,12 @@ public:
         indirect_buffer_ = vkt::create_device_buffer(gpu, &whole_model, sizeof(whole_model),
                                                      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
 
-        // One set: the five storage buffers (chapter 07's helpers).
+        // One set: the six storage buffers (chapter 07's helpers).
         std::vector<VkDescriptorSetLayoutBinding> bindings;
-        for (uint32_t b = 0; b < 5; ++b)
+        for (uint32_t b = 0; b < 6; ++b)
             bindings.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kStages, nullptr});
         set_layout_ = vkt::create_descriptor_set_layout(device_, bindings);
-        const VkDescriptorPoolSize pool_size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5};
+        const VkDescriptorPoolSize pool_size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 6};
         pool_ = vkt::create_descriptor_pool(device_, 1, {&pool_size, 1});
         set_ = vkt::allocate_descriptor_set(device_, pool_, set_layout_);
         for (uint32_t b = 0; b < 4; ++b)
@@ -231,6 +239,8 @@ public:
                                          buffers_[b].buffer, 0, VK_WHOLE_SIZE);
         vkt::write_buffer_descriptor(device_, set_, 4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                      counters_.buffer, 0, VK_WHOLE_SIZE);
+        vkt::write_buffer_descriptor(device_, set_, 5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                     shown_.buffer, 0, VK_WHOLE_SIZE);
         const VkDescriptorSetLayout set_layout = set_layout_;
         const VkPushConstantRange push{kStages, 0, sizeof(Push)};
         layout_ = vkt::create_pipeline_layout(device_, {&set_layout, 1}, {&push, 1});
@@ -266,7 +276,7 @@ public:
         std::fprintf(
             stderr, "26_mesh_shaders: %s, %s view, culling %s\n",
             indirect_ ? "one vkCmdDrawIndexedIndirect (vertex shader)" : "task and mesh shaders",
-            view_ ? "meshlets" : "lit", cull_ ? "on" : "off");
+            kViews[view_], cull_ ? "on" : "off");
     }
 
     void resize(VkExtent2D extent) override {
@@ -284,6 +294,10 @@ public:
             static_cast<uint32_t*>(counters_.mapped) + std::size_t(frame.slot) * kCounters;
         std::fill(counters, counters + kCounters, 0u);
         // [/counters]
+        if (view_ == ch26::view_culled)  // the second camera's matrix (culled_view.hpp)
+            ch26::show_from(
+                frame.cmd, shown_.buffer,
+                camera(bounds_lo_, bounds_hi_, frame.extent, frame.time, 0, true).clip_from_world);
 
         vkt::begin_depth_frame(frame.cmd, depth_.image);
         vkt::begin_rendering(frame.cmd, frame.target_view, frame.extent,
@@ -331,8 +345,9 @@ public:
         const auto* counters =
             static_cast<const uint32_t*>(counters_.mapped) + std::size_t(last_slot_) * kCounters;
         std::fprintf(stderr,
-                     "26_mesh_shaders: the last frame culled %u of %u meshlets (%u outside the "
+                     "26_mesh_shaders: the last frame %s %u of %u meshlets (%u outside the "
                      "frustum, %u facing away), drew %u meshlets, submitted %u of %u triangles\n",
+                     view_ == ch26::view_culled ? "would have culled" : "culled",
                      counters[0] + counters[1], meshlet_count_, counters[0], counters[1],
                      counters[3], counters[2], triangle_count_);
         // [/report]
@@ -359,7 +374,7 @@ private:
     View last_{};
     uint32_t last_slot_ = 0;
     std::vector<vkt::Buffer> buffers_;  // vertices, meshlets, their vertices, their triangles
-    vkt::Buffer counters_, index_buffer_, indirect_buffer_;
+    vkt::Buffer shown_, counters_, index_buffer_, indirect_buffer_;  // shown_: culled_view.hpp
     vkt::DescriptorSetLayout set_layout_;
     vkt::DescriptorPool pool_;
     VkDescriptorSet set_ = VK_NULL_HANDLE;  // freed with pool_
@@ -398,9 +413,9 @@ int main(int argc, char** argv) {
          .choices = {"mesh", "indirect"}},
         {.name = "--view",
          .type = vkt::OptionType::choice,
-         .help = "the lit model, or each meshlet in its own colour",
+         .help = "the lit model, each meshlet in its own colour, or what is culled (in colours)",
          .default_value = "lit",
-         .choices = {"lit", "meshlets"}},
+         .choices = {"lit", "meshlets", "culled"}},
         {.name = "--cull",
          .type = vkt::OptionType::choice,
          .help = "cull meshlets in the task shader (frustum and normal cone)",
@@ -419,12 +434,7 @@ int main(int argc, char** argv) {
          .help = "a glTF 2.0 file, .gltf or .glb (default: assets/gltf/knot.glb)"},
         vkt::max_memory_option(),
     };
-    spec.check_options = [](const vkt::Options& options) {
-        if (options.text("--draw") == "indirect" && options.text("--view") == "meshlets")
-            throw vkt::UsageError(
-                "--view meshlets needs --draw mesh: the indirect draw has no "
-                "meshlets");
-    };
+    spec.check_options = ch26::check_view;
     return vkt::run_chapter(argc, argv, spec, [](const vkt::Context& context) {
         return std::make_unique<MeshShaders>(context);
     });

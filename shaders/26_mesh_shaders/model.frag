@@ -1,12 +1,13 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Chapter 26's fragments, for both pipelines: the model's colour, or each
-// meshlet's own (--view meshlets), lit by one directional light.
+// meshlet's own (--view meshlets), lit by one directional light; or, with
+// --view culled, a meshlet the task shader would cull in its test's flat colour.
 
 #include "meshlet_data.glsl"
 
 layout(location = 0) in vec3 normal;
-layout(location = 1) flat in uint meshlet;
+layout(location = 1) flat in uint meshlet;  // --view culled: the verdict
 layout(location = 0) out vec4 colour;
 
 // [meshlet-colour]
@@ -23,6 +24,10 @@ vec3 meshlet_colour(uint i) {
 // [/meshlet-colour]
 
 void main() {
+    if (push.view == VIEW_CULLED && meshlet != KEPT) {
+        colour = vec4(kCulledColour[meshlet], 1.0);
+        return;
+    }
     const vec3 light = normalize(vec3(0.4, 1.0, 0.6));
     const vec3 base = push.view == 1 ? meshlet_colour(meshlet) : push.base_colour.rgb;
     const float lambert = max(dot(normalize(normal), light), 0.0);

@@ -24,6 +24,22 @@ vkt_chapter_window_test(26_mesh_shaders PIXEL 0,0,196,206,218,1)
 vkt_chapter_test(chapter.26_mesh_shaders.meshlets 26_mesh_shaders
   GOLDEN_FILE 26_mesh_shaders_meshlets.png LABELS bless ${VKT_26_PIXEL}
   ARGS ${headless} --view meshlets EXPECT "meshlets view")
+# --view culled at --turn 30: every meshlet drawn, from a second camera
+# opposite the first across the knot, coloured by the task shader's verdict
+# for the first: outside its frustum (0.75, 0.05, 0.85), stored (225, 63,
+# 237); facing away (1, 0.75, 0), (255, 225, 0); kept, the knot's colour lit
+# as ever, its underside, which only the ambient term lights: (111, 93, 69).
+# Flat colours, depth-tested. (109, 109) is on the part of the knot the
+# turned gaze leaves (on the left, seen from the far side), (200, 122) on a
+# far side of the tube that the cone test culls, (212, 76) on a kept
+# meshlet. The counts are the lit run's at --turn 30, with all 389 drawn.
+vkt_chapter_test(chapter.26_mesh_shaders.view_culled 26_mesh_shaders
+  GOLDEN_FILE 26_mesh_shaders_culled.png LABELS bless
+  PIXEL 0,0,196,206,218,1 109,109,225,63,237 200,122,255,225,0 212,76,111,93,69,1
+  ARGS ${headless} --turn 30 --view culled
+  EXPECT "task and mesh shaders, culled view, culling on"
+         "would have culled 174 of 389 meshlets \\(127 outside the frustum, 47 facing away\\), drew 389 meshlets, submitted 30720 of 30720 triangles"
+         "the CPU culls 174 for that view \\(127 outside the frustum, 47 facing away\\)")
 # Culling changes the work, not the picture: without it every meshlet is
 # drawn (all 30,720 triangles) and the picture is the same; so is chapter
 # 15's way, one indirect draw of the whole model through a vertex shader.
@@ -136,20 +152,28 @@ vkt_chapter_test(chapter.26_mesh_shaders.benchmark 26_mesh_shaders
   ARGS --headless --no-validation --frames 5 --size ${VKT_TEST_SIZE} --benchmark
   EXPECT "\"gpu_scopes_ms\": \\{\"draw\": \\{\"min\": [0-9.]+, \"median\": [0-9.]+, \"p95\": [0-9.]+")
 vkt_chapter_test(chapter.26_mesh_shaders.help 26_mesh_shaders EXIT 0 ARGS --help
-  EXPECT "usage: 26_mesh_shaders" "--draw mesh\\|indirect" "--view lit\\|meshlets"
+  EXPECT "usage: 26_mesh_shaders" "--draw mesh\\|indirect" "--view lit\\|meshlets\\|culled"
          "--cull on\\|off" "--turn DEGREES" "--model FILE")
 
 # Bad input: the command line (exit 2).
 vkt_chapter_test(bad_input.26_mesh_shaders.draw 26_mesh_shaders EXIT 2 ARGS --draw vertex
   EXPECT "--draw wants one of mesh, indirect, not 'vertex'")
 vkt_chapter_test(bad_input.26_mesh_shaders.view 26_mesh_shaders EXIT 2 ARGS --view normals
-  EXPECT "--view wants one of lit, meshlets, not 'normals'")
+  EXPECT "--view wants one of lit, meshlets, culled, not 'normals'")
 vkt_chapter_test(bad_input.26_mesh_shaders.cull 26_mesh_shaders EXIT 2 ARGS --cull maybe
   EXPECT "--cull wants one of on, off, not 'maybe'")
 vkt_chapter_test(bad_input.26_mesh_shaders.turn 26_mesh_shaders EXIT 2 ARGS --turn 181
   EXPECT "--turn wants a number from -180 to 180, not '181'")
 vkt_chapter_test(bad_input.26_mesh_shaders.meshlets_indirect 26_mesh_shaders EXIT 2
   ARGS --draw indirect --view meshlets EXPECT "--view meshlets needs --draw mesh")
+# --view culled shows the task shader's verdicts: it needs the task shader
+# (--draw mesh) and its tests (--cull on).
+vkt_chapter_test(bad_input.26_mesh_shaders.culled_indirect 26_mesh_shaders EXIT 2
+  ARGS --draw indirect --view culled
+  EXPECT "--view culled needs --draw mesh: the indirect draw has no meshlets")
+vkt_chapter_test(bad_input.26_mesh_shaders.culled_no_cull 26_mesh_shaders EXIT 2
+  ARGS --cull off --view culled
+  EXPECT "--view culled shows what the task shader's tests cull: it needs --cull on")
 # Bad input: a model that is missing or not glTF (exit 1, one line).
 vkt_chapter_test(bad_input.26_mesh_shaders.missing_model 26_mesh_shaders EXIT 1
   ARGS --headless --frames 1 --model ${CMAKE_CURRENT_BINARY_DIR}/no_such_model.glb
