@@ -25,12 +25,18 @@ COLUMNS = [(GOLDEN / "23_materials_model.png", "_SRGB (the chapter)"),
            (IMAGES / "23e_base_unorm.png", "_UNORM (wrong)")]
 
 
-def red_mean(pixels) -> tuple[int, int, int]:
-    """The mean of the crop's reddish pixels: red well above green and blue."""
-    reds = [p for row in pixels[TOP:TOP + CROP_H] for p in row[LEFT:LEFT + CROP_W]
-            if p[0] > 60 and p[0] > 1.6 * p[1] and p[0] > 1.6 * p[2]]
-    n = max(len(reds), 1)
-    return tuple(round(sum(p[c] for p in reds) / n) for c in range(3))
+def red_places(pixels) -> list[tuple[int, int]]:
+    """Where the crop is reddish in the chapter's picture (_SRGB): red well above
+    green and blue. Both pictures are averaged over these same pixels, since the
+    _UNORM picture's paler reds would fail the test and drop out."""
+    return [(x, y) for y in range(TOP, TOP + CROP_H) for x in range(LEFT, LEFT + CROP_W)
+            if (p := pixels[y][x])[0] > 60 and p[0] > 1.6 * p[1] and p[0] > 1.6 * p[2]]
+
+
+def red_mean(pixels, places) -> tuple[int, int, int]:
+    """The mean colour of `pixels` over `places`."""
+    n = max(len(places), 1)
+    return tuple(round(sum(pixels[y][x][c] for x, y in places) / n) for c in range(3))
 
 
 def main() -> None:
@@ -38,6 +44,7 @@ def main() -> None:
     zoom, x0, gap, size = (2, 6, 4, 12) if narrow else (4, 20, 30, 13.5)
     w, h, y0 = CROP_W * zoom, CROP_H * zoom, 40
     pictures = [(read_png(path), label) for path, label in COLUMNS]
+    places = red_places(pictures[0][0])
     title = f"Chapter 23e: the base colour through _SRGB and through _UNORM, enlarged {zoom} times"
     description = (f"The same {CROP_W} by {CROP_H} pixels of two pictures of the test model, the "
                    "right cube, each pixel enlarged. Left, the base colour's texture created "
@@ -51,7 +58,7 @@ def main() -> None:
         x = x0 + c * (w + gap)
         s.text(x + w / 2, y0 - 12, label, size=size + 0.5, anchor="middle", bold=True, mono=True)
         enlarged(s, pixels, LEFT, TOP, CROP_W, CROP_H, x, y0, zoom)
-        s.text(x + w / 2, y0 + h + 18, "red squares, mean (%d, %d, %d)" % red_mean(pixels), size=size - (1 if narrow else 0),
+        s.text(x + w / 2, y0 + h + 18, "red squares, mean (%d, %d, %d)" % red_mean(pixels, places), size=size - (1 if narrow else 0),
                anchor="middle", fill=MUTED)
     where = f"x {LEFT}..{LEFT + CROP_W - 1}, y {TOP}..{TOP + CROP_H - 1} of the 320x240 picture"
     foot = [where + ",", f"enlarged {zoom} times"] if narrow else [where + f", enlarged {zoom} times"]
