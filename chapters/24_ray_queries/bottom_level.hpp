@@ -113,6 +113,9 @@ inline std::vector<AccelerationStructure> build_bottom_levels(
         builds[i].scratchData.deviceAddress = scratch_base + scratch_offsets[i];
     // [/sizes]
 
+    // [query-pool]
+    // For compaction: a query pool of one slot per structure, each to hold
+    // that structure's compacted size once its build has finished.
     const VkQueryPoolCreateInfo pool_info{
         .sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO,
         .queryType = VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR,
@@ -121,6 +124,7 @@ inline std::vector<AccelerationStructure> build_bottom_levels(
     VkQueryPool raw_pool;
     VKT_CHECK(vkCreateQueryPool(gpu.device, &pool_info, nullptr, &raw_pool));
     const vkt::QueryPool pool(gpu.device, raw_pool);
+    // [/query-pool]
 
     // [build]
     // One command builds them all. The compacted size is known only once a
@@ -149,13 +153,16 @@ inline std::vector<AccelerationStructure> build_bottom_levels(
         ray.cmd_write_properties(cmd, uint32_t(count), handles.data(),
                                  VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, pool, 0);
     });
+    // [/build]
+
+    // [compact]
+    // The query's answers, read back once the submit has finished: one
+    // compacted size per structure, in bytes.
     std::vector<VkDeviceSize> compacted_sizes(count);
     VKT_CHECK(vkGetQueryPoolResults(
         gpu.device, pool, 0, uint32_t(count), count * sizeof(VkDeviceSize), compacted_sizes.data(),
         sizeof(VkDeviceSize), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
-    // [/build]
 
-    // [compact]
     // Compaction: a structure of exactly the compacted size, the built one
     // copied into it (mode COMPACT), and the built one destroyed.
     std::vector<AccelerationStructure> compacted(count);
