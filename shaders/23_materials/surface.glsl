@@ -32,7 +32,7 @@ vec3 shading_normal() {
         // glTF's bitangent points up the image, where v decreases.
         b = -(dp2perp * duv1.y + dp1perp * duv2.y);
         // t and b are u's and v's gradients on the surface times det, so
-        // det's sign must be kept. The formula, Christian Schüler's, was
+        // det's sign must be kept. The formula, Christian Schueler's, was
         // written for OpenGL, whose window y runs up: there a front face has
         // det > 0. Vulkan's runs down, dFdy steps down the screen, and a
         // front face has det < 0:
