@@ -127,7 +127,6 @@ Overlay::Overlay(const Context& context)
     io.LogFilename = nullptr;
     ImGui::StyleColorsDark();
 
-    // [overlay-font]
     // The font atlas: white glyphs whose alpha is their coverage, so UNORM
     // (it holds no colours) and one mip level (it is drawn at its own size).
     unsigned char* pixels = nullptr;
@@ -145,12 +144,10 @@ Overlay::Overlay(const Context& context)
     set_ = allocate_descriptor_set(gpu_.device, pool_, set_layout_);
     write_image_descriptor(gpu_.device, set_, 0, font_.image.view, font_.sampler,
                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    // [/overlay-font]
 
     const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(Push)};
     const VkDescriptorSetLayout set_layout = set_layout_;
     layout_ = create_pipeline_layout(gpu_.device, {&set_layout, 1}, {&push, 1});
-    // [overlay-pipeline]
     // ImGui's vertex: position and texture coordinate in window pixels, and
     // a colour of four bytes (sRGB-encoded: overlay.vert decodes it, since
     // our target is an _SRGB image that encodes what we write).
@@ -170,7 +167,6 @@ Overlay::Overlay(const Context& context)
                                                        .attributes = attributes,
                                                        .color_formats = {context.color_format},
                                                        .alpha_blend = true});
-    // [/overlay-pipeline]
     slots_.resize(context.frames_in_flight);
 }
 
