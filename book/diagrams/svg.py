@@ -81,6 +81,17 @@ def text_width(text: str, size: float, bold: bool = False, mono: bool = False) -
     return total * size / 1000.0
 
 
+def wrap(text: str, width: float, size: float, bold: bool = False) -> list[str]:
+    """The words of text broken into lines no wider than width at this size."""
+    lines: list[str] = []
+    for word in text.split():
+        if lines and text_width(lines[-1] + " " + word, size, bold) <= width:
+            lines[-1] += " " + word
+        else:
+            lines.append(word)
+    return lines
+
+
 def esc(text: str) -> str:
     return html.escape(text, quote=True)
 
