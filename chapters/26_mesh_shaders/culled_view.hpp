@@ -23,7 +23,7 @@ inline View parse_view(const std::string& view) {
 
 // The views that need the task shader's work, refused without it (exit 2).
 inline void check_view(const vkt::Options& options) {
-    const std::string view = options.text("--view");
+    const std::string& view = options.text("--view");
     if (options.text("--draw") == "indirect" && view != "lit")
         throw vkt::UsageError("--view " + view +
                               " needs --draw mesh: the indirect draw has no meshlets");
