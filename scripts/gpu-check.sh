@@ -159,12 +159,14 @@ if [ -x "$bin/25_ray_tracing" ]; then
 fi
 # Chapter 26: the meshlet view and chapter 15's indirect draw against their
 # lavapipe references, and the task shader's culled counts beside the CPU's
-# for the same view (they must agree; lavapipe: 65 of 389, all facing away).
+# for the same view (they must agree; lavapipe: 65 of 389, all facing away),
+# and the culled view (--turn 30: the task shader's verdicts as colours).
 if [ -x "$bin/26_mesh_shaders" ]; then
   m26="--headless --validation --frames 10 --size 320x240"
   for v in "meshlets|tests/golden/26_mesh_shaders_meshlets.png|--view meshlets" \
            "indirect|tests/golden/26_mesh_shaders.png|--draw indirect" \
-           "turn_30|tests/golden/26_mesh_shaders.png|--turn 30"; do
+           "turn_30|tests/golden/26_mesh_shaders.png|--turn 30" \
+           "view_culled|tests/golden/26_mesh_shaders_culled.png|--turn 30 --view culled"; do
     IFS='|' read -r name golden extra <<<"$v"
     [ "$name" = turn_30 ] && golden=""  # counts only: the picture is not blessed
     if [ -n "$golden" ]; then
