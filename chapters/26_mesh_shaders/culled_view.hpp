@@ -33,11 +33,14 @@ inline void check_view(const vkt::Options& options) {
 }
 
 // Before the frame's draw: the second camera's matrix into `shown` (binding
-// 5), once the last frame's mesh shaders are done reading it, and visible
-// to this frame's.
+// 5), once the last frame's mesh shaders are done reading it and the last
+// frame's write is done (a write after a write needs the first made
+// available, not only finished), and visible to this frame's mesh shaders.
 inline void show_from(VkCommandBuffer cmd, VkBuffer shown, const glm::mat4& clip_from_world) {
-    vkt::buffer_barrier(cmd, shown, VK_PIPELINE_STAGE_2_MESH_SHADER_BIT_EXT, 0,
-                        VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, 0);
+    vkt::buffer_barrier(
+        cmd, shown, VK_PIPELINE_STAGE_2_MESH_SHADER_BIT_EXT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+        VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+        VK_ACCESS_2_TRANSFER_WRITE_BIT);
     vkCmdUpdateBuffer(cmd, shown, 0, sizeof(clip_from_world), &clip_from_world);
     vkt::buffer_barrier(cmd, shown, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_MESH_SHADER_BIT_EXT,
