@@ -156,18 +156,26 @@ def _run(p, uv, normal, texel, who, keep_sign=True):
     duv1, duv2 = (Vec(*(b - a for a, b in zip(uv[0], uv[i]))) for i in (1, 2))
     scope = dict(GLSL, world=Varying(e1, e2), uv=Varying(duv1, duv2), n=Vec(*normal),
                  texture=lambda sampler, at: Vec(*(c / 255 for c in texel), 1.0))
-    for statement in statements(made.group(1)) + statements(made.group(2)):
-        if "draw." in statement:  # the push constants' factors: 1 in this example
+    lines = statements(made.group(1)) + statements(made.group(2))
+    if not keep_sign:
+        lines = ["det_sign = 1.0" if line.startswith("det_sign =") else line for line in lines]
+    run_statements(lines, scope, who)
+    result = eval(made.group(3), {}, scope)
+    return e1, e2, duv1, duv2, scope["t"], scope["b"], scope["m"], result
+
+
+def run_statements(lines, scope, who):
+    """Runs the shader's statements one by one in `scope`, skipping those that read the
+    push constants' factors (draw.*: 1 in these examples); a failure stops the build
+    naming the diagram and the statement."""
+    for statement in lines:
+        if "draw." in statement:
             continue
-        if not keep_sign and statement.startswith("det_sign ="):
-            statement = "det_sign = 1.0"
         try:
             exec(statement, {}, scope)
         except Exception as error:  # noqa: BLE001  (any failure is one line for the build)
             raise SystemExit(f"{WHERE}: {who} cannot run `{statement}` "
                              f"({error}); redraw the figure") from None
-    result = eval(made.group(3), {}, scope)
-    return e1, e2, duv1, duv2, scope["t"], scope["b"], scope["m"], result
 
 
 def file_frame(normal, tangent, texel, who):
@@ -184,14 +192,7 @@ def file_frame(normal, tangent, texel, who):
                          f"else {{ ... }}` followed by a `return`; redraw {who}")
     scope = dict(GLSL, world_normal=Vec(*normal), world_tangent=Vec(*tangent), uv=None,
                  texture=lambda sampler, at: Vec(*(c / 255 for c in texel), 1.0))
-    lines = statements(found.group(1)) + statements(found.group(2)) + statements(found.group(3))
-    for statement in lines:
-        if "draw." in statement:  # the normal map's scale: the figure's file gives none, so 1
-            continue
-        try:
-            exec(statement, {}, scope)
-        except Exception as error:  # noqa: BLE001  (any failure is one line for the build)
-            raise SystemExit(f"{WHERE}: {who} cannot run `{statement}` "
-                             f"({error}); redraw the figure") from None
+    run_statements(statements(found.group(1)) + statements(found.group(2)) + statements(found.group(3)),
+                   scope, who)
     result = eval(found.group(4), {}, scope)
     return scope["t"], scope["b"], scope["m"], result
