@@ -1,15 +1,15 @@
 """Chapter 22: why a lit floor shadows itself without a depth bias, to scale.
 
-A cut through the near cascade's shadow map, along the way the floor falls away from the light. The
-map's texels there are 15.73 / 1024 = 0.0154 units wide (the near cascade's box,
-chapters/22_shadows/cascades.hpp, computed by cascade_fit.py as 22_cascades.py draws it), and the light
+A cut through the one shadow map of --cascades 1, the map the page teaches, along the way the
+floor falls away from the light. Its texels are 110.95 / 1024 = 0.108 units wide (the box around
+the whole view, chapters/22_shadows/cascades.hpp, computed by cascade_fit.py), and the light
 meets the floor at a slope of 0.75 (its direction (-0.6, -1, -0.45) / 1.25
 makes cos 0.8 and sin 0.6 with the floor's normal), so across one texel the
-floor's depth from the light grows by 0.75 x 0.0154 = 0.0115 units. Left: no
+floor's depth from the light grows by 0.75 x 0.108 = 0.0813 units. Left: no
 bias; each texel stores the floor's depth at its centre, and the half of the
 texel beyond the centre lies deeper than what is stored: in shadow. Right:
-the slope bias 4 pushes every stored depth 4 x 0.0115 = 0.046 units away
-from the light (the constant term, a few 1e-5 units with D32_SFLOAT, is too
+the slope bias 4 pushes every stored depth 4 x 0.0813 = 0.325 units away
+from the light (the constant term, 2 to 4 x 1e-5 units with D32_SFLOAT, is too
 small to draw), and the whole floor lies in front. Both axes share one
 scale.
 
@@ -20,11 +20,11 @@ scale, and the key and the notes below them in one column.
 
 import os
 
-from cascade_fit import FLOOR_SLOPE, check_page, texel
+from cascade_fit import FLOOR_SLOPE, check_page, one_map_constant_bias, one_map_texel
 from svg import BLUE, GREEN, INK, MUTED, RED, Svg, wrap
 
 W, H = 1000, 680
-TEXEL = texel(0)             # units across one texel of the near cascade
+TEXEL = one_map_texel()      # units across one texel of the one map (--cascades 1)
 SLOPE = FLOOR_SLOPE          # the floor's depth per unit across the map
 BIAS = 4 * SLOPE * TEXEL     # depthBiasSlopeFactor 4 times the depth slope per texel
 TEXELS = 5
@@ -65,11 +65,11 @@ def panel(s: Svg, x0: float, y0: float, bias: float, title: str, scale: float = 
             s.line((left + right) / 2, y_mid, right, y_right, stroke=RED, width=3.5)
     s.line(x0 + width, y0, x0 + width, bottom, stroke="#d1d9e0", width=1)
     s.text(x0 + (TEXEL * scale / 2 if one_texel_anchor == "middle" else 0), bottom + 20,
-           f"one texel: {TEXEL:.4f} units", size=12.5, anchor=one_texel_anchor, fill=MUTED)
+           f"one texel: {TEXEL:.3f} units", size=12.5, anchor=one_texel_anchor, fill=MUTED)
 
 
 TITLE = "Chapter 22: shadow acne on the floor, and the slope bias that removes it, to scale"
-DESCRIPTION = (f"A cut through the near cascade's shadow map, five texels wide, each {TEXEL:.4f} units; the "
+DESCRIPTION = (f"A cut through the one shadow map of --cascades 1, five texels wide, each {TEXEL:.3f} units; the "
             "light shines down the page and the floor, which the light meets at a slope of 0.75, "
             f"goes {SLOPE * TEXEL:.4f} units deeper across each texel. Left, no bias: each texel stores the "
             "floor's depth at its centre (blue), and the half of each texel beyond the centre is "
@@ -81,7 +81,8 @@ KEY = [(BLUE, 3, "the depth a texel stores"), (GREEN, 3.5, "floor lit: no deeper
 BANDS = ["Bands half a texel wide, and the", "3x3 filter blurs them to part-shadow."]
 NOTES = [f"To scale, both axes: the floor goes {SLOPE * TEXEL:.4f} units deeper per texel; the slope "
          f"bias adds 4 x {SLOPE * TEXEL:.4f} = {BIAS:.3f} units.",
-         "The constant term (a few 1e-5 units with D32_SFLOAT) is too small to draw.",
+         f"The constant term ({one_map_constant_bias()[0] * 1e5:.0f} to {one_map_constant_bias()[1] * 1e5:.0f} "
+         "x 1e-5 units with D32_SFLOAT) is too small to draw.",
          "Why 4 and not just over half a texel's worth: the 3x3 filter also compares a point with "
          "the texels either side of its own, so the bias must cover 1.5 texels' worth "
          f"({1.5 * SLOPE * TEXEL:.3f} units); 4 leaves room."]

@@ -1,11 +1,12 @@
 """Chapter 22's cascades, computed as chapters/22_shadows/cascades.hpp computes them.
 
-Shared by 22_cascades.py and 22_acne.py, so that the two diagrams and the
-page quote one width for a near-cascade texel. The camera is the chapter's
+Shared by 22_cascades.py, 22b_snap.py and 22_acne.py, so that the diagrams and the
+pages quote one width for a texel: of the near cascade, or of the one map of --cascades 1. The camera is the chapter's
 (eye (0, 3, 8) looking along (0, -0.25, -1), 50 degrees high, 4:3 as at the
 default 800x600 and the tests' 320x240, near 0.1, far 60), three cascades
 split by the practical scheme with lambda 0.6, the light along
-(-0.6, -1, -0.45). The map's size is read from main.cpp (shadow_size).
+(-0.6, -1, -0.45), each box reaching BEHIND units further towards the light (main.cpp passes
+40.0f to light_from_world). The map's size is read from main.cpp (shadow_size).
 """
 
 import math
@@ -21,6 +22,7 @@ EYE = (0.0, 3.0, 8.0)
 LIGHT = (-0.6, -1.0, -0.45)
 FOV_Y, ASPECT = math.radians(50), 4 / 3
 NEAR, FAR, LAMBDA, COUNT = 0.1, 60.0, 0.6, 3
+BEHIND = 40.0
 
 
 def add(a, b):
@@ -103,6 +105,24 @@ def one_cascade_box_side():
     return 2 * max(math.dist(p, centre) for p in corners) * MAP_SIZE / (MAP_SIZE - 1)
 
 
+def one_map_texel():
+    """The width of one texel of the one map of --cascades 1."""
+    return one_cascade_box_side() / MAP_SIZE
+
+
+def one_map_depth():
+    """The depth of the light box with --cascades 1: twice the sphere's radius and BEHIND."""
+    return 2 * one_cascade_radius() + BEHIND
+
+
+def one_map_constant_bias(steps=4):
+    """How far depthBiasConstantFactor `steps` moves a depth in the one map, in units, at least
+    and at most: everything the camera sees lies at depths from 1 - 2 * radius / depth to 1,
+    where a D32_SFLOAT step is 2^(e - 23), e = -2 below 0.5 and -1 above."""
+    assert 0.25 <= 1 - 2 * one_cascade_radius() / one_map_depth() < 0.5
+    return steps * 2.0 ** -25 * one_map_depth(), steps * 2.0 ** -24 * one_map_depth()
+
+
 def one_cascade_centre():
     """The centre of the sphere round the whole view: on the line of sight, halfway out."""
     corners = slice_corners(NEAR, FAR)
@@ -116,10 +136,21 @@ def check_page() -> None:
     book = Path(__file__).resolve().parents[1]
     quoted = {
         "22_shadows.md": {
-            f"a texel is {texel(0):.4f} units wide": "the near cascade's texel",
-            f"the box is {box_side(0):.2f} units across": "the near cascade's box",
-            f"floor falls about {FLOOR_SLOPE * texel(0):.4f} units": "the floor's fall across a texel",
-            f"{4 * FLOOR_SLOPE * texel(0):.3f} units in the near cascade": "the slope bias 4",
+            f"a texel is {one_map_texel():.3f} units wide (the box, {one_cascade_box_side():.0f} units "
+            f"across, over {MAP_SIZE} texels)": "the one map's texel",
+            f"floor falls about {FLOOR_SLOPE * one_map_texel():.4f} units": "the floor's fall across a texel",
+            f"4 \u00d7 {FLOOR_SLOPE * one_map_texel():.4f} = {4 * FLOOR_SLOPE * one_map_texel():.3f} units in "
+            "the one map": "the slope bias 4",
+            f"every step lies {4 * FLOOR_SLOPE * one_map_texel():.3f} units deeper": "the acne figure's alt text",
+            f"near cascade a texel is {texel(0):.4f} units": "the near cascade's texel",
+            f"box {one_map_depth():.0f} units deep (2 \u00d7 {one_cascade_radius():.1f} + {BEHIND:.0f}), at "
+            f"depths between about {1 - 2 * one_cascade_radius() / one_map_depth():.1f} and 1":
+                "the one map's depth range",
+            f"moves a depth by {one_map_constant_bias()[0] * 1e5:.0f} to {one_map_constant_bias()[1] * 1e5:.0f} "
+            "\u00d7 10\u207b\u2075 units": "the constant term",
+            f"The slope term's {4 * FLOOR_SLOPE * one_map_texel():.3f} units is over "
+            f"{int(4 * FLOOR_SLOPE * one_map_texel() / one_map_constant_bias()[1]) // 1000 * 1000:,} times more":
+                "the slope term against the constant",
             f"with one map, {one_cascade_box_side():.0f} units across": "--cascades 1's box",
             f"the one map's texels are {one_cascade_box_side() / box_side(0):.0f} times as wide as the near "
             "cascade's": "--cascades 1's texel against the near cascade's",
