@@ -107,7 +107,7 @@ TURN = [0.2, 0.3, 0, 0.932]
 MESHES = {
     "tangent": {"name": "with TANGENT", "primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1,
                 "TEXCOORD_0": 2, "TANGENT": 3}, "indices": 4, "material": 0}]},
-    "made": {"name": "tangents generated", "primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1,
+    "made": {"name": "no TANGENT", "primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1,
              "TEXCOORD_0": 2}, "indices": 4, "material": 0}]}}
 
 

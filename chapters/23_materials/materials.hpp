@@ -40,12 +40,14 @@ public:
         for (uint32_t m = 0; m < count; ++m) {
             const vkt::GltfMaterial material =
                 materials.empty() ? vkt::GltfMaterial{} : materials[m];
+            // [material-slots]
             // Colours are stored sRGB-encoded, the rest as plain numbers.
             const std::pair<int32_t, bool> slots[5] = {{material.base_color_image, true},
                                                        {material.metallic_roughness_image, false},
                                                        {material.normal_image, false},
                                                        {material.occlusion_image, false},
                                                        {material.emissive_image, true}};
+            // [/material-slots]
             VkDescriptorSet set = vkt::allocate_descriptor_set(device_, pool_, layout_);
             for (uint32_t b = 0; b < 5; ++b) {
                 const vkt::Texture& texture = slots[b].first >= 0 ? image(gpu, images, slots[b])

@@ -133,7 +133,9 @@ Texture create_texture(const Gpu& gpu, const RgbaImage& pixels, bool srgb, float
     if (pixels.width == 0 || pixels.height == 0 ||
         pixels.pixels.size() != size_t(pixels.width) * pixels.height * 4)
         throw Error("create_texture: the image is empty or its pixels do not match its size");
+    // [texture-format]
     const VkFormat format = srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
+    // [/texture-format]
     if (mips == MipGeneration::automatic)
         mips = can_blit_mips(gpu.physical, format) ? MipGeneration::blit : MipGeneration::cpu;
     if (mips == MipGeneration::blit && !can_blit_mips(gpu.physical, format))
