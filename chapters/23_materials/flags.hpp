@@ -39,6 +39,7 @@ inline vkt::OptionSpec term_option() {
             .choices = {"all", "d", "f", "v"}};
 }
 
+// [term-constant]
 // The choice reaches the shader as its specialization constant 0: the
 // compiler drops the branches the pipeline never takes. For all, no
 // specialization at all: the pipeline is the one made without the flag.
@@ -60,6 +61,7 @@ private:
     VkSpecializationMapEntry entry_{0, 0, sizeof(int32_t)};
     VkSpecializationInfo info_{1, &entry_, sizeof(int32_t), &value_};
 };
+// [/term-constant]
 
 // --term with what it cannot show, refused first: it draws the grid's spheres
 // by scene.frag, the uniform sky's shader, lit by the grid's key light.
