@@ -19,7 +19,7 @@ from grid23 import COLUMNS, ROWS, SPACING, pixels_per_unit  # book/diagrams/grid
 
 PANELS = (  # (golden image, title, how it is drawn, what to see: in the narrow layout)
     ("23_materials_term_d.png", "D alone", "--term d", ("narrows as", "roughness falls")),
-    ("23_materials_term_f.png", "F alone", "--term f", ("whiter at the rims,", "gold on the metal")),
+    ("23_materials_term_f.png", "F alone (with n·v)", "--term f", ("whiter at the rims,", "gold on the metal")),
     ("23_materials_term_v.png", "V alone, as G", "--term v", ("rims darken on", "the rough spheres")),
     ("23_materials_clamp.png", "The whole BRDF", "no --term", ("all three, the", "diffuse and the sky")),
 )
@@ -43,7 +43,7 @@ def main() -> None:
         "Four pictures of the sphere grid (roughness 0.1 to 1 across, metallic 0 to 1 down), "
         "each a number per pixel through the clamp curve. D alone: black spheres with one "
         "highlight each, a tiny white dot on the left widening to a flat grey half disc at "
-        "roughness 1; every row the same. F alone: dark grey plastic with thin bright rims at the "
+        "roughness 1; every row the same. F alone, with n·v for v·h: dark grey plastic with thin bright rims at the "
         "top, gold at the bottom; every column the same. V alone, as G: white lit halves on the "
         "polished spheres, greying towards the rims on the rough ones; every row the same. The "
         "whole BRDF: yellow plastic to gold, with highlights.")
