@@ -28,7 +28,7 @@ for n in $instances; do
   for round in $(seq "$rounds"); do
     for path in $paths; do
       variants=("")
-      [ "$path" = task ] && variants=($meshlet_culls)
+      [ "$path" = task ] && read -r -a variants <<<"$meshlet_culls"
       for meshlet in "${variants[@]}"; do
         extra=()
         [ -n "$meshlet" ] && extra=(--meshlet-cull "$meshlet")

@@ -4,7 +4,7 @@
 #                 chapters/, compiled as the release build compiles them
 #                 (build/release/compile_commands.json: configure it first)
 #   clang-format  --dry-run --Werror over every C++ file (.clang-format)
-#   ShellCheck    over scripts/*.sh and tests/*.sh (.shellcheckrc)
+#   ShellCheck    over scripts/*.sh, tests/*.sh and benchmarks/*.sh (.shellcheckrc)
 # Each prints its findings; the exit status is 0 only if all three are clean.
 #
 #   scripts/static-checks.sh [JOBS]     JOBS clang-tidy processes (default: cores)
@@ -125,7 +125,7 @@ echo "clang-format: ${#cpp[@]} files, $((SECONDS - start)) s"
 
 # --- shellcheck --------------------------------------------------------------
 start=$SECONDS
-mapfile -t shells < <(git ls-files 'scripts/*.sh' 'tests/*.sh' .ci/run)
+mapfile -t shells < <(git ls-files 'scripts/*.sh' 'tests/*.sh' 'benchmarks/*.sh' .ci/run)
 [ "${#shells[@]}" -gt 0 ] || { echo "static-checks: git ls-files found no shell script"; exit 1; }
 if ! shellcheck -x "${shells[@]}"; then failed+=(shellcheck); fi
 echo "shellcheck: ${#shells[@]} files, $((SECONDS - start)) s"
