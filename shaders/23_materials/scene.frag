@@ -40,8 +40,10 @@ void main() {
         return;
     }
     vec3 colour = occlusion * environment(n, v, m, frame.sky.rgb, uint(frame.sky.w));
+    // [lights]
     for (int i = 0; i < 2; ++i)
         colour += frame.light_radiance[i].rgb * brdf_cos(n, v, frame.light_direction[i].xyz, m);
+    // [/lights]
     radiance = vec4(colour + emitted, 1.0);
     // [/shade]
 }
