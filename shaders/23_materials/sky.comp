@@ -17,7 +17,7 @@ vec3 sky(vec3 d) {
     const vec3 ground = vec3(0.035, 0.03, 0.025);
     vec3 colour = d.y >= 0.0 ? mix(horizon, zenith, sqrt(d.y))
                              : mix(0.5 * horizon, ground, smoothstep(0.0, 0.15, -d.y));
-    // The sun: a disc 2.5 degrees across its radius, in the key light's direction.
+    // The sun: a disc of angular radius 2.5 degrees, in the key light's direction.
     if (dot(d, params.sun.xyz) > cos(radians(2.5))) colour += vec3(40.0, 36.0, 30.0);
     return colour;
 }
