@@ -213,8 +213,9 @@ public:
             gpu, built.vertices.data(), built.vertices.size() * sizeof(uint32_t), storage));
         buffers_.push_back(vkt::create_device_buffer(
             gpu, built.triangles.data(), built.triangles.size() * sizeof(uint32_t), storage));
-        const glm::mat4 unset(1.0f);  // --view culled: the second camera, from record()
-        shown_ = vkt::create_device_buffer(gpu, &unset, sizeof(unset), storage);
+        // --view culled: the second camera, per frame in flight, from record()
+        shown_ = vkt::create_host_buffer(
+            gpu, std::size_t(context.frames_in_flight) * sizeof(glm::mat4), storage);
         counters_ = vkt::create_host_buffer(
             gpu, std::size_t(context.frames_in_flight) * kCounters * sizeof(uint32_t), storage);
         std::memset(counters_.mapped, 0, counters_.size);
@@ -296,7 +297,7 @@ public:
         // [/counters]
         if (view_ == ch26::view_culled)  // the second camera's matrix (culled_view.hpp)
             ch26::show_from(
-                frame.cmd, shown_.buffer,
+                shown_.mapped, frame.slot,
                 camera(bounds_lo_, bounds_hi_, frame.extent, frame.time, 0, true).clip_from_world);
 
         vkt::begin_depth_frame(frame.cmd, depth_.image);

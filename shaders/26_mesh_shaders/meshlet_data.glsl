@@ -22,9 +22,10 @@ layout(std430, set = 0, binding = 3) readonly buffer MeshletTriangles { uint mes
 // Per frame in flight, four counters: meshlets outside the frustum, meshlets
 // facing away, triangles sent on to the mesh shader, meshlets sent on.
 layout(std430, set = 0, binding = 4) buffer Counters { uint counters[]; };
-// --view culled: the second camera the picture is drawn from (the push
-// constants hold the camera the task shader tests for).
-layout(std430, set = 0, binding = 5) readonly buffer Shown { mat4 clip_from_world; } shown;
+// --view culled: the second camera the picture is drawn from, per frame in
+// flight (the push constants hold the camera the task shader tests for).
+layout(std430, set = 0, binding = 5) readonly buffer Shown { mat4 clip_from_world[]; } shown;
+const uint COUNTERS_PER_FRAME = 4;  // main.cpp's kCounters: counter_base / 4 is the slot
 
 // The task shader's verdict on a meshlet (the first two are also the
 // indices of their counters), and the flat colour --view culled paints a
