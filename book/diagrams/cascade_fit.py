@@ -159,9 +159,9 @@ def check_page() -> None:
             f"centre is at y = \u2212{-one_cascade_centre()[1]:.1f}, {-one_cascade_centre()[1]:.1f} units "
             "below the floor": "--cascades 1's sphere's centre",
             f"with one map {one_cascade_box_side():.0f} units across, and a depth": "--cascades 1's box",
-            f"`half`, half the box's side, is the sphere's radius, {one_cascade_radius():.1f} units":
+            f"`half`, half the box's side, with one map the radius {one_cascade_radius():.1f} plus half a texel":
                 "--cascades 1's half side",
-            f"moved by less than a texel, {one_cascade_box_side() / MAP_SIZE:.2f} units here":
+            f"by less than a texel ({one_cascade_box_side() / MAP_SIZE:.2f} units here)":
                 "--cascades 1's texel",
         },
         "22b_cascades.md": {
