@@ -19,10 +19,12 @@ layout(location = 0) out vec4 colour;
 // [tonemap]
 void main() {
     vec3 radiance = texelFetch(hdr, ivec2(gl_FragCoord.xy), 0).rgb;
+    // [bloom-mix]
     if (settings.bloom > 0.0) {
         vec2 uv = gl_FragCoord.xy / vec2(textureSize(hdr, 0));
         radiance = mix(radiance, texture(bloom, uv).rgb / settings.levels, settings.bloom);
     }
+    // [/bloom-mix]
     vec3 exposed = radiance * settings.exposure;
     colour = vec4(settings.tone_map == 0u ? aces_narkowicz(exposed) : clamp(exposed, 0.0, 1.0), 1.0);
 }
