@@ -39,8 +39,8 @@ vec3 normal_at(uint vertex) {
     return vec3(vertices[6 * vertex + 3], vertices[6 * vertex + 4], vertices[6 * vertex + 5]);
 }
 
+// [closest-hit]
 void main() {
-    // [surface]
     // Which object, which triangle, where in it: the instance's custom
     // index, the primitive's number within its mesh, the barycentrics.
     const Object object = objects[gl_InstanceCustomIndexEXT];
@@ -54,9 +54,7 @@ void main() {
     const vec3 point = gl_WorldRayOriginEXT + gl_HitTEXT * gl_WorldRayDirectionEXT;
     vec3 albedo = object.colour.rgb;
     if (object.checker != 0 && mod(floor(point.x) + floor(point.z), 2.0) != 0.0) albedo *= 0.3;
-    // [/surface]
 
-    // [shadow-ray]
     // Any hit between the point and the light will do: no closest hit is
     // looked for and none is run; only the shadow miss shader (miss index
     // 1) clears the flag. The origin is lifted off the surface, so that the
@@ -71,9 +69,7 @@ void main() {
                         gl_RayFlagsSkipClosestHitShaderEXT,
                     0xff, 0, 1, 1, origin, 0.0, to_light, 1000.0, 2);
     vec3 colour = albedo * (0.15 + 0.85 * lambert * float(1 - shadowed));
-    // [/shadow-ray]
 
-    // [reflection]
     // A mirror's colour is partly what its reflected ray finds: this very
     // shader again, one level deeper, until --bounces reflections are spent.
     if (object.reflectivity > 0.0 && hit.depth <= pc.bounces) {
@@ -83,5 +79,5 @@ void main() {
         colour = mix(colour, reflected.colour, object.reflectivity);
     }
     hit.colour = colour;
-    // [/reflection]
 }
+// [/closest-hit]
