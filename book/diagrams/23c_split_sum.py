@@ -1,10 +1,10 @@
 """Chapter 23c: the split sum in one picture, one lobe at r.
 
-Left, the real integral: the sky around a point times the BRDF's lobe for a
-view v 70 degrees from the normal n, roughness 0.6. Right, its two factors:
+On top, the real integral: the sky around a point times the BRDF's lobe for a
+view v 70 degrees from the normal n, roughness 0.6. Below, its two factors:
 (a) the prefiltered sky, the sky averaged under a lobe centred on r and drawn
 as the prefilter draws it, with n = v = r; (b) the BRDF table's A and B, the
-same real lobe under a white sky. Their product approximates the left; the
+same real lobe under a white sky. Their product approximates the top; the
 real lobe drawn dashed in (a) shows what the n = v = r assumption loses.
 
 The lobes are computed here, in the plane of n and v, from GGX as pbr.glsl
@@ -13,7 +13,7 @@ visibility): the real one is D V (n.l) for the view v, the prefiltered one
 D(r.h) (r.l) with h halfway between l and r, the weight prefilter.comp gives
 its samples. Each is scaled to the same peak length, so shapes compare, not
 sizes. With VKT_DIAGRAM_LAYOUT=narrow (the builder asks for it, for phones)
-the left panel sits above the two factors. Standard library only.
+each panel sits above the next. Standard library only.
 """
 
 import math
@@ -118,11 +118,11 @@ def panel(s: Svg, cx: float, cy: float, scale: float, size: float, heading: list
 def main() -> None:
     narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
     title = "Chapter 23c: the split sum, one lobe at r, roughness 0.6, v 70° from n"
-    description = ("Left, the real integral: a point on a surface under the sky, with the normal n "
+    description = ("Top, the real integral: a point on a surface under the sky, with the normal n "
                    "up, the view v 70 degrees to its left and the mirror direction r as far to its "
                    "right, and the BRDF's lobe for that view, computed from GGX: it leans past r "
                    "towards the horizon and is longer than wide. The sky is a band above, blue at "
-                   "the top, pale at the horizon, with a yellow sun between n and r. Right, the "
+                   "the top, pale at the horizon, with a yellow sun between n and r. Below, the "
                    "two factors the split sum multiplies: (a) the prefiltered sky, the sky averaged "
                    "under a lobe centred on r drawn with n = v = r, symmetric about r and reaching "
                    "below the surface, the real lobe dashed over it; (b) the same real lobe under a white sky, whose "
@@ -132,16 +132,17 @@ def main() -> None:
              "view the real lobe is cut off by the surface and leans up from r towards n. The lobe of",
              "n = v = r stays symmetric about r and reaches below the horizon, into the ground, so (a)",
              "weighs the sky between n and r too little. The lobes are scaled to one length: shapes, not sizes."]
-    if narrow:
-        s = Svg(400, 560, title, description)
+    big = 1.75 if narrow else 1.9  # each panel's scale: lobes about twice the earlier 1.0
+    if narrow:  # the three panels one above the other, each as wide as the phone allows
+        s = Svg(400, 960, title, description)
         s.text(12, 20, "Chapter 23c: the split sum, roughness 0.6,", size=size + 1, bold=True)
         s.text(12, 37, "v 70° from n", size=size + 1, bold=True)
-        panel(s, 200, 200, 1.0, size, ["the real integral:", "the sky times the lobe for this v"], "real")
-        s.text(200, 240, "≈", size=26, anchor="middle", fill=INK)
-        panel(s, 100, 395, 0.8, size, ["(a) prefiltered sky:", "its mean under a", "lobe at r, n = v = r"],
+        panel(s, 200, 272, big, size, ["the real integral:", "the sky times the lobe for this v"], "real")
+        s.text(200, 308, "≈", size=26, anchor="middle", fill=INK)
+        panel(s, 200, 545, big, size, ["(a) prefiltered sky: its mean", "under a lobe at r, n = v = r"],
               "prefilter")
-        s.text(200, 370, "×", size=24, anchor="middle", fill=INK)
-        panel(s, 300, 395, 0.8, size, ["(b) BRDF table:", "the lobe under a", "white sky: F₀A + B"],
+        s.text(200, 581, "×", size=24, anchor="middle", fill=INK)
+        panel(s, 200, 818, big, size, ["(b) BRDF table: the lobe under", "a white sky, F₀A + B"],
               "real", white=True)
         notes = ["Purple: the lobe each factor weighs the sky with;",
                  "dashed in (a), the real lobe. At a grazing view the",
@@ -150,18 +151,28 @@ def main() -> None:
                  "symmetric about r and reaches into the ground, so",
                  "(a) weighs the sky between n and r too little.",
                  "Lobes scaled to one length: shapes, not sizes."]
-        foot_x, foot_y = 12, 428
-    else:
-        s = Svg(900, 320, title, description)
+        foot_x, foot_y = 12, 850
+    else:  # the real integral on top beside the notes, its two factors below
+        s = Svg(900, 610, title, description)
         s.text(16, 24, title, size=size + 1.5, bold=True)
+        panel(s, 225, 282, big, size, ["the real integral:", "the sky times the lobe for this v"], "real")
+        s.text(225, 322, "≈", size=30, anchor="middle", fill=INK)
         for cx, heading, lobe, white in (
-                (150, ["the real integral:", "the sky times the lobe for this v"], "real", False),
-                (450, ["(a) the prefiltered sky: the sky's", "mean under a lobe at r, n = v = r"], "prefilter", False),
-                (750, ["(b) the BRDF table: the lobe's", "integral under a white sky, F₀A + B"], "real", True)):
-            panel(s, cx, 200, 1.0, size, heading, lobe, white)
-        s.text(300, 170, "≈", size=30, anchor="middle", fill=INK)
-        s.text(600, 170, "×", size=28, anchor="middle", fill=INK)
-        foot_x, foot_y = 16, 238
+                (225, ["(a) the prefiltered sky: the sky's", "mean under a lobe at r, n = v = r"], "prefilter", False),
+                (675, ["(b) the BRDF table: the lobe's", "integral under a white sky, F₀A + B"], "real", True)):
+            panel(s, cx, 580, big, size, heading, lobe, white)
+        s.text(450, 500, "×", size=28, anchor="middle", fill=INK)
+        notes = ["Purple: the lobe each factor weighs the sky with;",
+                 "dashed in (a), the real lobe.",
+                 "",
+                 "At a grazing view the real lobe is cut off by the",
+                 "surface and leans up from r towards n. The lobe of",
+                 "n = v = r stays symmetric about r and reaches",
+                 "below the horizon, into the ground, so (a) weighs",
+                 "the sky between n and r too little.",
+                 "",
+                 "The lobes are scaled to one length: shapes, not sizes."]
+        foot_x, foot_y = 470, 120
     s.lines(foot_x, foot_y, notes, size=size - 0.5, fill=MUTED)
     s.write()
 
