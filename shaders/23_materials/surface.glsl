@@ -29,6 +29,7 @@ vec3 shading_normal() {
         vec2 duv1 = dFdx(uv), duv2 = dFdy(uv);
         vec3 dp2perp = cross(dp2, n), dp1perp = cross(n, dp1);
         t = dp2perp * duv1.x + dp1perp * duv2.x;
+        // [det-sign]
         // glTF's bitangent points up the image, where v decreases.
         b = -(dp2perp * duv1.y + dp1perp * duv2.y);
         // t and b are u's and v's gradients on the surface times det, so
@@ -40,14 +41,13 @@ vec3 shading_normal() {
         float det = dot(n, cross(dp1, dp2));
         float det_sign = det < 0.0 ? -1.0 : 1.0;  // sign(det), but never 0
         float scale = det_sign * inversesqrt(max(max(dot(t, t), dot(b, b)), 1e-20));
+        // [/det-sign]
         t *= scale;
         b *= scale;
     }
-    // [normal-texel]
     vec3 m = texture(normal_map, uv).xyz * 2.0 - 1.0;
     m.xy *= draw.factors.z;  // the material's normal_scale
     return normalize(mat3(t, b, n) * m);
-    // [/normal-texel]
 }
 // [/normal-map]
 
