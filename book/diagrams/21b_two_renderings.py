@@ -120,7 +120,7 @@ def check_sources() -> None:
     ])
 
 
-# The picture after rendering 2: the overlay test's, 640x480, shrunk five times.
+# The picture after R2, the overlay's rendering: the overlay test's, 640x480, shrunk five times.
 PICTURE = "21_multisampling_overlay.png"
 PICTURE_W, PICTURE_H, SHRINK = 640, 480, 5
 
@@ -155,16 +155,16 @@ LAYOUTS = {
 # rendering or queue. A line is (head, code, remark): a bold word, monospace
 # code, a grey remark, any of them empty.
 STEPS = [
-    ("barrier", "1  barrier: the target, for drawing", "the runner", [
+    ("barrier", "B1  barrier: the target, for drawing", "the runner", [
         ("layout", "UNDEFINED →", ""),
         ("", "COLOR_ATTACHMENT_OPTIMAL", ""),
         ("", "", "after the submit's wait for image_acquired, at"),
         ("", "", "the same stage, COLOR_ATTACHMENT_OUTPUT")]),
-    ("barrier", "2  barriers: the chapter's own images", "chapter 21", [
+    ("barrier", "B2  barriers: the chapter's own images", "chapter 21", [
         ("colour_", "UNDEFINED → COLOR_ATTACHMENT_OPTIMAL", ""),
         ("depth_", "UNDEFINED → DEPTH_ATTACHMENT_OPTIMAL", ""),
         ("", "", "last frame's samples thrown away")]),
-    ("rendering", "3  rendering 1: the wheel and the quads", "chapter 21's record()", [
+    ("rendering", "R1  rendering: the wheel and the quads", "chapter 21's record()", [
         ("colour_", "loadOp CLEAR, storeOp DONT_CARE", ""),
         ("depth_", "loadOp CLEAR, storeOp DONT_CARE", ""),
         ("resolve", "VK_RESOLVE_MODE_AVERAGE_BIT", ""),
@@ -172,27 +172,27 @@ STEPS = [
         ("draws", "vkCmdDrawIndexed × 2", "4 samples a pixel"),
         ("end", "vkCmdEndRendering", "the resolve: each pixel's"),
         ("", "", "samples averaged into the target")]),
-    ("barrier", "4  barrier: the resolve done and visible", "the runner", [
+    ("barrier", "B3  barrier: the resolve done and visible", "the runner", [
         ("layout", "COLOR_ATTACHMENT_OPTIMAL", "unchanged"),
         ("before", "COLOR_ATTACHMENT_OUTPUT", ""),
         ("", "COLOR_ATTACHMENT_WRITE", ""),
         ("after", "COLOR_ATTACHMENT_OUTPUT", ""),
         ("", "COLOR_ATTACHMENT_READ | WRITE", ""),
         ("", "", "before: the write the chapter's target_after names")]),
-    ("rendering", "5  rendering 2: the panel", "Overlay::record", [
+    ("rendering", "R2  rendering: the panel", "Overlay::record", [
         ("target", "", "the same swapchain image"),
         ("ops", "loadOp LOAD, storeOp STORE", ""),
         ("", "", "LOAD keeps the chapter's picture under the panel"),
         ("draws", "vkCmdDrawIndexed", "per ImDrawCmd, blended:"),
         ("", "", "each pixel mixed with the one loaded below it"),
         ("end", "vkCmdEndRendering", "")]),
-    ("barrier", "6  barrier: to the presentation engine", "the runner", [
+    ("barrier", "B4  barrier: to the presentation engine", "the runner", [
         ("layout", "COLOR_ATTACHMENT_OPTIMAL →", ""),
         ("", "PRESENT_SRC_KHR", ""),
         ("before", "COLOR_ATTACHMENT_OUTPUT", ""),
         ("", "COLOR_ATTACHMENT_WRITE", ""),
         ("after", "NONE, NONE", "the semaphore orders the present")]),
-    ("queue", "7  submit, then present", "the runner", [
+    ("queue", "submit, then present", "the runner", [
         ("", "vkQueueSubmit2", "waits for image_acquired,"),
         ("", "", "signals ready_to_present"),
         ("", "vkQueuePresentKHR", "waits for ready_to_present")]),
@@ -210,16 +210,16 @@ def main() -> None:
     x0, box_w = (8, 364) if narrow else (12, 540)
     s = Svg(W, 100, "Chapter 21b: one frame's two renderings into one image",
             "One frame's command buffer, in recording order, in a window whose swapchain image is "
-            "drawn into: 1, the runner's barrier takes the acquired swapchain image from UNDEFINED to "
-            "COLOR_ATTACHMENT_OPTIMAL; 2, chapter 21's barriers on its multisampled colour and its depth "
-            "image; 3, rendering 1, the chapter's: colour_ with loadOp CLEAR and storeOp DONT_CARE, "
-            "resolveMode AVERAGE into the swapchain image at vkCmdEndRendering; 4, the runner's barrier: "
+            "drawn into: B1, the runner's barrier takes the acquired swapchain image from UNDEFINED to "
+            "COLOR_ATTACHMENT_OPTIMAL; B2, chapter 21's barriers on its multisampled colour and its depth "
+            "image; R1, the chapter's rendering: colour_ with loadOp CLEAR and storeOp DONT_CARE, "
+            "resolveMode AVERAGE into the swapchain image at vkCmdEndRendering; B3, the runner's barrier: "
             "the resolve's COLOR_ATTACHMENT_WRITE done and visible to the overlay's "
-            "COLOR_ATTACHMENT_READ and WRITE, the layout unchanged; 5, rendering 2, the overlay's, "
+            "COLOR_ATTACHMENT_READ and WRITE, the layout unchanged; R2, the overlay's rendering, "
             "into the same image with loadOp LOAD and storeOp STORE, the panel blended over the "
-            "picture it kept; 6, the barrier to PRESENT_SRC_KHR; 7, the submit and the present. "
+            "picture it kept; B4, the barrier to PRESENT_SRC_KHR; then the submit and the present. "
             "Where the runner draws into its own image instead (a _UNORM surface, as headless on "
-            "lavapipe), that image is copied into the swapchain image between 5 and 6.")
+            "lavapipe), that image is copied into the swapchain image between R2 and B4.")
 
     y = 8
     s.text(x0, y + size + 2, "One frame's command buffer, in recording order", size=size + 2, bold=True)
@@ -290,30 +290,31 @@ def main() -> None:
             return (places[step][0] + places[step][1]) / 2
         r1_top, r1_bottom = places[2]
         r2_top, r2_bottom = places[4]
-        # colour_: thrown away at 2, in COLOR_ATTACHMENT_OPTIMAL through rendering 1, then dropped.
+        # colour_: thrown away at B2, in COLOR_ATTACHMENT_OPTIMAL through R1, then dropped.
         segment(c_x, top, mid(1), "UNDEFINED", ["UNDEFINED:", "last frame's samples"])
         segment(c_x, mid(1), r1_bottom, "COLOR_ATTACHMENT_OPTIMAL")
         s.lines(c_x + track_w / 2, r1_top + 30, ["cleared, then the", "draws' samples"], size=size,
                 anchor="middle")
         segment(c_x, r1_bottom, bottom, None, ["not stored", "(DONT_CARE)"], dash="4 3")
-        # The target: the presentation engine's until barrier 1, then one layout until 6.
+        # The target: the presentation engine's until B1, then one layout until B4.
         segment(t_x, top, mid(0), None, ["acquired, not", "yet drawn into"], dash="4 3")
         segment(t_x, mid(0), mid(5), "COLOR_ATTACHMENT_OPTIMAL")
         segment(t_x, mid(5), bottom, "PRESENT_SRC_KHR")
         s.lines(t_x + track_w / 2, r1_bottom - 34, ["the chapter's picture,", "resolved at the end"],
                 size=size, anchor="middle")
-        s.lines(t_x + track_w / 2, mid(3) + 22, ["the resolve now visible", "to rendering 2"], size=size,
+        s.lines(t_x + track_w / 2, mid(3) + 22, ["the resolve now visible", "to R2"], size=size,
                 anchor="middle")
         # After rendering 2: what the image holds, the test's picture shrunk five times.
         s.text(t_x + track_w / 2, r2_top + 16, "the panel blended over it:", size=size, anchor="middle")
         thumb_w, thumb_h = PICTURE_W // SHRINK, PICTURE_H // SHRINK
         shrunk(s, picture(), t_x + (track_w - thumb_w) / 2, r2_top + 24)
-        # Each barrier, where it falls on the image it changes.
+        # Each barrier, where it falls on the image it changes, with its label from STEPS.
         for step, xs in ((0, [t_x]), (1, [c_x]), (3, [t_x]), (5, [t_x])):
+            label = STEPS[step][1].split()[0]
             for tx in xs:
                 s.line(tx - 4, mid(step), tx + track_w + 4, mid(step), stroke=PURPLE, width=2)
-                s.circle(tx - 12, mid(step), 8, fill=PURPLE, stroke=PURPLE)
-                s.text(tx - 12, mid(step) + 3.8, str(step + 1), size=10.5, anchor="middle", fill="#ffffff",
+                s.rect(tx - 25, mid(step) - 8, 22, 16, fill=PURPLE, stroke=PURPLE, rx=8)
+                s.text(tx - 14, mid(step) + 3.8, label, size=10.5, anchor="middle", fill="#ffffff",
                        bold=True)
         # The resolve: colour_'s samples averaged into the swapchain image at vkCmdEndRendering.
         ay = r1_bottom - 10
@@ -323,13 +324,13 @@ def main() -> None:
     # Where the runner draws into its own image: the difference, in a dashed note.
     y = bottom + 14
     note = ["Through the runner's own _SRGB image instead (a _UNORM surface, as headless on",
-            "lavapipe): that image is the target of 1-5, and between 5 and 6 it is copied into the",
-            "swapchain image (chapter 04's figure); the overlay is the same."]
+            "lavapipe): that image is the target of B1 to R2, and between R2 and B4 it is copied into",
+            "the swapchain image (chapter 04's figure); the overlay is the same."]
     if narrow:
         note = ["Through the runner's own _SRGB image instead (a",
                 "_UNORM surface, as headless on lavapipe): that image",
-                "is the target of 1-5, and between 5 and 6 it is copied",
-                "into the swapchain image (chapter 04's figure)."]
+                "is the target of B1 to R2, and between R2 and B4 it is",
+                "copied into the swapchain image (chapter 04's figure)."]
     h = len(note) * lead + 12
     s.rect(x0, y, W - 2 * x0, h, fill="#ffffff", stroke=GREY, rx=6, dash="5 4")
     s.lines(x0 + 9, y + 6 + size, note, size=size, leading=1.38, fill=MUTED)

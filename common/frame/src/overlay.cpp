@@ -182,7 +182,6 @@ void Overlay::build(const Input& input, VkExtent2D extent, double seconds,
     io.DeltaTime =
         last_seconds_ < 0 ? 1.0f / 60.0f : float(std::max(seconds - last_seconds_, 1e-4));
     last_seconds_ = seconds;
-    // [overlay-input]
     // The pointer. A click that went down and up between two frames still
     // counts: the button is down in this frame, up in the next.
     const bool left = input.buttons[0] || input.buttons_pressed[0];
@@ -195,7 +194,6 @@ void Overlay::build(const Input& input, VkExtent2D extent, double seconds,
     io.MousePos = at;
     io.MouseDown[0] = left;
 #endif
-    // [/overlay-input]
     ImGui::NewFrame();
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.85f);
