@@ -59,7 +59,6 @@ public:
                                     VK_IMAGE_LAYOUT_GENERAL);
     }
 
-    // [bloom-view-copy]
     // Halfway through the chain: its levels, just written by the way down's
     // compute shaders, are copied out before the way up writes them again.
     // For the copy the chain leaves GENERAL for the layout a copy reads best;
@@ -96,7 +95,6 @@ public:
                            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
     }
-    // [/bloom-view-copy]
 
     // What vkt::Bloom::record calls halfway.
     std::function<void(VkCommandBuffer)> halfway() const {
