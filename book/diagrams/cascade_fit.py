@@ -142,7 +142,6 @@ def check_page() -> None:
             f"4 \u00d7 {FLOOR_SLOPE * one_map_texel():.4f} = {4 * FLOOR_SLOPE * one_map_texel():.3f} units in "
             "the one map": "the slope bias 4",
             f"every step lies {4 * FLOOR_SLOPE * one_map_texel():.3f} units deeper": "the acne figure's alt text",
-            f"near cascade a texel is {texel(0):.4f} units": "the near cascade's texel",
             f"box {one_map_depth():.0f} units deep (2 \u00d7 {one_cascade_radius():.1f} + {BEHIND:.0f}), at "
             f"depths between about {1 - 2 * one_cascade_radius() / one_map_depth():.1f} and 1":
                 "the one map's depth range",
@@ -152,8 +151,6 @@ def check_page() -> None:
             f"{int(4 * FLOOR_SLOPE * one_map_texel() / one_map_constant_bias()[1]) // 1000 * 1000:,} times more":
                 "the slope term against the constant",
             f"with one map, {one_cascade_box_side():.0f} units across": "--cascades 1's box",
-            f"the one map's texels are {one_cascade_box_side() / box_side(0):.0f} times as wide as the near "
-            "cascade's": "--cascades 1's texel against the near cascade's",
             f"sphere is {one_cascade_radius():.1f} units in radius": "--cascades 1's sphere",
             f"{math.dist(one_cascade_centre(), EYE):.2f} units from the eye": "--cascades 1's sphere's centre",
             f"centre is at y = \u2212{-one_cascade_centre()[1]:.1f}, {-one_cascade_centre()[1]:.1f} units "
@@ -165,6 +162,9 @@ def check_page() -> None:
                 "--cascades 1's texel",
         },
         "22b_cascades.md": {
+            f"near cascade a texel is {texel(0):.4f} units": "the near cascade's texel",
+            f"the one map's texels are {one_cascade_box_side() / box_side(0):.0f} times as wide as the near "
+            "cascade's": "--cascades 1's texel against the near cascade's",
             f"A texel is now about {one_cascade_box_side() / MAP_SIZE:.2f} units wide (a box "
             f"{one_cascade_box_side():.0f} units across)": "--cascades 1's texel and box",
             f"boundaries fall at {splits()[1]:.1f} and {splits()[2]:.1f}": "the splits",
