@@ -9,7 +9,7 @@ The exposure multiplies the radiance by 2^EV before the curve, so each step
 of 2 EV is four times the light. Under each picture, read from it when the
 book is built: the sky's corner pixel, and how many pixels have a channel at
 255. The row-by-row counts (plastic at the top to gold at the bottom) are not
-drawn; the page quotes them in its "How the tests check it" section.
+drawn; the page quotes them under the strip.
 
 Below them, one square of the -2 EV picture (boxed on it), around the bottom
 row's second sphere, enlarged: as the chapter makes it, from the float HDR
