@@ -210,6 +210,7 @@ fi
 [ -x "$bin/21_multisampling" ] && sweep 21_multisampling benchmarks/21_multisampling.sh "$bin"
 [ -x "$bin/22_shadows" ] && sweep 22_shadows benchmarks/22_shadows.sh "$bin"
 [ -x "$bin/23_materials" ] && sweep 23_materials benchmarks/23_materials_ibl.sh "$bin"
+[ -x "$bin/23_materials" ] && sweep 23_materials_bloom benchmarks/23_materials_bloom.sh "$bin" 7 1920x1080 200
 if [ -x "$bin/24_ray_queries" ] && device_offers VK_KHR_ray_query; then
   sweep 24_ray_queries benchmarks/24_ray_queries.sh "$bin" 1280x720 300 5
 fi
