@@ -86,7 +86,8 @@ def main() -> None:
     narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
     title = "Chapter 23e: the test model's normal map down its mip levels"
     desc = ("Levels 0 to 4 of the normal map of assets/gltf/pbr_cubes.gltf, each made from the one "
-            "above by averaging 2x2 texels, drawn at the same size. Level 0 shows 4 by 4 studs, each "
+            "above by averaging 2x2 texels and rounding to a byte, a CPU model of the loader's blits, "
+            "drawn at the same size. Level 0 shows 4 by 4 studs, each "
             "shaded to its sides; the studs blur level by level, and at level 4 every texel is one "
             "plain blue-violet, a normal straight out of the surface but shorter than 1. Under each, "
             "the mean length of the decoded normals and the steepest lean among them.")
@@ -94,7 +95,7 @@ def main() -> None:
     if narrow:
         tile, gap = 104, 22
         s = Svg(400, 40 + SHOWN * (tile + gap) + 14, title, desc)
-        s.text(10, 22, "The normal map, level by level", size=14, bold=True)
+        s.text(10, 22, "The normal map, level by level (a CPU model)", size=14, bold=True)
         for i in range(SHOWN):
             y = 40 + i * (tile + gap)
             level = chain[i]
@@ -108,8 +109,8 @@ def main() -> None:
     else:
         tile, col = 128, 176
         s = Svg(20 + SHOWN * col, 290, title, desc)
-        s.text(20, 26, "The normal map of assets/gltf/pbr_cubes.gltf down its mip levels, each "
-               "drawn at the same size", size=14, bold=True)
+        s.text(20, 26, "The normal map of assets/gltf/pbr_cubes.gltf down its mip levels: the blits' 2x2 "
+               "means, modelled on the CPU", size=14, bold=True)
         for i in range(SHOWN):
             x = 20 + i * col
             level = chain[i]
