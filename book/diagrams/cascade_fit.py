@@ -1,6 +1,6 @@
 """Chapter 22's cascades, computed as chapters/22_shadows/cascades.hpp computes them.
 
-Shared by 22_cascades.py, 22b_snap.py and 22_acne.py, so that the diagrams and the
+Shared by 22_cascades.py, 22_light_box.py, 22b_snap.py and 22_acne.py, so that the diagrams and the
 pages quote one width for a texel: of the near cascade, or of the one map of --cascades 1. The camera is the chapter's
 (eye (0, 3, 8) looking along (0, -0.25, -1), 50 degrees high, 4:3 as at the
 default 800x600 and the tests' 320x240, near 0.1, far 60), three cascades
@@ -151,13 +151,13 @@ def check_page() -> None:
             f"{int(4 * FLOOR_SLOPE * one_map_texel() / one_map_constant_bias()[1]) // 1000 * 1000:,} times more":
                 "the slope term against the constant",
             f"with one map, {one_cascade_box_side():.0f} units across": "--cascades 1's box",
-            f"sphere is {one_cascade_radius():.1f} units in radius": "--cascades 1's sphere",
-            f"{math.dist(one_cascade_centre(), EYE):.2f} units from the eye": "--cascades 1's sphere's centre",
-            f"centre is at y = \u2212{-one_cascade_centre()[1]:.1f}, {-one_cascade_centre()[1]:.1f} units "
-            "below the floor": "--cascades 1's sphere's centre",
-            f"with one map {one_cascade_box_side():.0f} units across, and a depth": "--cascades 1's box",
-            f"`half`, half the box's side, with one map the radius {one_cascade_radius():.1f} plus half a texel":
-                "--cascades 1's half side",
+            f"bounding sphere, radius {one_cascade_radius():.1f}; around that the dashed orange square of "
+            f"the light's box, {one_cascade_box_side():.0f} units a side": "22_light_box's alt text",
+            f"the same box, {one_cascade_box_side():.0f} units across and {one_map_depth():.0f} deep, its top "
+            f"{BEHIND:.0f} units empty above the sphere and the other {2 * one_cascade_radius():.1f} through "
+            "it": "22_light_box's alt text",
+            f"line of sight, {math.dist(one_cascade_centre(), EYE):.2f} units from the eye and "
+            f"{-one_cascade_centre()[1]:.1f} units below the floor": "22_light_box's alt text",
             f"by less than a texel ({one_cascade_box_side() / MAP_SIZE:.2f} units here)":
                 "--cascades 1's texel",
         },
