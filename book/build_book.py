@@ -798,6 +798,31 @@ def polish(body: str) -> str:
     return body
 
 
+# An aside a first reader may skip ("## ... (skip on a first read)", the house
+# rule) is folded: a <details> whose summary is its heading, closed on the
+# screen until the reader opens it or a link leads into it (book/theme/book.js),
+# unfolded in the one-page book that prints. It runs to the next heading of its own
+# level or higher.
+SKIP_MARK = "(skip on a first read)"
+ANY_HEADING_RE = re.compile(r"<h([1-6])\b[^>]*>(.*?)</h\1>", re.S)
+
+
+def fold_asides(body: str) -> str:
+    headings = list(ANY_HEADING_RE.finditer(body))
+    out, at = [], 0
+    for i, heading in enumerate(headings):
+        level = int(heading.group(1))
+        if heading.start() < at or not plain(heading.group(2)).strip().endswith(SKIP_MARK):
+            continue
+        end = next((h.start() for h in headings[i + 1:] if int(h.group(1)) <= level), len(body))
+        out.append(body[at:heading.start()])
+        out.append(f'<details class="aside"><summary>{heading.group(0)}</summary>'
+                   f'{body[heading.end():end]}</details>\n')
+        at = end
+    out.append(body[at:])
+    return "".join(out)
+
+
 # Figures and tables that read at any width. An SVG figure shows shrunk to the
 # column; a tap or click opens it full size (book/theme/book.js), zoomed so its
 # smallest text is at least FIGURE_TEXT_PX pixels, and a line under it says so.
@@ -1425,6 +1450,9 @@ def print_body(page: Page, page_names: set[str]) -> str:
     # The changes pages are for the screen (a diff beside the sources); the print
     # drops the line that links one rather than print a link that goes nowhere.
     body = CHANGES_LINK_RE.sub("", page.body)
+    # Paper cannot unfold: a folded aside prints as its heading and text.
+    body = re.sub(r'<details class="aside"><summary>(.*?)</summary>', r'<div class="aside">\1', body, flags=re.S)
+    body = body.replace("</details>", "</div>")
     body = ID_ATTR_RE.sub(lambda m: f'id="{stem}--{m.group(1)}"', body)
 
     def link(match: re.Match) -> str:
@@ -1546,7 +1574,7 @@ def build(root: Path, out: Path | None, strict: bool = False) -> tuple[list[str]
         convert(page)
         problems.extend(swallowed_list_items(page))
         rewrite_links(root, book, page, page_names, assets, problems, warnings, anchors)
-        page.body = polish(missing_image_placeholders(page.body, assets.missing_images))
+        page.body = fold_asides(polish(missing_image_placeholders(page.body, assets.missing_images)))
     by_name = {p.md_name: p for p in pages}
     for where, target, anchor in anchors:
         if anchor not in by_name[target].ids:

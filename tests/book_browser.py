@@ -222,6 +222,13 @@ class DevTools:
 # Run in each page once it has loaded: what did not load, what sticks out, where links go.
 PAGE_CHECK = r"""
 (() => {
+  // Asides a first reader may skip are folded (build_book.py's fold_asides):
+  // each must be closed as the page loads; then all are opened, so that what
+  // they hold is checked with the rest.
+  const folds = [...document.querySelectorAll('details.aside')];
+  const folded = folds.filter(d => !d.open).length;
+  const foldIds = folds.map(d => (d.querySelector('summary [id]') || {}).id || '');
+  folds.forEach(d => { d.open = true; });
   const root = document.documentElement;
   const width = root.clientWidth;
   const broken = [...document.images].filter(i => !i.complete || i.naturalWidth === 0)
@@ -254,8 +261,22 @@ PAGE_CHECK = r"""
     const wraps = style.whiteSpace === 'pre-wrap' || style.whiteSpace === 'break-spaces';
     if (!scrolls && !wraps) unscrolled.push((pre.textContent || '').trim().slice(0, 40));
   }
-  return {scrollWidth: root.scrollWidth, width, broken, wide, unscrolled,
+  return {scrollWidth: root.scrollWidth, width, broken, wide, unscrolled, folds: folds.length, folded, foldIds,
           links: [...document.querySelectorAll('a[href]')].map(a => a.href)};
+})()
+"""
+
+# A link into a folded aside opens it (book/theme/book.js): the fold closed
+# again, the address's fragment set to its heading, and once the page has had
+# the hashchange event, whether the fold is open.
+FOLD_CHECK = r"""
+(async () => {
+  const id = %s;
+  const fold = document.getElementById(id).closest('details.aside');
+  fold.open = false;
+  if (location.hash) { history.replaceState(null, '', location.pathname); }
+  await new Promise(resolve => { addEventListener('hashchange', resolve, {once: true}); location.hash = id; });
+  return fold.open;
 })()
 """
 
@@ -717,6 +738,9 @@ def main(argv: list[str]) -> int:
                         problems.append(f"{page} at {width} px: the code block '{block}' is wider than its box "
                                         "and neither scrolls nor wraps")
                     problems += problems_from_events(tab.events, page, width)
+                    if result["folded"] != result["folds"]:
+                        problems.append(f"{page} at {width} px: {result['folds'] - result['folded']} of its "
+                                        f"{result['folds']} asides to skip on a first read open as it loads")
                     if args.layout_only:
                         continue
                     shown = tab.evaluate(FIGURE_CHECK)
@@ -730,6 +754,9 @@ def main(argv: list[str]) -> int:
                     if shown["loose"]:
                         problems.append(f"{page} at {width} px: {shown['loose']} table(s) outside a scrolling box")
                     if width == WIDTHS[0]:
+                        for fold_id in result["foldIds"][:1]:
+                            if not tab.evaluate(FOLD_CHECK % json.dumps(fold_id)):
+                                problems.append(f"{page}: a link to #{fold_id} leaves its folded aside closed")
                         for url in result["links"]:
                             problem = links.check(page, url)
                             if problem:

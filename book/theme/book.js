@@ -12,7 +12,8 @@
 // A table wider than the column scrolls sideways in its own box; the line
 // above it that says so is shown only where that is the case.
 //
-// And the maths is typeset, by KaTeX (typeset(), below).
+// And the maths is typeset, by KaTeX (typeset(), below), and an aside folded
+// under its heading opens when a link leads into it (openTarget(), below).
 (function () {
   "use strict";
 
@@ -101,8 +102,25 @@
     }
   }
 
+  // A folded aside (build_book.py's fold_asides) opens when a link, a search
+  // result or the address leads into it; once open, its tables and formulas
+  // are measured again (closed, they had no width).
+  function openTarget() {
+    var id = decodeURIComponent(location.hash.slice(1));
+    var target = id && document.getElementById(id);
+    var fold = target && target.closest("details.aside");
+    if (!fold) return;
+    fold.open = true;
+    target.scrollIntoView();
+  }
+
   function init() {
     typeset();
+    var folds = document.querySelectorAll("details.aside");
+    for (var f = 0; f < folds.length; f++)
+      folds[f].addEventListener("toggle", function () { markWideTables(); markWideMaths(); });
+    openTarget();
+    window.addEventListener("hashchange", openTarget);
     var links = document.querySelectorAll("a.figure[data-width]");
     for (var i = 0; i < links.length; i++) {
       links[i].addEventListener("click", function (event) {
