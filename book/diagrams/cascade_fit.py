@@ -162,7 +162,8 @@ def check_page() -> None:
                 "--cascades 1's texel",
         },
         "22b_cascades.md": {
-            f"near cascade a texel is {texel(0):.4f} units": "the near cascade's texel",
+            f"near cascade a texel is {texel(0):.4f} units, the near square's {box_side(0):.2f} units "
+            f"over {MAP_SIZE}": "the near cascade's texel",
             f"the one map's texels are {one_cascade_box_side() / box_side(0):.0f} times as wide as the near "
             "cascade's": "--cascades 1's texel against the near cascade's",
             f"A texel is now about {one_cascade_box_side() / MAP_SIZE:.2f} units wide (a box "
