@@ -1,12 +1,13 @@
 #pragma once
-// Chapter 24's --view boxes: the boxes the acceleration structure is built
-// from, drawn as lines over the scene. Orange: each bottom level's bounds,
+// Chapter 24's --view boxes: the boxes a top level can take from its bottom
+// levels, drawn as lines over the scene. Orange: each bottom level's bounds,
 // its mesh's box in object space, carried into the world by the instance's
 // transform (a turned box for the turned torus). Blue: the axis-aligned box
-// in the world around those eight corners, the least a top level must put
-// round that instance: a ray that misses it skips the whole mesh. The boxes
-// inside each level are the driver's own and cannot be read; these two are
-// the ones any implementation starts from.
+// in the world around those eight corners, the box an instance gets from its
+// bottom level's box alone; a driver may fit a tighter one (round the turned
+// vertices, say). A ray that misses the instance's box skips the whole mesh.
+// The boxes inside each level, and how the top level groups the instances,
+// are the driver's own and cannot be read.
 
 #include "vkt/core/check.hpp"
 #include "vkt/resources/pipeline.hpp"
