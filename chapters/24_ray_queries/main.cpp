@@ -245,7 +245,7 @@ public:
                                                      uint32_t(objects_.size()), builder, mesh_);
             std::fprintf(stderr,
                          "24_ray_queries: boxes drawn: orange, each bottom level's bounds "
-                         "in the world; blue, each instance's box in the top level\n");
+                         "in the world; blue, the box each instance gets from them\n");
         }
         resize(context.extent);
         const auto kib = [](VkDeviceSize bytes) { return double(bytes) / 1024.0; };
@@ -417,8 +417,8 @@ int main(int argc, char** argv) {
         {.name = "--view",
          .type = vkt::OptionType::choice,
          .value_name = "VIEW",
-         .help = "scene: the lit scene; boxes: it, with the boxes the acceleration structure "
-                 "is built from",
+         .help = "scene: the lit scene; boxes: it, with each bottom level's bounds and the "
+                 "box each instance gets from them",
          .default_value = "scene",
          .choices = {"scene", "boxes"}},
         {.name = "--ray-offset",
