@@ -60,7 +60,7 @@ def labels(chain, i):
     size, stud = len(level), len(level) // 4
     mean, lean = stats(level)
     lines = [f"a stud: {stud}x{stud} texel{'s' if stud > 1 else ''}",
-             f"mean length {mean:.3f}", f"steepest lean {lean:.0f}\u00b0"]
+             f"mean length {mean:.3f}", f"steepest lean {lean:.0f}\u00b0" if lean >= 1 else "steepest lean under 1\u00b0"]
     if stud == 1:
         lines.append(f"every texel {level[0][0]}")
     return f"level {i}: {size}x{size}", lines
