@@ -61,9 +61,11 @@ def calls() -> tuple:
         return fn[member]
 
     in_order(CHAPTER / "bottom_level.hpp",
-             ["ray.build_sizes(", "AccelerationStructure(gpu, ray, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM",
-              "create_address_buffer(", "ray.cmd_build(", "vkCmdPipelineBarrier2(cmd, &after_build);",
-              "ray.cmd_write_properties(", "vkGetQueryPoolResults(", "ray.cmd_copy("])
+             ["inline void write_compacted_sizes(", "after_builds(cmd);", "vkCmdResetQueryPool(",
+              "ray.cmd_write_properties(", "ray.build_sizes(",
+              "AccelerationStructure(gpu, ray, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM",
+              "create_address_buffer(", "ray.cmd_build(", "write_compacted_sizes(cmd, ray, built, pool);",
+              "vkGetQueryPoolResults(", "after_builds(cmd);", "ray.cmd_copy("])
     in_order(CHAPTER / "acceleration.hpp",
              ["vkGetBufferDeviceAddress(", "storage_ = create_address_buffer(", "ray.create(",
               "ray.address("])

@@ -65,6 +65,38 @@ inline VkAccelerationStructureBuildGeometryInfoKHR bottom_level_build(
 }
 // [/build-info]
 
+// The builds' writes made visible to what reads the structures next in the
+// command buffer: the query below, or the copies of compaction.
+inline void after_builds(VkCommandBuffer cmd) {
+    const VkMemoryBarrier2 built{
+        .sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+        .srcStageMask = VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+        .srcAccessMask = VK_ACCESS_2_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
+        .dstStageMask = VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+        .dstAccessMask = VK_ACCESS_2_ACCELERATION_STRUCTURE_READ_BIT_KHR,
+    };
+    const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
+                                      .memoryBarrierCount = 1,
+                                      .pMemoryBarriers = &built};
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
+// [query-sizes]
+// After the builds, in the same command buffer: each finished structure's
+// compacted size into its slot of `pool`. The size is known only once a
+// build has finished, so a barrier first (the builds' writes before the
+// query's read), then the pool's slots cleared, then the query.
+inline void write_compacted_sizes(VkCommandBuffer cmd, const RayFunctions& ray,
+                                  std::span<const AccelerationStructure> built, VkQueryPool pool) {
+    std::vector<VkAccelerationStructureKHR> handles;
+    for (const AccelerationStructure& structure : built) handles.push_back(structure.get());
+    after_builds(cmd);
+    vkCmdResetQueryPool(cmd, pool, 0, uint32_t(handles.size()));
+    ray.cmd_write_properties(cmd, uint32_t(handles.size()), handles.data(),
+                             VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, pool, 0);
+}
+// [/query-sizes]
+
 inline std::vector<AccelerationStructure> build_bottom_levels(
     const vkt::Gpu& gpu, const RayFunctions& ray, VkDeviceSize scratch_alignment,
     std::span<const vkt::shapes::MeshRange> meshes, VkDeviceAddress vertices, uint32_t vertex_count,
@@ -127,31 +159,14 @@ inline std::vector<AccelerationStructure> build_bottom_levels(
     // [/query-pool]
 
     // [build]
-    // One command builds them all. The compacted size is known only once a
-    // build has finished: a barrier (build writes before the query's read),
-    // then the query.
-    std::vector<VkAccelerationStructureKHR> handles(count);
+    // One command builds them all, each geometry with its ranges (here one,
+    // its triangle count); the same command then asks how small each finished
+    // structure can be (24b: compaction).
     std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> range_pointers(count);
-    for (size_t i = 0; i < count; ++i) {
-        handles[i] = built[i].get();
-        range_pointers[i] = &ranges[i];
-    }
-    const VkMemoryBarrier2 built_barrier{
-        .sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-        .srcStageMask = VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-        .srcAccessMask = VK_ACCESS_2_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
-        .dstStageMask = VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-        .dstAccessMask = VK_ACCESS_2_ACCELERATION_STRUCTURE_READ_BIT_KHR,
-    };
-    const VkDependencyInfo after_build{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
-                                       .memoryBarrierCount = 1,
-                                       .pMemoryBarriers = &built_barrier};
+    for (size_t i = 0; i < count; ++i) range_pointers[i] = &ranges[i];
     vkt::one_time_submit(gpu, [&](VkCommandBuffer cmd) {
         ray.cmd_build(cmd, uint32_t(count), builds.data(), range_pointers.data());
-        vkCmdPipelineBarrier2(cmd, &after_build);
-        vkCmdResetQueryPool(cmd, pool, 0, uint32_t(count));
-        ray.cmd_write_properties(cmd, uint32_t(count), handles.data(),
-                                 VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, pool, 0);
+        write_compacted_sizes(cmd, ray, built, pool);
     });
     // [/build]
 
@@ -172,7 +187,7 @@ inline std::vector<AccelerationStructure> build_bottom_levels(
         report.compacted_bytes += compacted_sizes[i];
     }
     vkt::one_time_submit(gpu, [&](VkCommandBuffer cmd) {
-        vkCmdPipelineBarrier2(cmd, &after_build);
+        after_builds(cmd);
         for (size_t i = 0; i < count; ++i) {
             const VkCopyAccelerationStructureInfoKHR copy{
                 .sType = VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_INFO_KHR,
