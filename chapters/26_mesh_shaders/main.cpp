@@ -160,16 +160,20 @@ public:
         const ch26::MeshWorkgroup workgroup = ch26::choose_mesh_workgroup(mesh_properties);
         mesh_workgroup_ = workgroup.size;
         const auto yes = [](VkBool32 b) { return b == VK_TRUE ? "yes" : "no"; };
-        std::fprintf(stderr,
-                     "26_mesh_shaders: mesh shader outputs %u of %u bytes; mesh workgroups of %u "
-                     "(%s; preferred at most %u, local-invocation output %s/%s, compact vertices "
-                     "%s), task workgroups of %u (preferred at most %u)\n",
-                     output_bytes, mesh_properties.maxMeshOutputMemorySize, workgroup.size,
-                     workgroup.why, mesh_properties.maxPreferredMeshWorkGroupInvocations,
-                     yes(mesh_properties.prefersLocalInvocationVertexOutput),
-                     yes(mesh_properties.prefersLocalInvocationPrimitiveOutput),
-                     yes(mesh_properties.prefersCompactVertexOutput), ch26::kTaskGroup,
-                     mesh_properties.maxPreferredTaskWorkGroupInvocations);
+        std::fprintf(
+            stderr,
+            "26_mesh_shaders: mesh shader outputs %u of %u bytes (granularity %u vertices, "
+            "%u primitives); mesh workgroups of %u (%s; preferred at most %u, "
+            "local-invocation output %s/%s, compact vertices %s), task workgroups of %u "
+            "(preferred at most %u)\n",
+            output_bytes, mesh_properties.maxMeshOutputMemorySize,
+            mesh_properties.meshOutputPerVertexGranularity,
+            mesh_properties.meshOutputPerPrimitiveGranularity, workgroup.size, workgroup.why,
+            mesh_properties.maxPreferredMeshWorkGroupInvocations,
+            yes(mesh_properties.prefersLocalInvocationVertexOutput),
+            yes(mesh_properties.prefersLocalInvocationPrimitiveOutput),
+            yes(mesh_properties.prefersCompactVertexOutput), ch26::kTaskGroup,
+            mesh_properties.maxPreferredTaskWorkGroupInvocations);
         // [/limits]
 
         // [build-meshlets]

@@ -16,7 +16,7 @@ set(VKT_26_COUNTS
 # other devices: tests/unit/test_mesh_limits.cpp).
 vkt_chapter_test(chapter.26_mesh_shaders 26_mesh_shaders GOLDEN BLESS ${VKT_26_PIXEL}
   ARGS ${headless} EXPECT ${VKT_26_COUNTS} "task and mesh shaders, lit view, culling on"
-  "mesh shader outputs 3072 of [0-9]+ bytes; mesh workgroups of 128 \\(one invocation per vertex and per triangle")
+  "mesh shader outputs 3072 of [0-9]+ bytes \\(granularity 1 vertices, 1 primitives\\); mesh workgroups of 128 \\(one invocation per vertex and per triangle")
 vkt_chapter_test(chapter.26_mesh_shaders.offscreen 26_mesh_shaders SAME_AS chapter.26_mesh_shaders ${VKT_26_PIXEL}
   ARGS ${offscreen} EXPECT ${VKT_26_COUNTS})
 vkt_chapter_window_test(26_mesh_shaders PIXEL 0,0,196,206,218,1)
