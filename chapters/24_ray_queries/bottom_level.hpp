@@ -5,6 +5,7 @@
 
 #include "acceleration.hpp"
 
+#include "vkt/core/barrier.hpp"
 #include "vkt/resources/align.hpp"
 #include "vkt/scene/meshes.hpp"
 
@@ -68,17 +69,10 @@ inline VkAccelerationStructureBuildGeometryInfoKHR bottom_level_build(
 // The builds' writes made visible to what reads the structures next in the
 // command buffer: the query below, or the copies of compaction.
 inline void after_builds(VkCommandBuffer cmd) {
-    const VkMemoryBarrier2 built{
-        .sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-        .srcStageMask = VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-        .srcAccessMask = VK_ACCESS_2_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
-        .dstStageMask = VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-        .dstAccessMask = VK_ACCESS_2_ACCELERATION_STRUCTURE_READ_BIT_KHR,
-    };
-    const VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
-                                      .memoryBarrierCount = 1,
-                                      .pMemoryBarriers = &built};
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    vkt::memory_barrier(cmd, VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                        VK_ACCESS_2_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
+                        VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                        VK_ACCESS_2_ACCELERATION_STRUCTURE_READ_BIT_KHR);
 }
 
 // [query-sizes]
