@@ -9,7 +9,8 @@ cube one sample and that scene_ibl.frag still reads the three images as
 drawn, so the figure cannot drift from the code.
 
 With VKT_DIAGRAM_LAYOUT=narrow (the builder asks for it, for phones) the
-three stages are drawn one above the other, 380 units wide.
+three stages are drawn one above the other, 340 units wide; each
+layout is drawn at about the width it is shown, so its type reads at that size.
 """
 
 import os
@@ -18,7 +19,7 @@ import sys
 from pathlib import Path
 
 from svg import (BLUE, BLUE_FILL, GREEN, GREEN_FILL, GREY, GREY_FILL, INK, MUTED, ORANGE, ORANGE_FILL,
-                 PURPLE, PURPLE_FILL, Svg)
+                 PURPLE, PURPLE_FILL, Svg, text_width)
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 from source_constants import constant  # noqa: E402  (book/, above this folder)
@@ -75,11 +76,15 @@ def sizes(top: int, levels: int) -> str:
 def main() -> None:
     fmt = check_sources()
     narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
-    size = 11 if narrow else 12.5
+    # The wide layout is drawn at about the size it is shown in a page (some 800 px),
+    # the narrow one at about a phone's column (some 350 px), so the type below is
+    # about the size a reader sees.
+    size = 12.5 if narrow else 14
+    head_size = size + 1.5
     lead = size * 1.35
-    small = 11  # the reads' column, which holds the longest lines
     steps = [round(k / (SPEC_LEVELS - 1), 2) for k in range(SPEC_LEVELS)]
-    s = Svg(380 if narrow else 960, 100, "Chapter 23c: the sky, the three images made from it, three reads a pixel",
+    width = 340 if narrow else 800
+    s = Svg(width, 100, "Chapter 23c: the sky, the three images made from it, three reads a pixel",
             f"Once, at start-up, in compute: sky.comp makes a sky cube of {SKY} by {SKY} texels a face, "
             f"and downsample.comp its {SKY_LEVELS} mip levels. From it irradiance.comp makes the irradiance "
             f"cube, {IRR} by {IRR} a face, one level, {IRR_SAMPLES} samples a texel, and prefilter.comp the "
@@ -90,16 +95,29 @@ def main() -> None:
             "prefiltered cube in the mirror direction at level roughness × "
             f"{SPEC_LEVELS - 1}, times S; the sum is the ambient light.")
 
+    def fits(label, w, bold=False):
+        """Stops the build if a line would run out of its room."""
+        if text_width(label, size, bold) > w:
+            raise SystemExit(f"book/diagrams/23c_ibl_overview.py: `{label}` is wider than {w:.0f}")
+
     def card(x, y, w, head, lines, fill, stroke):
         """A box: a bold heading, then lines (`code` in monospace); its bottom."""
         h = (len(lines) + 1) * lead + 10
         s.rect(x, y, w, h, fill=fill, stroke=stroke, rx=6, width=1.3)
         ty = y + 5 + size
-        s.text(x + 9, ty, head, size=size, bold=not head.startswith("`"))
+        bold = not head.startswith("`")
+        fits(head, w - 18, bold)
+        s.text(x + 9, ty, head, size=size, bold=bold)
         for line in lines:
             ty += lead
+            fits(line, w - 18)
             s.text(x + 9, ty, line, size=size, fill=INK)
         return y + h
+
+    def header(x, y, label, colour):
+        if text_width(label, head_size, True) > width - x - 8:
+            raise SystemExit(f"book/diagrams/23c_ibl_overview.py: `{label}` is too wide")
+        s.text(x, y, label, size=head_size, bold=True, fill=colour)
 
     sky_lines = [f"{SKY} × {SKY} a face, 6 faces", f"{SKY_LEVELS} levels: {sizes(SKY, SKY_LEVELS)}",
                  "`sky.comp`: level 0, its formula", "`downsample.comp`: each next level"]
@@ -111,74 +129,70 @@ def main() -> None:
                   "level 0, a mirror: 1 sample a texel"]
     lut_lines = [f"{LUT} × {LUT}, 2D, 1 level: (A, B)", "at (n·v, roughness)",
                  f"{LUT_SAMPLES} samples; reads no sky"]
-    reads = [
-        ("the table", "`texture(brdf_lut, (n·v, roughness))`", "gives A, B: S = F0 A + B"),
-        ("irradiance", "`texture(irradiance_map, n)`", "× diffuse colour × (1 − S)"),
-        ("prefiltered", "`textureLod(specular_map, r, level)`",
-         f"r = reflect(−v, n), level = roughness × {SPEC_LEVELS - 1}"),
+    # Each image beside the read a pixel makes of it.
+    rows = [
+        ("irradiance cube (`irradiance.comp`)", irr_lines, BLUE_FILL, BLUE,
+         "`texture(irradiance_map, n)`", ["× diffuse colour × (1 − S)"]),
+        ("prefiltered specular cube (`prefilter.comp`)", spec_lines, PURPLE_FILL, PURPLE,
+         "`textureLod(specular_map, r, level)`",
+         [f"r = reflect(−v, n), level = roughness × {SPEC_LEVELS - 1}", "× S"]),
+        ("BRDF table (`brdf_lut.comp`)", lut_lines, GREY_FILL, GREY,
+         "`texture(brdf_lut, (n·v, roughness))`", ["gives A, B: S = F0 A + B"]),
     ]
-    head_once = f"Once, at start-up, in compute: all {fmt}"
+    sum_lines = ["ambient = irradiance × diffuse × (1 − S)", "+ prefiltered × S"]
+    once_first, once_rest = "Once, at start-up, in compute:", f"all {fmt}"
     head_pixel = "Every pixel: three reads"
 
     if not narrow:
-        s.text(20, 26, head_once, size=size + 1.5, bold=True, fill=ORANGE)
-        sky_bottom = card(20, 60, 250, "sky cube", sky_lines, ORANGE_FILL, ORANGE)
-        x, w = 320, 300
-        y0 = 40
-        irr_bottom = card(x, y0, w, "irradiance cube", irr_lines, BLUE_FILL, BLUE)
-        spec_top = irr_bottom + 14
-        spec_bottom = card(x, spec_top, w, "prefiltered specular cube", spec_lines, PURPLE_FILL, PURPLE)
-        lut_top = spec_bottom + 14
-        lut_bottom = card(x, lut_top, w, "BRDF table", lut_lines, GREY_FILL, GREY)
-        # The sky feeds the two cubes (irradiance.comp, prefilter.comp).
-        sx = 270
-        s.path(f"M{sx},{(60 + sky_bottom) / 2 - 10} C{sx + 25},{(60 + sky_bottom) / 2 - 10} {x - 25},"
-               f"{(y0 + irr_bottom) / 2} {x - 2},{(y0 + irr_bottom) / 2}", stroke=BLUE, width=1.5, arrow="end")
-        s.path(f"M{sx},{(60 + sky_bottom) / 2 + 10} C{sx + 25},{(60 + sky_bottom) / 2 + 10} {x - 25},"
-               f"{(spec_top + spec_bottom) / 2} {x - 2},{(spec_top + spec_bottom) / 2}", stroke=PURPLE,
-               width=1.5, arrow="end")
-        s.text(20, sky_bottom + 22, "`irradiance.comp` and `prefilter.comp`", size=size, fill=MUTED)
-        s.text(20, sky_bottom + 22 + lead, "read the sky; `brdf_lut.comp` reads", size=size, fill=MUTED)
-        s.text(20, sky_bottom + 22 + 2 * lead, "nothing: the table fits any sky.", size=size, fill=MUTED)
-        # Right: the reads, each beside its image.
-        rx, rw = 680, 270
-        s.text(rx, 26, head_pixel, size=size + 1.5, bold=True, fill=GREEN)
-        tops = [lut_top, y0, spec_top]
-        bottoms = [lut_bottom, irr_bottom, spec_bottom]
-        colours = [GREY, BLUE, PURPLE]
-        for (name, call, use), top, bottom, colour in zip(reads, tops, bottoms, colours):
-            mid = (top + bottom) / 2
-            s.line(x + w, mid, rx - 2, mid, stroke=colour, width=1.5, arrow="end")
-            s.rect(rx, mid - 1.5 * lead, rw, 3 * lead, fill=GREEN_FILL, stroke=GREEN, rx=6, width=1.2)
-            s.text(rx + 8, mid - 0.25 * lead, call, size=small)
-            s.text(rx + 8, mid + 0.8 * lead, use, size=small)
-        bottom = max(lut_bottom, sky_bottom + 22 + 2 * lead)
-        s.box(rx, bottom + 20, rw, 2 * lead + 10,
-              ["ambient = irradiance × diffuse × (1 − S)", "+ prefiltered × S"], fill=GREEN_FILL,
-              stroke=GREEN, size=small)
-        s.line(rx + rw / 2, (lut_top + lut_bottom) / 2 + 1.5 * lead, rx + rw / 2, bottom + 18, stroke=GREEN,
-               width=1.3, arrow="end")
-        s.text(rx + rw / 2 + 8, bottom + 12, "the three, summed", size=small, fill=MUTED)
-        s.height = bottom + 20 + 2 * lead + 10 + 12
+        lx, rx, w = 16, 424, 360
+        header(lx, 26, f"{once_first} {once_rest}", ORANGE)
+        sky_bottom = card(lx, 40, w, "sky cube", sky_lines, ORANGE_FILL, ORANGE)
+        note = ["`irradiance.comp` and `prefilter.comp`", "read the sky; `brdf_lut.comp` reads",
+                "nothing: the table fits any sky."]
+        for i, line in enumerate(note):
+            fits(line, width - rx - 10)
+            s.text(rx, 40 + size + 8 + i * lead, line, size=size, fill=MUTED)
+        s.line(lx + w / 2, sky_bottom, lx + w / 2, sky_bottom + 26, stroke=ORANGE, width=1.3, arrow="end")
+        y = sky_bottom + 30
+        header(rx, y + 4, head_pixel, GREEN)
+        y += 16
+        read_bottom = y
+        for head, lines, fill, stroke, call, use in rows:
+            bottom = card(lx, y, w, head, lines, fill, stroke)
+            mid = (y + bottom) / 2
+            read_h = (len(use) + 1) * lead + 10
+            read_top = max(mid - read_h / 2, read_bottom + 10)
+            read_bottom = card(rx, read_top, w, call, use, GREEN_FILL, GREEN)
+            s.line(lx + w, (read_top + read_bottom) / 2, rx - 2, (read_top + read_bottom) / 2,
+                   stroke=stroke, width=1.5, arrow="end")
+            y = bottom + 14
+        s.line(rx + w / 2, read_bottom, rx + w / 2, read_bottom + 20, stroke=GREEN, width=1.3, arrow="end")
+        s.text(rx + w / 2 + 8, read_bottom + 15, "the three, summed", size=size, fill=MUTED)
+        sum_top = read_bottom + 22
+        for line in sum_lines:
+            fits(line, w - 16)
+        s.box(rx, sum_top, w, 2 * lead + 10, sum_lines, fill=GREEN_FILL, stroke=GREEN, size=size)
+        s.height = max(y, sum_top + 2 * lead + 10) + 12
     else:
-        x, w = 10, 360
-        y = 22
-        first, _, rest = head_once.partition(": ")
-        s.text(x, y, first + ":", size=size + 1.5, bold=True, fill=ORANGE)
-        y += (size + 1.5) * 1.3
-        s.text(x, y, rest, size=size + 1.5, bold=True, fill=ORANGE)
+        x, w = 8, width - 16
+        y = 20
+        header(x, y, once_first, ORANGE)
+        y += head_size * 1.3
+        header(x, y, once_rest, ORANGE)
         y = card(x, y + 10, w, "sky cube", sky_lines, ORANGE_FILL, ORANGE)
-        s.line(x + w / 2, y, x + w / 2, y + 16, stroke=ORANGE, width=1.3, arrow="end")
-        s.text(x + w / 2 + 8, y + 12, "read by the two cubes' shaders", size=size, fill=MUTED)
-        y = card(x, y + 18, w, "irradiance cube (irradiance.comp)", irr_lines, BLUE_FILL, BLUE)
-        y = card(x, y + 10, w, "prefiltered specular cube (prefilter.comp)", spec_lines, PURPLE_FILL, PURPLE)
-        y = card(x, y + 10, w, "BRDF table (brdf_lut.comp)", lut_lines, GREY_FILL, GREY)
-        s.text(x, y + 36, head_pixel, size=size + 1.5, bold=True, fill=GREEN)
-        y += 46
-        for name, call, use in reads:
-            y = card(x, y, w, call, [use], GREEN_FILL, GREEN) + 8
-        s.box(x, y + 4, w, 2 * lead + 10, ["ambient = irradiance × diffuse × (1 − S)", "+ prefiltered × S"],
-              fill=GREEN_FILL, stroke=GREEN, size=size)
+        s.line(x + 30, y, x + 30, y + 18, stroke=ORANGE, width=1.3, arrow="end")
+        fits("read by the two cubes' shaders", w - 48)
+        s.text(x + 40, y + 14, "read by the two cubes' shaders", size=size, fill=MUTED)
+        y += 20
+        for head, lines, fill, stroke, _, _ in rows:
+            y = card(x, y, w, head, lines, fill, stroke) + 10
+        header(x, y + 24, head_pixel, GREEN)
+        y += 36
+        for _, _, _, _, call, use in rows:
+            y = card(x, y, w, call, use, GREEN_FILL, GREEN) + 8
+        for line in sum_lines:
+            fits(line, w - 16)
+        s.box(x, y + 4, w, 2 * lead + 10, sum_lines, fill=GREEN_FILL, stroke=GREEN, size=size)
         s.height = y + 4 + 2 * lead + 10 + 12
     s.write()
 
