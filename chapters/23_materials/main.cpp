@@ -256,6 +256,7 @@ public:
             const VkDeviceSize offset = 0;
             vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
             vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
+            // [material-bind]
             for (size_t d = 0; d < (view_ ? 0 : scene_.draws.size()); ++d) {
                 const vkt::GltfDraw& draw = scene_.draws[d];
                 const vkt::GltfPrimitive& primitive = scene_.primitives[draw.primitive];
@@ -275,6 +276,7 @@ public:
                                    sizeof push, &push);
                 vkCmdDrawIndexed(cmd, primitive.index_count, 1, primitive.first_index, 0, 0);
             }
+            // [/material-bind]
             vkCmdEndRendering(cmd);
         }
 

@@ -46,13 +46,15 @@ vec3 float_offset(vec3 p, vec3 n) {
 }
 // [/float-offset]
 
-// [ray-query]
+// [ray-start]
 // Where the ray starts: ray_offset along the normal, a hundredth by default
 // (--ray-offset D sets it; --ray-offset ulp uses float_offset instead, page
 // 24b's comparison), both specialization constants of the pipeline.
 layout(constant_id = 0) const float ray_offset = 0.01;
 layout(constant_id = 1) const bool use_float_offset = false;
+// [/ray-start]
 
+// [ray-query]
 // The ray query's answer, exactly 0 or 1: a ray from the point towards the
 // light, started a little off the surface so that it does not hit the
 // triangle it leaves. Any hit at all means shadow, so the query stops at the
