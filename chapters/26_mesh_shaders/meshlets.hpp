@@ -26,7 +26,7 @@ constexpr uint32_t kMeshVertices = 64, kMeshTriangles = 124, kMeshWorkgroup = 32
 
 using vkt::build_meshlets, vkt::Meshlet, vkt::Meshlets;
 
-// [cull]
+// [frustum-planes]
 // The six planes of the frustum of a Vulkan clip_from_world matrix (depth 0
 // to 1), each (n, d) with n of unit length and n . p + d >= 0 inside: the
 // rows r0..r3 of the matrix give r3 + r0 (left), r3 - r0 (right), r3 + r1,
@@ -47,7 +47,9 @@ inline bool outside_frustum(const glm::vec4 planes[6], const Meshlet& m) {
         if (glm::dot(glm::vec3(planes[i]), m.centre) + planes[i].w < -m.radius) return true;
     return false;
 }
+// [/frustum-planes]
 
+// [cull]
 // Back-facing as a whole: every triangle's normal lies within the cone's
 // half-angle a of its axis, and every point of the sphere is seen from the
 // eye within b = asin(radius / distance) of the direction to its centre; if
