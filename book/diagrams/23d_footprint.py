@@ -243,7 +243,8 @@ def wide() -> Svg:
 
 
 def narrow() -> Svg:
-    s = Svg(400, 100, TITLE, DESCRIPTION)
+    s = Svg(400, 100, TITLE, DESCRIPTION.replace("Left, the way down", "Top, the way down")
+            .replace("Right, the way up", "Below it, the way up"))
     y = panel(s, 16, 8, 368, CELL_NARROW, DOWN_HEAD, down_grid, down_words)
     s.line(16, y + 4, 384, y + 4, stroke="#d1d9e0", width=1)
     y = panel(s, 16, y + 14, 368, CELL_NARROW, UP_HEAD, up_grid, up_words)
