@@ -77,7 +77,8 @@ vkt_chapter_test(chapter.22_shadows.peter_panning 22_shadows
   ARGS ${headless} ${VKT_22_ARGS} --bias-slope 150
   EXPECT "3 cascades of 1024x1024.*bias 4.00 \\+ 150.00 x slope")
 vkt_chapter_test(chapter.22_shadows.help 22_shadows EXIT 0 ARGS --help
-  EXPECT "usage: 22_shadows" "--cascades N" "--view VIEW" "--bias-constant F" "--bias-slope F")
+  EXPECT "usage: 22_shadows" "--cascades N" "--view VIEW" "--bias-constant F" "--bias-slope F"
+         "how many cascades split the view .*\\[default: 1\\]")
 
 # Bad input: one clear line and exit status 2.
 vkt_chapter_test(bad_input.22_shadows.no_cascades 22_shadows EXIT 2 ARGS --cascades 0
