@@ -1,8 +1,8 @@
 """Chapter 22b: one cascade against three, the front of the scene enlarged.
 
 Drawn from the chapter's two reviewed test pictures, headless at 320x240 after
-10 frames: tests/golden/22_shadows_one_cascade.png (--cascades 1) and
-tests/golden/22_shadows.png (the default, three cascades). The same crop of
+10 frames: tests/golden/22_shadows_one_cascade.png (the default, one cascade) and
+tests/golden/22_shadows.png (--cascades 3). The same crop of
 each, the left front pillar's foot, the sphere, the torus and the start of the
 right front pillar's shadow, is enlarged (nearest neighbour, through
 golden.enlarged), so the figure always shows what the tests check: with one
@@ -19,10 +19,10 @@ from golden import GOLDEN, enlarged, read_png
 from svg import MUTED, Svg, wrap
 
 LEFT, TOP, CROP_W, CROP_H = 0, 106, 232, 108  # the crop, in the 320x240 pictures
-COLUMNS = [("22_shadows_one_cascade.png", "One cascade: --cascades 1",
+COLUMNS = [("22_shadows_one_cascade.png", "One cascade: the default",
             "Stepped shadow edges under the sphere and beside the pillar; grey blocks on the "
             "sphere's and the torus's lit sides."),
-           ("22_shadows.png", "Three cascades: the default",
+           ("22_shadows.png", "Three cascades: --cascades 3",
             "The same shadows with smooth edges; the sphere and the torus clean on their lit sides.")]
 TITLE = "Chapter 22b: the front of the scene with one cascade and with three, enlarged"
 DESCRIPTION = ("The same crop of the chapter's two test pictures at 320x240, pixels 0 to 231 across and "

@@ -5,10 +5,11 @@
 // drawn from the light, depth only, into an image (the shadow map) that then
 // holds, for every direction the light shines in, how far it reaches. The lit
 // pass looks each point up in that map and compares. This file draws a long
-// floor with rows of pillars under a directional light, with the view split
-// into cascades, each with its own map (one layer of an array image) fitted
+// floor with rows of pillars under a directional light. By default one map
+// covers the whole view (book/22_shadows.md); --cascades N splits the view
+// into N cascades, each with its own map (one layer of an array image) fitted
 // to its part of the view, so that shadows near the camera get as many
-// texels as those far away.
+// texels as those far away (book/22b_cascades.md).
 
 #include "cascades.hpp"
 #include "map_view.hpp"
@@ -195,7 +196,8 @@ public:
         const bool colours = panel.checkbox("Colour the cascades", colour_cascades_);
         bool bias = panel.slider("Bias constant", bias_constant_, 0.0f, 8.0f);
         bias = panel.slider("Bias slope", bias_slope_, 0.0f, 150.0f) || bias;
-        panel.text(std::to_string(cascades_) + " cascades (--cascades, at start-up)");
+        panel.text(std::to_string(cascades_) + (cascades_ == 1 ? " cascade" : " cascades") +
+                   " (--cascades, at start-up)");
         if (!colours && !bias) return;
         VKT_CHECK(vkDeviceWaitIdle(device_));
         block_.settings.y = colour_cascades_ ? 1u : 0u;
@@ -377,8 +379,9 @@ int main(int argc, char** argv) {
         {.name = "--cascades",
          .type = vkt::OptionType::integer,
          .value_name = "N",
-         .help = "how many cascades split the view (1..4)",
-         .default_value = "3",
+         .help = "how many cascades split the view (1..4); 1 is one map for the whole "
+                 "view (chapter 22), 22b uses 3",
+         .default_value = "1",
          .min = 1,
          .max = 4},
         {.name = "--view",
