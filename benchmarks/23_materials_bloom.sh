@@ -6,7 +6,8 @@
 #                                    (default build/release/bin, 7, 320x240, 100)
 #
 # RUNS rounds of --bloom 0.3 and of no bloom, in turn, FRAMES frames each,
-# headless, validation off, --benchmark; one JSON line per run (GPU scopes
+# under the environment (--sky environment), headless, validation off,
+# --benchmark; one JSON line per run (GPU scopes
 # "scene", "bloom": the chain down and up, "tone map"), each preceded by a
 # line naming its arguments. Then, per round, the medians side by side.
 # Without a GPU, point the loader at lavapipe:
@@ -26,7 +27,8 @@ for run in $(seq "$runs"); do
     flags=()
     [ "$bloom" = none ] || flags=(--bloom "$bloom")
     echo "# round $run: --bloom $bloom --size $size --frames $frames"
-    "$exe" --headless --no-validation --frames "$frames" --size "$size" --benchmark "${flags[@]}" \
+    "$exe" --headless --no-validation --frames "$frames" --size "$size" --benchmark --sky environment \
+      "${flags[@]}" \
       2>/dev/null | tail -n 1 | tee -a "$out"
   done
 done

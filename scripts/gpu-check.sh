@@ -85,7 +85,7 @@ fi
 # goldens.
 if [ -x "$bin/23_materials" ]; then
   for v in "cpu --sky uniform" "furnace --scene furnace --sky uniform" \
-           "furnace --scene furnace --sky environment" "lut"; do
+           "furnace --scene furnace --sky environment" "lut --sky environment"; do
     name=$(echo "$v" | tr -d -- '-' | tr ' ' '_')
     # shellcheck disable=SC2086  # the check and its scene are words
     "$bin/23_materials" --offscreen --validation --frames 10 --size 320x240 --verify $v \
@@ -110,10 +110,10 @@ fi
 # 23_materials.cmake, 28_gpu_culling.cmake): each against its own lavapipe golden. 24's --view boxes
 # needs VK_KHR_ray_query, checked above with the chapter.
 for run in "22_shadows|22_shadows_map|320x240|--cascades 3 --view map" \
-           "23_materials|23_materials_view_sky|640x480|--view sky" \
-           "23_materials|23_materials_view_irradiance|640x480|--view irradiance" \
-           "23_materials|23_materials_view_prefiltered|640x480|--view prefiltered" \
-           "23_materials|23_materials_view_brdf|640x480|--view brdf --tone-map clamp" \
+           "23_materials|23_materials_view_sky|640x480|--sky environment --view sky" \
+           "23_materials|23_materials_view_irradiance|640x480|--sky environment --view irradiance" \
+           "23_materials|23_materials_view_prefiltered|640x480|--sky environment --view prefiltered" \
+           "23_materials|23_materials_view_brdf|640x480|--sky environment --view brdf --tone-map clamp" \
            "23_materials|23_materials_view_bloom|640x480|--sky uniform --bloom 0.3 --view bloom" \
            "23_materials|23_materials_exposure_minus_2|320x240|--sky uniform --exposure -2" \
            "23_materials|23_materials_exposure_plus_2|320x240|--sky uniform --exposure 2" \

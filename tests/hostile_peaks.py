@@ -10,7 +10,8 @@ Each PATH is a file or a folder (its files, not its subfolders). Every
 .gltf and .glb among them is given to each chapter named (10_gltf,
 23_materials, 26_mesh_shaders: `--model FILE`), every .png and .jpg to
 09_textures (`--texture FILE`) where it is named, each run with
-`--max-memory` and the arguments of --args. --nuls adds two sparse files of
+`--max-memory` and the arguments of --args (23 with `--sky environment`
+too, its image-based light). --nuls adds two sparse files of
 1 GiB of NUL bytes (a model and a texture), made in a temporary folder.
 
 A chapter's peak is its maximum resident set (ru_maxrss of the finished
@@ -125,16 +126,18 @@ def main():
     mib = 1 << 20
     for chapter in chapters:
         exe = os.path.join(options.bin, chapter)
+        # 23 under its environment (image-based light), its fullest setup.
+        args = extra + (["--sky", "environment"] if chapter == "23_materials" else [])
         flag = "--texture" if chapter == "09_textures" else "--model"
         kinds = IMAGES if chapter == "09_textures" else MODELS
         if chapter == "09_textures":
-            status, _, baseline, line = run([exe] + extra, options.timeout)
+            status, _, baseline, line = run([exe] + args, options.timeout)
             what = "its own checker.png"
         else:
-            _, _, peak, _ = run([exe] + extra + [flag, empty], options.timeout)
+            _, _, peak, _ = run([exe] + args + [flag, empty], options.timeout)
             say("%s: the empty scene (refused once the device is up): %.0f MiB" %
                 (chapter, peak / mib))
-            status, _, baseline, line = run([exe] + extra + [flag, triangle], options.timeout)
+            status, _, baseline, line = run([exe] + args + [flag, triangle], options.timeout)
             what = "one triangle"
         if status != 0:
             failures.append("%s: the baseline run failed (%s): %s" % (chapter, status, line))
@@ -146,7 +149,7 @@ def main():
             if not path.lower().endswith(kinds):
                 continue
             status, seconds, peak, line = run(
-                [exe] + extra + ["--max-memory", options.max_memory, flag, path], options.timeout)
+                [exe] + args + ["--max-memory", options.max_memory, flag, path], options.timeout)
             verdict = "ok"
             if status is None or status not in (0, 1):
                 verdict = "FAIL (exit %s)" % status

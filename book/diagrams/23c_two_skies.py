@@ -2,7 +2,7 @@
 
 Drawn from two reviewed test pictures, headless at 320x240 after 10 frames,
 the same flags but the sky: tests/golden/23_materials_uniform.png (--sky
-uniform) and tests/golden/23_materials.png (--sky environment, the default).
+uniform) and tests/golden/23_materials.png (--sky environment).
 Above, both whole, a picture pixel to a unit, with a frame round two spheres;
 below, those two spheres enlarged 3 times: the roughest plastic (top row,
 last column) and the most polished gold (bottom row, first column), each

@@ -34,7 +34,7 @@ inline vkt::OptionSpec term_option() {
             .value_name = "TERM",
             .help =
                 "all: the whole BRDF; or one factor of its specular part alone, as a number "
-                "(with --sky uniform): d (GGX), f (Fresnel), v (Smith's, as G)",
+                "(under the uniform sky): d (GGX), f (Fresnel), v (Smith's, as G)",
             .default_value = "all",
             .choices = {"all", "d", "f", "v"}};
 }
@@ -80,7 +80,8 @@ inline void check_term(const vkt::Options& options) {
         throw vkt::UsageError(flag + " draws the spheres: leave out --view " +
                               options.text("--view"));
     if (options.text("--sky") != "uniform")
-        throw vkt::UsageError(flag + " is drawn by the uniform sky's shader: add --sky uniform");
+        throw vkt::UsageError(flag +
+                              " is drawn by the uniform sky's shader: leave out --sky environment");
 }
 
 inline void check_flags(const vkt::Options& options) {
@@ -97,13 +98,13 @@ inline void check_flags(const vkt::Options& options) {
         throw vkt::UsageError("--verify furnace needs --scene furnace");
     if (verify == "cpu" && !uniform)
         throw vkt::UsageError(
-            "--verify cpu checks the uniform sky's CPU reference: add --sky uniform");
+            "--verify cpu checks the uniform sky's CPU reference: leave out --sky environment");
     if (verify == "lut" && uniform)
         throw vkt::UsageError(
-            "--verify lut checks the environment's BRDF table: leave out --sky uniform");
+            "--verify lut checks the environment's BRDF table: add --sky environment");
     if (view != "scene" && view != "bloom" && uniform)
         throw vkt::UsageError("--view " + view +
-                              " shows the environment's images: leave out --sky uniform");
+                              " shows the environment's images: add --sky environment");
     // The chain is made only with --bloom F (above 0): without it, there is nothing to show.
     if (view == "bloom" && options.number("--bloom") == 0)
         throw vkt::UsageError("--view bloom shows the bloom's levels: add --bloom F");

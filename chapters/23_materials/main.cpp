@@ -406,10 +406,10 @@ int main(int argc, char** argv) {
         {.name = "--sky",
          .type = vkt::OptionType::choice,
          .value_name = "SKY",
-         .help = "environment: a generated HDR sky, image-based light (split sum); uniform: one "
-                 "radiance from everywhere, sampled per pixel",
-         .default_value = "environment",
-         .choices = {"environment", "uniform"}},
+         .help = "uniform: one radiance from everywhere, sampled per pixel; environment: a "
+                 "generated HDR sky, image-based light (split sum)",
+         .default_value = "uniform",
+         .choices = {"uniform", "environment"}},
         {.name = "--bloom",
          .type = vkt::OptionType::number,
          .value_name = "F",

@@ -1,9 +1,9 @@
 # Chapter 23: a grid of spheres, metallic 0 to 1 down and roughness 0.1 to 1
 # across, shaded with glTF's metallic-roughness BRDF into an HDR target and
-# tone mapped (ACES, Narkowicz's fit) into the _SRGB one. By default under
-# the environment: a sky made at start-up into a cube map, lit by
-# image-based light (the split sum's three images, made in compute), and
-# drawn behind the spheres.
+# tone mapped (ACES, Narkowicz's fit) into the _SRGB one. Here under the
+# environment (--sky environment; the default is the uniform sky, below): a
+# sky made at start-up into a cube map, lit by image-based light (the split
+# sum's three images, made in compute), and drawn behind the spheres.
 #
 # Hand-worked pixels of the background (shaders/23_materials/sky.comp): the
 # top corners' view rays rise 0.310 (y of the unit ray through the pixel's
@@ -15,14 +15,16 @@
 # and linear filtering (lavapipe: exact at the top, 39 for 38 at the bottom).
 set(VKT_23_SKY_PIXEL PIXEL 0,0,119,136,168,2 319,0,119,136,168,2 0,239,44,38,33,2
   319,239,44,38,33,2)
-vkt_chapter_test(chapter.23_materials 23_materials GOLDEN BLESS ${VKT_23_SKY_PIXEL} ARGS ${headless}
+vkt_chapter_test(chapter.23_materials 23_materials GOLDEN BLESS ${VKT_23_SKY_PIXEL}
+  ARGS ${headless} --sky environment
   EXPECT "23_materials: the sphere grid, sky environment \\(image-based light\\), HDR target R16G16B16A16_SFLOAT, exposure \\+0.00 EV \\(x1.000\\), tone map ACES \\(Narkowicz's fit\\), bloom 0.00"
          "image-based light made in [0-9.]+ ms of GPU time \\(sky [0-9.]+, irradiance [0-9.]+, specular [0-9.]+, BRDF table [0-9.]+\\)")
 vkt_chapter_test(chapter.23_materials.offscreen 23_materials SAME_AS chapter.23_materials ${VKT_23_SKY_PIXEL}
-  ARGS ${offscreen})
-vkt_chapter_window_test(23_materials PIXEL 0,0,119,136,168,2)
+  ARGS ${offscreen} --sky environment)
+vkt_chapter_window_test(23_materials PIXEL 0,0,119,136,168,2 ARGS --sky environment)
 
-# The uniform sky (--sky uniform), integrated per pixel. Hand-worked pixels:
+# The uniform sky, integrated per pixel: the default (page 23's), so this test
+# leaves out --sky and expects "sky uniform". Hand-worked pixels:
 # the corners show the sky, radiance (0.05, 0.06, 0.09)
 # (chapters/23_materials/grid.hpp). Through the ACES fit at exposure 0 that
 # is (0.0443, 0.0588, 0.1082), sRGB-encoded (59.4, 68.6, 92.50), stored
@@ -30,7 +32,7 @@ vkt_chapter_window_test(23_materials PIXEL 0,0,119,136,168,2)
 # instead, at --exposure 2 (x4): (0.2, 0.24, 0.36), stored (124, 134, 162).
 set(VKT_23_PIXEL PIXEL 0,0,59,69,92 319,239,59,69,92)
 vkt_chapter_test(chapter.23_materials.uniform 23_materials GOLDEN_FILE 23_materials_uniform.png
-  LABELS bless ${VKT_23_PIXEL} ARGS ${headless} --sky uniform EXPECT "the sphere grid, sky uniform")
+  LABELS bless ${VKT_23_PIXEL} ARGS ${headless} EXPECT "the sphere grid, sky uniform")
 # The same grid cut at 1 instead of ACES (--tone-map clamp), for page 23b's
 # side by side: the sky (0.05, 0.06, 0.09) sRGB-encoded as it is, (63.2,
 # 69.3, 84.6), stored (63, 69, 85) within 1; its own golden image.
@@ -99,7 +101,8 @@ vkt_chapter_test(chapter.23_materials.furnace_environment 23_materials
 # roughness) texels: with the same 1024 samples within 0.002 (lavapipe
 # 0.0003: half floats), with 16 times as many within 0.02 (lavapipe 0.0102,
 # at a grazing n.v of 0.11; with 256 samples it was 0.044 there).
-vkt_chapter_test(chapter.23_materials.brdf_table 23_materials ARGS ${headless} --verify lut
+vkt_chapter_test(chapter.23_materials.brdf_table 23_materials
+  ARGS ${headless} --sky environment --verify lut
   EXPECT "verify lut: 9 points match the CPU integration, with the same samples within 0.002")
 
 # Bloom: the HDR image halved into mip levels and added back up in compute,
@@ -166,8 +169,9 @@ vkt_chapter_test(bad_input.23_materials.term_verify 23_materials EXIT 2
   EXPECT "--verify cpu checks the whole BRDF: leave out --term v")
 vkt_chapter_test(bad_input.23_materials.term_view 23_materials EXIT 2 ARGS --view brdf --term d
   EXPECT "--term d draws the spheres: leave out --view brdf")
-vkt_chapter_test(bad_input.23_materials.term_environment 23_materials EXIT 2 ARGS --term d
-  EXPECT "--term d is drawn by the uniform sky's shader: add --sky uniform")
+vkt_chapter_test(bad_input.23_materials.term_environment 23_materials EXIT 2
+  ARGS --term d --sky environment
+  EXPECT "--term d is drawn by the uniform sky's shader: leave out --sky environment")
 
 # A glTF file with every texture: assets/gltf/pbr_cubes.gltf, two cubes of
 # studs (normal map), polished metal studs on a rough dielectric checker
@@ -273,13 +277,15 @@ string(REPLACE [=["scene": 0,]=] [=["extensionsUsed": ["KHR_materials_clearcoat"
   vkt_23_used "${vkt_23_text}")
 file(WRITE ${vkt_23_dir}/clearcoat.gltf "${vkt_23_used}")
 vkt_chapter_test(bad_input.23_materials.required_extension 23_materials EXIT 1
-  ARGS ${headless} --model ${vkt_23_dir}/texture_transform.gltf
+  ARGS ${headless} --sky environment --model ${vkt_23_dir}/texture_transform.gltf
   EXPECT "texture_transform.gltf: requires extension KHR_texture_transform, which this loader does not support")
 vkt_chapter_test(chapter.23_materials.unsupported_extension 23_materials
-  ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE} --model ${vkt_23_dir}/clearcoat.gltf
+  ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE} --sky environment
+       --model ${vkt_23_dir}/clearcoat.gltf
   EXPECT "clearcoat.gltf: warning: uses extension KHR_materials_clearcoat, which this loader ignores")
 vkt_chapter_test(bad_input.23_materials.missing_model 23_materials EXIT 1
-  ARGS --headless --frames 1 --model ${vkt_23_dir}/no_such_file.gltf EXPECT "no_such_file.gltf")
+  ARGS --headless --frames 1 --sky environment --model ${vkt_23_dir}/no_such_file.gltf
+  EXPECT "no_such_file.gltf")
 
 vkt_chapter_test(chapter.23_materials.help 23_materials EXIT 0 ARGS --help
   EXPECT "usage: 23_materials" "--exposure EV" "--tone-map CURVE" "--scene SCENE" "--sky SKY" "--bloom F"
@@ -309,19 +315,20 @@ vkt_chapter_test(bad_input.23_materials.verify_furnace 23_materials EXIT 2
 vkt_chapter_test(bad_input.23_materials.verify_word 23_materials EXIT 2
   ARGS --verify all EXPECT "--verify wants one of cpu, furnace, lut, not 'all'")
 vkt_chapter_test(bad_input.23_materials.sky 23_materials EXIT 2 ARGS --sky cloudy
-  EXPECT "--sky wants one of environment, uniform, not 'cloudy'")
+  EXPECT "--sky wants one of uniform, environment, not 'cloudy'")
 vkt_chapter_test(bad_input.23_materials.verify_cpu_environment 23_materials EXIT 2
-  ARGS --verify cpu EXPECT "--verify cpu checks the uniform sky's CPU reference: add --sky uniform")
-vkt_chapter_test(bad_input.23_materials.verify_lut_uniform 23_materials EXIT 2
-  ARGS --sky uniform --verify lut
-  EXPECT "--verify lut checks the environment's BRDF table: leave out --sky uniform")
+  ARGS --verify cpu --sky environment
+  EXPECT "--verify cpu checks the uniform sky's CPU reference: leave out --sky environment")
+vkt_chapter_test(bad_input.23_materials.verify_lut_uniform 23_materials EXIT 2 ARGS --verify lut
+  EXPECT "--verify lut checks the environment's BRDF table: add --sky environment")
 # A device without the depth layouts the chapter's depth barrier uses, or
 # without maintenance4 (the bloom's LocalSizeId): exit 1, named.
 vkt_chapter_test(bad_input.23_materials.no_separate_depth_stencil 23_materials EXIT 1
-  ARGS --headless --frames 1 ENV VKT_HIDE_FEATURES=separateDepthStencilLayouts
+  ARGS --headless --frames 1 --sky environment ENV VKT_HIDE_FEATURES=separateDepthStencilLayouts
   EXPECT "separateDepthStencilLayouts")
 vkt_chapter_test(bad_input.23_materials.no_maintenance4 23_materials EXIT 1
-  ARGS --headless --frames 1 ENV VKT_HIDE_FEATURES=maintenance4 EXPECT "maintenance4")
+  ARGS --headless --frames 1 --sky environment ENV VKT_HIDE_FEATURES=maintenance4
+  EXPECT "maintenance4")
 
 # The overlay in a window: one click on "clamp" changes the tone curve live.
 if(XVFB_RUN AND XDOTOOL AND OPENBOX AND TARGET imgui::imgui)
@@ -337,20 +344,20 @@ endif()
 # Issue 39's chain of 100,000 nodes (tests/make_hostile_files.cpp): loaded
 # and drawn; one call per level overflowed the stack (chapter.10_gltf.node_chain).
 vkt_chapter_test(chapter.23_materials.node_chain 23_materials
-  ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE}
+  ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE} --sky environment
        --model ${VKT_HOSTILE_DIR}/node_chain.gltf
   EXPECT "a glTF model")
 set_tests_properties(chapter.23_materials.node_chain PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
 # 65,156 materials, one descriptor set each: before, lavapipe aborted
 # ("LLVM ERROR: Unable to allocate section memory", signal 6).
 vkt_chapter_test(bad_input.23_materials.materials_65156 23_materials EXIT 1
-  ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE}
+  ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE} --sky environment
        --model ${VKT_HOSTILE_DIR}/materials_65156.gltf
   EXPECT "23_materials: error: .*materials_65156.gltf: materials: 65156 of them, past this loader's limit of 4096")
 set_tests_properties(bad_input.23_materials.materials_65156 PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
 # A NaN normal (tests/make_hostile_files.cpp): before, exit 0 and lit black.
 vkt_chapter_test(bad_input.23_materials.nan_normal 23_materials EXIT 1
-  ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE}
+  ARGS --headless --validation --frames 1 --size ${VKT_TEST_SIZE} --sky environment
        --model ${VKT_HOSTILE_DIR}/nan_normal.gltf
   EXPECT "23_materials: error: .*nan_normal.gltf: mesh 0 primitive 0 NORMAL: accessor 1: element 2, component 2, is NaN, not a finite number")
 set_tests_properties(bad_input.23_materials.nan_normal PROPERTIES FIXTURES_REQUIRED vkt_hostile_files)
@@ -368,13 +375,13 @@ set_tests_properties(bad_input.23_materials.nan_normal PROPERTIES FIXTURES_REQUI
 set(vkt_23_views --headless --validation --frames ${VKT_TEST_FRAMES} --size 640x480)
 vkt_chapter_test(chapter.23_materials.view_sky 23_materials GOLDEN_FILE 23_materials_view_sky.png
   LABELS bless PIXEL 40,40,26,26,26 240,80,38,85,156,2 240,400,44,38,33,2
-  ARGS ${vkt_23_views} --view sky)
+  ARGS ${vkt_23_views} --sky environment --view sky)
 vkt_chapter_test(chapter.23_materials.view_irradiance 23_materials
   GOLDEN_FILE 23_materials_view_irradiance.png LABELS bless PIXEL 40,40,26,26,26
-  ARGS ${vkt_23_views} --view irradiance)
+  ARGS ${vkt_23_views} --sky environment --view irradiance)
 vkt_chapter_test(chapter.23_materials.view_prefiltered 23_materials
   GOLDEN_FILE 23_materials_view_prefiltered.png LABELS bless PIXEL 5,5,26,26,26 106,229,44,38,33,2
-  ARGS ${vkt_23_views} --view prefiltered)
+  ARGS ${vkt_23_views} --sky environment --view prefiltered)
 # The BRDF table through the clamp curve, so red and green are its two
 # numbers as stored: at n.v 0.98 and roughness 0.02 (the top right texel)
 # the lobe is a mirror and Schlick's F is F0 + (1 - F0)(1 - n.v)^5, so A =
@@ -382,12 +389,11 @@ vkt_chapter_test(chapter.23_materials.view_prefiltered 23_materials
 # background 0.02 unmapped: (39, 39, 39).
 vkt_chapter_test(chapter.23_materials.view_brdf 23_materials
   GOLDEN_FILE 23_materials_view_brdf.png LABELS bless PIXEL 5,5,39,39,39 555,3,255,0,0,1
-  ARGS ${vkt_23_views} --view brdf --tone-map clamp)
-vkt_chapter_test(bad_input.23_materials.view_uniform_sky 23_materials EXIT 2
-  ARGS --view sky --sky uniform
-  EXPECT "--view sky shows the environment's images: leave out --sky uniform")
+  ARGS ${vkt_23_views} --sky environment --view brdf --tone-map clamp)
+vkt_chapter_test(bad_input.23_materials.view_uniform_sky 23_materials EXIT 2 ARGS --view sky
+  EXPECT "--view sky shows the environment's images: add --sky environment")
 vkt_chapter_test(bad_input.23_materials.view_verify 23_materials EXIT 2
-  ARGS --view brdf --verify furnace --scene furnace
+  ARGS --view brdf --verify furnace --scene furnace --sky environment
   EXPECT "--verify furnace checks the scene: leave out --view brdf")
 
 # --view bloom (page 23d): this frame's bloom chain, drawn over the scene once
