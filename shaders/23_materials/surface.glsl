@@ -45,9 +45,11 @@ vec3 shading_normal() {
         t *= scale;
         b *= scale;
     }
+    // [normal-apply]
     vec3 m = texture(normal_map, uv).xyz * 2.0 - 1.0;
     m.xy *= draw.factors.z;  // the material's normal_scale
     return normalize(mat3(t, b, n) * m);
+    // [/normal-apply]
 }
 // [/normal-map]
 
