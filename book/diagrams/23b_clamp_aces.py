@@ -10,7 +10,7 @@ golden.enlarged): around the bottom row's second sphere (metal, roughness
 flat white disc with a hard edge, ringed in yellow; through ACES, a white
 centre that fades out. The square is boxed on the whole picture. Over each
 picture and under each square, read from the pictures when the book is built,
-how many pixels have a channel at 255; book/23b_hdr.md quotes all four counts
+how many pixels have a channel at 255; book/23b_hdr.md quotes all four counts in its table
 and the clamped disc's pure white pixels, and the build stops if the page says
 otherwise (quoted()).
 
@@ -60,10 +60,10 @@ def quoted(whole: list[int], square: list[int], disc: int) -> dict[str, str]:
     clamp, aces = whole
     clamp_sq, aces_sq = square
     return {f"a flat disc of {disc} pixels of pure white": "the clamped highlight's flat disc",
-            f"{clamp:,} pixels have a channel at 255 with clamp, against {aces:,} with ACES":
-            "the pixels at 255 through each curve",
-            f"{clamp_sq} pixels of the square have a channel at 255 cut at 1, against {aces_sq} through ACES":
-            "the pixels at 255 in the enlarged square"}
+            f"| ACES, 0 EV | {aces:,} |": "the table's pixels at 255 through ACES",
+            f"| Clamp, 0 EV | {clamp:,} |": "the table's pixels at 255 cut at 1",
+            f"| ACES, 0 EV, the boxed square | {aces_sq:,} |": "the table's square through ACES",
+            f"| Clamp, 0 EV, the boxed square | {clamp_sq:,} |": "the table's square cut at 1"}
 
 
 def check_page(whole: list[int], square: list[int], disc: int) -> None:

@@ -140,13 +140,16 @@ def same_disc(flat_pixels, flat) -> int:
 
 def quoted() -> dict[str, str]:
     """The phrases book/23b_hdr.md must say, computed here: 0 EV against +2 EV, and the squares."""
-    (_, _), (_, zero), (_, plus) = pictures()
+    (_, minus), (_, zero), (_, plus) = pictures()
     rows0, rows2 = [sum(r) for r in zero], [sum(r) for r in plus]
-    t0, t2 = sum(rows0), sum(rows2)
+    tm, t0, t2 = sum(map(sum, minus)), sum(rows0), sum(rows2)
     (_, lit, _), (flat_pixels, flat, flat_count) = squares()
     disc = same_disc(flat_pixels, flat)
     return {
-        f"from {t0} to {t2}, {t2 / t0:.1f} times": "the pixels at 255 in all",
+        f"| ACES, -2 EV | {tm:,} |": "the table's pixels at 255 at -2 EV",
+        f"| ACES, 0 EV | {t0:,} |": "the table's pixels at 255 at 0 EV",
+        f"| ACES, +2 EV | {t2:,} |": "the table's pixels at 255 at +2 EV",
+        f"the count grows {t2 / t0:.1f} times": "the pixels at 255, 0 EV against +2 EV",
         f"from {listed(rows0)} to {listed(rows2)}": "the pixels at 255 row by row",
         f"the brightest pixel {lit}": "the float square's brightest pixel",
         f"{flat_count} pixels of one colour, {flat}": "the 8-bit square's flat disc",
