@@ -26,7 +26,7 @@ def main() -> None:
     w, h = CROP_W * ZOOM, CROP_H * ZOOM
     s = Svg(1000, Y0 + h + 120, "Chapter 23: the glTF test model, enlarged 5 times",
             "The two cubes of assets/gltf/pbr_cubes.gltf from the chapter's test picture, each pixel "
-            "enlarged 5 times: a red and white checker, a dark polished metal stud on every square "
+            "enlarged 5 times: a red and cream checker, a dark polished metal stud on every square "
             "with a small highlight, a darker ring where each stud meets the square, and a yellow "
             "glowing ring in the middle of each face. The left cube has tangents in the file, the "
             "right one has them made in the shader; both show the same round raised studs, though the cubes stand at different angles.")
@@ -44,7 +44,7 @@ def main() -> None:
         "square a stud: dark",
         "polished metal (metallic-roughness) with a small white highlight, its round relief the normal "
         "map; the darker rim",
-        "where it meets the square is the occlusion texture. The red and white checker is the base "
+        "where it meets the square is the occlusion texture. The red and cream checker is the base "
         "colour."],
         size=12.5, fill=MUTED)
     s.write()

@@ -42,7 +42,7 @@ def main() -> None:
     description = (
         "Five pictures of the same cube of studs under the uniform sky, each with one more of "
         "glTF's maps, and under each what changed since the one before, the difference times "
-        f"{GAIN}. 1, base colour only: a red and white checker, bright on top and dark in front, "
+        f"{GAIN}. 1, base colour only: a red and cream checker, bright on top and dark in front, "
         "since without a metallic-roughness map glTF makes the surface rough metal. 2, with "
         "metallic-roughness: the checker becomes a bright dielectric on every face and the studs "
         "flat discs of dark polished metal; almost everything changes. 3, with the normal map: the "

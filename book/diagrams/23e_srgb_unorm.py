@@ -48,7 +48,7 @@ def main() -> None:
     title = f"Chapter 23e: the base colour through _SRGB and through _UNORM, enlarged {zoom} times"
     description = (f"The same {CROP_W} by {CROP_H} pixels of two pictures of the test model, the "
                    "right cube, each pixel enlarged. Left, the base colour's texture created "
-                   "_SRGB, as the chapter does: a deep red and white checker. Right, the same "
+                   "_SRGB, as the chapter does: a deep red and cream checker. Right, the same "
                    "texture created _UNORM, so its sRGB-encoded bytes are read as linear numbers: "
                    "the red squares turn a pale, washed-out pink and the whole cube looks lighter "
                    "and greyer.")

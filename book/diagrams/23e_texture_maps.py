@@ -65,7 +65,7 @@ def labels(px, material):
     occ_foot = min(row[x][0] for row in px["occlusion"] for x in range(len(row)))
     emis = max(px["emissive"][y][x] for y in range(64) for x in range(64))
     return [
-        ("Base colour", "sRGB", ["RGB: the surface's colour", "a red and white checker"]),
+        ("Base colour", "sRGB", ["RGB: the surface's colour", "a red and cream checker"]),
         ("Metallic-roughness", "linear", ["G: roughness, B: metallic",
                                           f"studs G {mr_s[1]}, B {mr_s[2]}: metal",
                                           f"else G {mr_f[1]}, B {mr_f[2]}: rough", "(R unused)"]),
@@ -90,7 +90,7 @@ def main() -> None:
     narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
     title = "Chapter 23e: the five texture maps of assets/gltf/pbr_cubes.gltf"
     desc = ("The five 64 by 64 texel maps of the test model, enlarged, each labelled with what its "
-            "channels mean. Base colour: a red and white checker, sRGB. Metallic-roughness: green "
+            "channels mean. Base colour: a red and cream checker, sRGB. Metallic-roughness: green "
             "squares (rough, not metal) with a blue disc for each stud (blue is metallic, a little "
             "green: polished). Normal: light blue-violet, flat, with each stud shaded pink to one side "
             "and blue to the other, its relief. Occlusion: white, with a grey ring around each stud's "

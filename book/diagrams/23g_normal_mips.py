@@ -1,4 +1,4 @@
-"""Chapter 23e: the test model's normal map down its mip chain.
+"""Chapter 23g: the test model's normal map down its mip chain.
 
 Read out of assets/gltf/pbr_cubes.gltf when the book is built (through
 23e_texture_maps.maps()), then halved level by level as the chapter's loader
@@ -70,13 +70,13 @@ def check_tail(chain) -> None:
     """Levels 5 and 6 (2x2, 1x1) repeat level 4's texel: the caption says so."""
     texel = chain[SHOWN - 1][0][0]
     if any(t != texel for level in chain[SHOWN - 1:] for row in level for t in row):
-        raise SystemExit("book/diagrams/23e_normal_mips.py: the levels past 4 are not all one texel")
+        raise SystemExit("book/diagrams/23g_normal_mips.py: the levels past 4 are not all one texel")
 
 
 def fits(lines, size, room) -> None:
     for line in lines:
         if text_width(line, size) > room:
-            raise SystemExit(f"book/diagrams/23e_normal_mips.py: '{line}' is wider than its column")
+            raise SystemExit(f"book/diagrams/23g_normal_mips.py: '{line}' is wider than its column")
 
 
 def main() -> None:
@@ -84,7 +84,7 @@ def main() -> None:
     check_tail(chain)
     last = chain[-1][0][0]
     narrow = os.environ.get("VKT_DIAGRAM_LAYOUT") == "narrow"
-    title = "Chapter 23e: the test model's normal map down its mip levels"
+    title = "Chapter 23g: the test model's normal map down its mip levels"
     desc = ("Levels 0 to 4 of the normal map of assets/gltf/pbr_cubes.gltf, each made from the one "
             "above by averaging 2x2 texels and rounding to a byte, a CPU model of the loader's blits, "
             "drawn at the same size. Level 0 shows 4 by 4 studs, each "
