@@ -158,8 +158,6 @@ def check_page() -> None:
             "it": "22_light_box's alt text",
             f"line of sight, {math.dist(one_cascade_centre(), EYE):.2f} units from the eye and "
             f"{-one_cascade_centre()[1]:.1f} units below the floor": "22_light_box's alt text",
-            f"texel on each axis (a texel is {one_cascade_box_side() / MAP_SIZE:.2f} units here)":
-                "--cascades 1's texel",
         },
         "22b_cascades.md": {
             f"near cascade a texel is {texel(0):.4f} units, the near square's {box_side(0):.2f} units "

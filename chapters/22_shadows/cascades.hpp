@@ -57,6 +57,7 @@ inline glm::vec3 snap_to_texels(glm::vec3 centre, float texel) {
 }
 // [/snap]
 
+// [light-from-world]
 // The light's view of one slice: an orthographic box around the slice's
 // bounding sphere (so it does not change size as the camera turns), looking
 // along the light, reaching `behind` further back towards the light so that
@@ -65,7 +66,7 @@ inline glm::vec3 snap_to_texels(glm::vec3 centre, float texel) {
 // space: x and y from -1 to 1, depth 0 (towards the light) to 1.
 inline glm::mat4 light_from_world(const std::array<glm::vec3, 8>& corners, glm::vec3 light_dir,
                                   float behind, uint32_t map_size) {
-    // [fit-sphere]
+    // The sphere around the slice's corners.
     glm::vec3 centre(0.0f);
     for (const glm::vec3& p : corners) centre += p / 8.0f;
     float radius = 0.0f;
@@ -74,7 +75,7 @@ inline glm::mat4 light_from_world(const std::array<glm::vec3, 8>& corners, glm::
     // towards the light.
     const glm::vec3 up = std::abs(light_dir.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
     const glm::mat4 axes = glm::lookAt(glm::vec3(0.0f), light_dir, up);
-    // [/fit-sphere]
+    // 22b: snap to whole texels (the next two statements).
     // [fit-snap]
     // Half the box's side: the sphere and half a texel more each way, so the
     // snap (at most half a texel) leaves the slice inside the map.
@@ -82,7 +83,6 @@ inline glm::mat4 light_from_world(const std::array<glm::vec3, 8>& corners, glm::
     const glm::vec3 c =
         snap_to_texels(glm::vec3(axes * glm::vec4(centre, 1.0f)), 2.0f * half / float(map_size));
     // [/fit-snap]
-    // [fit-box]
     // The box's near face, towards the light, is radius + behind from c.
     const glm::mat4 view =
         glm::translate(glm::mat4(1.0f), -glm::vec3(c.x, c.y, c.z + radius + behind)) * axes;
@@ -92,5 +92,5 @@ inline glm::mat4 light_from_world(const std::array<glm::vec3, 8>& corners, glm::
     ortho[1][1] = 1.0f / half;
     ortho[2][2] = -1.0f / depth;  // view space looks down -z
     return ortho * view;
-    // [/fit-box]
 }
+// [/light-from-world]
